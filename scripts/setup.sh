@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs twinraster's build and test dependencies from Debian packages.
+# Idempotent: packages already present are skipped, and `apt-get update` runs only when
+# something is missing (so it also works on a machine where it never ran).
+set -euo pipefail
+
+packages=(
+  cmake g++ make                 # build
+  libvulkan-dev                  # Vulkan headers + loader (vulkan.hpp / vulkan_raii.hpp)
+  mesa-vulkan-drivers            # lavapipe, the software Vulkan device
+  vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
+  glslang-dev glslang-tools      # glslangValidator compiles shaders/ to SPIR-V at build time
+  spirv-tools                    # spirv-val checks the SPIR-V the build embeds
+  libglm-dev                     # matrix and vector types
+  libstb-dev                     # stb_image_write (PNG out) and stb_image (PNG in, for compare)
+  catch2                         # unit tests (Catch2 v2 on Debian 12)
+  nlohmann-json3-dev             # scene files
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
