@@ -1,0 +1,103 @@
+// Every kind of bad scene file gets one clear message naming the file, the JSON path (or line and
+// column) and the problem, and exit code 2: run through the real executable.
+#include "support/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using namespace twinraster;
+
+namespace {
+
+struct BadCase {
+  const char* what;
+  std::string text;      // the whole scene file
+  std::string where;     // expected JSON path or "line L, column C"
+  std::string problem;   // expected words of the message
+};
+
+std::string Base() { return test::ReadFile(test::SourcePath("scenes/cgfs-transforms.json")); }
+
+// The shipped transforms scene with one value replaced (a JSON pointer) or removed (null).
+std::string With(const std::string& pointer, const nlohmann::json& value) {
+  nlohmann::ordered_json scene = nlohmann::ordered_json::parse(Base());
+  if (value.is_null()) {
+    const nlohmann::json::json_pointer p(pointer);
+    scene[p.parent_pointer()].erase(p.back());
+  } else {
+    scene[nlohmann::ordered_json::json_pointer(pointer)] = value;
+  }
+  return scene.dump(2);
+}
+
+std::string LookAt(const nlohmann::json& eye, const nlohmann::json& center, const nlohmann::json& up) {
+  return With("/camera", {{"eye", eye}, {"center", center}, {"up", up}});
+}
+
+std::vector<BadCase> Cases() {
+  using nlohmann::json;
+  return {
+      {"syntax error", "{\n  \"canvas\": {\"width\": 600,, \"height\": 600}\n}", "line 2, column 27", "syntax error"},
+      {"truncated file", "{\n  \"canvas\": {", "line 2, column 14", "unexpected end of input"},
+      {"unknown key with a suggestion", With("/canvs", json::object()), "(top level)", "unknown key \"canvs\" (did you mean \"canvas\"?)"},
+      {"unknown nested key", With("/instances/1/transform/scael", 2), "instances[1].transform", "did you mean \"scale\"?"},
+      {"wrong type", With("/instances/1/transform/scale", "big"), "instances[1].transform.scale", "expected a number or [sx, sy, sz], found a string"},
+      {"wrong type in a vector", With("/camera/position/1", true), "camera.position[1]", "expected a number, found a boolean"},
+      {"missing required key", With("/viewport/distance", nullptr), "viewport", "missing required key \"distance\""},
+      {"missing model", With("/instances/0/model", "cub"), "instances[0].model", "no model named \"cub\" (did you mean \"cube\"?)"},
+      {"triangle index out of range", With("/models/cube/triangles/3/2", 8), "models.cube.triangles[3][2]", "expected an integer in 0..7, found 8"},
+      {"negative triangle index", With("/models/cube/triangles/0/0", -1), "models.cube.triangles[0][0]", "in 0..7"},
+      {"unknown colour", With("/models/cube/triangles/0/3", "rde"), "models.cube.triangles[0][3]", "did you mean \"red\"?"},
+      {"non-finite number", "{\"canvas\": {\"width\": 1e999}}", "line 1, column 22", "out of range"},
+      {"absurd number", With("/instances/0/transform/translation/2", 1e300), "instances[0].transform.translation[2]", "absurd"},
+      {"canvas of zero width", With("/canvas/width", 0), "canvas.width", "expected an integer in 1..16384, found 0"},
+      {"canvas too tall", With("/canvas/height", 16385), "canvas.height", "in 1..16384"},
+      {"fractional canvas", With("/canvas/height", 10.5), "canvas.height", "expected an integer"},
+      {"viewport width zero", With("/viewport/width", 0), "viewport.width", "must be greater than 0"},
+      {"negative distance", With("/viewport/distance", -1), "viewport.distance", "must be greater than 0, found -1"},
+      {"near zero", With("/depth", {{"near", 0}, {"far", 10}}), "depth.near", "must be greater than 0"},
+      {"far not beyond near", With("/depth", {{"near", 5}, {"far", 5}}), "depth", "far (5) must be greater than near (5)"},
+      {"up parallel to the view direction", LookAt({0, 0, 0}, {0, 0, 5}, {0, 0, 2}), "camera.up", "up is parallel to the view direction"},
+      {"eye equals center", LookAt({1, 2, 3}, {1, 2, 3}, {0, 1, 0}), "camera.center", "center equals eye"},
+      {"both camera styles", With("/camera/eye", {0, 0, 0}), "camera", "use either position + rotation"},
+      {"bad rotation axis", With("/camera/rotation/axis", "w"), "camera.rotation.axis", "unknown axis \"w\""},
+      {"zero rotation axis", With("/camera/rotation/axis", {0, 0, 0}), "camera.rotation.axis", "zero vector"},
+      {"top level not an object", "[1, 2, 3]", "(top level)", "expected an object, found an array"},
+  };
+}
+
+}  // namespace
+
+TEST_CASE("Bad scene files: one message naming file, place and problem; exit code 2", "[bad-input]") {
+  const test::TempDir dir;
+  for (const BadCase& c : Cases()) {
+    INFO(c.what);
+    const auto file = dir / "bad.json";
+    test::WriteFile(file, c.text);
+    const test::CliResult r = test::RunCli({"explain", file.string()});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.out.empty());
+    const std::string expected_start = "twinraster: " + file.string() + ": " + c.where + ": ";
+    REQUIRE(r.err.rfind(expected_start, 0) == 0);
+    REQUIRE(r.err.find(c.problem) != std::string::npos);
+    REQUIRE(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // one line, no stack of errors
+  }
+}
+
+TEST_CASE("A missing file or a directory is bad input too", "[bad-input]") {
+  const test::TempDir dir;
+  for (const auto& path : {dir / "no-such-scene.json", dir.path()}) {
+    const test::CliResult r = test::RunCli({"explain", path.string()});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find(path.string()) != std::string::npos);
+  }
+}
+
+TEST_CASE("Usage errors exit with 2", "[bad-input]") {
+  REQUIRE(test::RunCli({}).exit_code == 2);
+  REQUIRE(test::RunCli({"frobnicate"}).exit_code == 2);
+  REQUIRE(test::RunCli({"explain"}).exit_code == 2);
+  REQUIRE(test::RunCli({"explain", "a.json", "b.json"}).exit_code == 2);
+}

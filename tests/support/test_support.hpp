@@ -1,0 +1,37 @@
+// What every test executable shares: running the CLI as a user would, temp dirs, files, the
+// shipped scenes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace twinraster::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+CliResult RunCli(const std::vector<std::string>& args);
+
+// A fresh empty directory under the system temp dir, removed when the object dies.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string ReadFile(const std::filesystem::path& file);
+void WriteFile(const std::filesystem::path& file, const std::string& text);
+std::filesystem::path SourcePath(const std::string& relative);  // inside the source tree
+std::vector<std::filesystem::path> ShippedScenes();             // scenes/**/*.json, sorted
+
+}  // namespace twinraster::test
