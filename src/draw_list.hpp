@@ -32,7 +32,7 @@ struct DrawList {
   std::uint32_t width = 0, height = 0;
   Rgb8 background;
   std::vector<DrawMesh> meshes;  // meshes[i] is the scene's models[i]
-  std::vector<DrawCall> draws;   // in instance order; later draws win depth ties (test is LESS)
+  std::vector<DrawCall> draws;   // in instance order; on equal depth the earlier draw keeps the pixel (test is LESS)
 };
 
 DrawList BuildDrawList(const Scene& scene);

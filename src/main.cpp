@@ -1,10 +1,9 @@
-// twinraster's command line: explain a scene's transform chain (and, later, render and compare).
-#include "command_line.hpp"
-#include "explain.hpp"
-#include "scene_loader.hpp"
+// twinraster's command line: explain a scene's transform chain, render it on Vulkan and on the
+// CPU twin, compare images. Every error becomes one message and an exit code.
+#include "commands.hpp"
+#include "png_file.hpp"
+#include "scene_error.hpp"
 #include "usage_error.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <exception>
 #include <iostream>
@@ -18,29 +17,25 @@ using namespace twinraster;
 constexpr const char* kUsage =
     "usage:\n"
     "  twinraster explain SCENE [--instance I] [--vertex V] [--json]\n"
-    "      print the chapter's matrix chain for SCENE and trace its vertices to the framebuffer\n";
-
-int Explain(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--json"}, {"--instance", "--vertex"});
-  cl.ExpectPositional({"SCENE"});
-  const Scene scene = LoadScene(cl.Positional()[0]);
-  const ExplainOptions options{cl.Index("--instance"), cl.Index("--vertex")};
-  if (cl.Flag("--json")) {
-    std::cout << ExplainJson(scene, options).dump(2) << "\n";
-  } else {
-    std::cout << ExplainText(scene, options);
-  }
-  return 0;
-}
+    "      print the chapter's matrix chain for SCENE and trace its vertices to the framebuffer\n"
+    "  twinraster render SCENE [-o OUT.png] [--backend gpu|cpu|both] [--json] [--device NAME] [--threads N]\n"
+    "      draw SCENE on Vulkan (gpu), on the CPU twin (cpu), or both and compare them (default;\n"
+    "      writes OUT-gpu.png, OUT-cpu.png, and OUT-diff.png when they differ; OUT defaults to\n"
+    "      the scene's name in the current directory)\n"
+    "  twinraster compare A.png B.png [--diff D.png] [--json]\n"
+    "      count the pixels that differ between two images\n"
+    "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device\n";
 
 int Run(const std::vector<std::string>& args) {
   if (args.empty()) throw UsageError("missing command");
   const std::string& command = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (command == "explain") return Explain(rest);
+  if (command == "explain") return ExplainCommand(rest);
+  if (command == "render") return RenderCommand(rest);
+  if (command == "compare") return CompareCommand(rest);
   if (command == "help" || command == "--help" || command == "-h") {
     std::cout << kUsage;
-    return 0;
+    return kExitOk;
   }
   throw UsageError("unknown command \"" + command + "\"");
 }
@@ -52,12 +47,15 @@ int main(int argc, char** argv) {
     return Run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const SceneError& e) {
     std::cerr << "twinraster: " << e.what() << "\n";
-    return 2;
+    return kExitBadInput;
+  } catch (const FileError& e) {
+    std::cerr << "twinraster: " << e.what() << "\n";
+    return kExitBadInput;
   } catch (const UsageError& e) {
     std::cerr << "twinraster: " << e.what() << "\n" << kUsage;
-    return 2;
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "twinraster: internal error: " << e.what() << "\n";
-    return 4;
+    return kExitInternalError;
   }
 }

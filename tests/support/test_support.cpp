@@ -59,9 +59,11 @@ std::vector<std::filesystem::path> ShippedScenes() {
   return scenes;
 }
 
-CliResult RunCli(const std::vector<std::string>& args) {
+CliResult RunCli(const std::vector<std::string>& args, const std::vector<std::string>& environment) {
   const TempDir dir;
-  std::string command = ShellQuote(TWINRASTER_EXE);
+  std::string command = "env";
+  for (const std::string& e : environment) command += " " + ShellQuote(e);
+  command += " " + ShellQuote(TWINRASTER_EXE);
   for (const std::string& a : args) command += " " + ShellQuote(a);
   command += " >" + ShellQuote((dir / "out").string()) + " 2>" + ShellQuote((dir / "err").string()) + " </dev/null";
   const int status = std::system(command.c_str());

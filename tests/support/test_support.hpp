@@ -13,7 +13,8 @@ struct CliResult {
   std::string out, err;
 };
 
-CliResult RunCli(const std::vector<std::string>& args);
+// `environment`: extra VAR=value settings for this run only.
+CliResult RunCli(const std::vector<std::string>& args, const std::vector<std::string>& environment = {});
 
 // A fresh empty directory under the system temp dir, removed when the object dies.
 class TempDir {

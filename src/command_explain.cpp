@@ -1,0 +1,25 @@
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "explain.hpp"
+#include "scene_loader.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+namespace twinraster {
+
+int ExplainCommand(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {"--json"}, {"--instance", "--vertex"});
+  cl.ExpectPositional({"SCENE"});
+  const Scene scene = LoadScene(cl.Positional()[0]);
+  const ExplainOptions options{cl.Index("--instance"), cl.Index("--vertex")};
+  if (cl.Flag("--json")) {
+    std::cout << ExplainJson(scene, options).dump(2) << "\n";
+  } else {
+    std::cout << ExplainText(scene, options);
+  }
+  return kExitOk;
+}
+
+}  // namespace twinraster

@@ -1,0 +1,32 @@
+#include "cpu/coverage.hpp"
+
+#include "cpu/geometry.hpp"
+#include "cpu/parallel.hpp"
+#include "cpu/rasterize.hpp"
+
+namespace twinraster::cpu {
+
+CoverageCounts CountCoverage(const DrawList& list, unsigned threads) {
+  ValidateDrawList(list);
+  threads = ResolveThreadCount(threads);
+  const std::vector<TriangleSetup> triangles = ProcessGeometry(list, threads);
+  CoverageCounts counts;
+  counts.width = list.width;
+  counts.height = list.height;
+  counts.kept.assign(std::size_t{list.width} * list.height, 0);
+  counts.swapped.assign(std::size_t{list.width} * list.height, 0);
+  ParallelParts(threads, [&](unsigned part) {
+    const RowShare share{threads, part};
+    for (const TriangleSetup& t : triangles) {
+      std::vector<std::uint32_t>& target = t.swapped ? counts.swapped : counts.kept;
+      ForEachSpan(t, share, [&](int py, Span span) {
+        for (int px = span.begin; px < span.end; ++px) {
+          ++target[counts.index(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py))];
+        }
+      });
+    }
+  });
+  return counts;
+}
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,142 @@
+#include "cpu/geometry.hpp"
+
+#include "cpu/parallel.hpp"
+#include "cpu/vertex_stage.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace twinraster::cpu {
+
+void ValidateDrawList(const DrawList& list) {
+  if (list.width == 0 || list.height == 0 || list.width > kMaxFramebufferSize ||
+      list.height > kMaxFramebufferSize) {
+    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" +
+                                std::to_string(list.height) + " is outside 1.." +
+                                std::to_string(kMaxFramebufferSize));
+  }
+  for (std::size_t d = 0; d < list.draws.size(); ++d) {
+    if (list.draws[d].mesh >= list.meshes.size()) {
+      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " +
+                                  std::to_string(list.draws[d].mesh) + " of " +
+                                  std::to_string(list.meshes.size()));
+    }
+  }
+  for (std::size_t m = 0; m < list.meshes.size(); ++m) {
+    const DrawMesh& mesh = list.meshes[m];
+    if (mesh.colours.size() < mesh.triangles.size()) {
+      throw std::invalid_argument("mesh " + std::to_string(m) + " has " +
+                                  std::to_string(mesh.triangles.size()) + " triangles but " +
+                                  std::to_string(mesh.colours.size()) + " colours");
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      for (std::uint32_t index : mesh.triangles[t]) {
+        if (index >= mesh.positions.size()) {
+          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " +
+                                      std::to_string(t) + " uses vertex " + std::to_string(index) +
+                                      " of " + std::to_string(mesh.positions.size()));
+        }
+      }
+    }
+  }
+}
+
+std::uint32_t PackRgba(Rgb8 colour) {
+  return std::bit_cast<std::uint32_t>(std::array<std::uint8_t, 4>{colour.r, colour.g, colour.b, 255});
+}
+
+ShadedVertex ShadeVertex(const glm::mat4& f, const glm::vec3& position, const ViewportState& vp) {
+  ShadedVertex s;
+  s.v.clip = VertexStage(f, position);
+  s.v.window = ViewportTransformShader(vp, s.v.clip);  // lavapipe transforms every shader vertex
+  s.outcode = Outcode(s.v.clip);
+  return s;
+}
+
+void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
+                      const ViewportState& vp, const PixelRect& region,
+                      std::vector<TriangleSetup>& out) {
+  const unsigned any_outside = v[0]->outcode | v[1]->outcode | v[2]->outcode;
+  const unsigned all_outside = v[0]->outcode & v[1]->outcode & v[2]->outcode;
+  TriangleSetup setup;
+  setup.colour = colour;
+  if (any_outside == 0) {
+    if (SetUpTriangle(v[0]->v.window, v[1]->v.window, v[2]->v.window, region, setup)) {
+      out.push_back(setup);
+    }
+    return;
+  }
+  if (all_outside != 0) return;  // entirely outside one plane
+
+  ClippedPolygon polygon;
+  ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon);
+  for (int i = 2; i < polygon.count; ++i) {
+    const auto& p = polygon.v;
+    if (SetUpTriangle(p[0].window, p[static_cast<std::size_t>(i - 1)].window,
+                      p[static_cast<std::size_t>(i)].window, region, setup)) {
+      out.push_back(setup);
+    }
+  }
+}
+
+std::vector<TriangleSetup> ProcessGeometry(const DrawList& list, unsigned threads) {
+  const ViewportState vp = MakeViewport(list.width, list.height);
+  const PixelRect region = DrawRegion(vp, list.width, list.height);
+
+  // Global numbering of every draw's vertices and triangles, so both loops split evenly.
+  const std::size_t draw_count = list.draws.size();
+  std::vector<std::size_t> vertex_start(draw_count + 1, 0), triangle_start(draw_count + 1, 0);
+  for (std::size_t d = 0; d < draw_count; ++d) {
+    const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
+    vertex_start[d + 1] = vertex_start[d] + mesh.positions.size();
+    triangle_start[d + 1] = triangle_start[d] + mesh.triangles.size();
+  }
+  const auto draw_of = [](const std::vector<std::size_t>& start, std::size_t global) {
+    return static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), global) -
+                                    start.begin()) - 1;
+  };
+
+  // Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices.
+  std::vector<ShadedVertex> vertices(vertex_start[draw_count]);
+  ParallelFor(threads, vertices.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t g = begin; g < end;) {
+      const std::size_t d = draw_of(vertex_start, g);
+      const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
+      const std::size_t stop = std::min(end, vertex_start[d + 1]);
+      for (; g < stop; ++g) {
+        vertices[g] = ShadeVertex(list.draws[d].mvp, mesh.positions[g - vertex_start[d]], vp);
+      }
+    }
+  });
+
+  // Primitive assembly, clipping and setup; each part keeps its slice in order.
+  const std::size_t triangle_count = triangle_start[draw_count];
+  std::vector<std::vector<TriangleSetup>> parts(std::max(1u, threads));
+  ParallelFor(threads, triangle_count, [&](std::size_t begin, std::size_t end, unsigned part) {
+    std::vector<TriangleSetup>& out = parts[part];
+    out.reserve(end - begin);
+    for (std::size_t g = begin; g < end;) {
+      const std::size_t d = draw_of(triangle_start, g);
+      const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
+      const ShadedVertex* base = vertices.data() + vertex_start[d];
+      const std::size_t stop = std::min(end, triangle_start[d + 1]);
+      for (; g < stop; ++g) {
+        const std::size_t t = g - triangle_start[d];
+        const auto& tri = mesh.triangles[t];
+        AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
+                         region, out);
+      }
+    }
+  });
+
+  std::size_t total = 0;
+  for (const auto& p : parts) total += p.size();
+  std::vector<TriangleSetup> triangles;
+  triangles.reserve(total);
+  for (const auto& p : parts) triangles.insert(triangles.end(), p.begin(), p.end());
+  return triangles;
+}
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,37 @@
+#include "cpu/rasterize.hpp"
+
+#include <cstdint>
+
+namespace twinraster::cpu {
+
+namespace {
+
+// Floor and ceiling of a / b for b > 0.
+std::int64_t FloorDiv(std::int64_t a, std::int64_t b) {
+  const std::int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+std::int64_t CeilDiv(std::int64_t a, std::int64_t b) { return -FloorDiv(-a, b); }
+
+}  // namespace
+
+Span CoveredSpan(const TriangleSetup& t, int py) {
+  std::int64_t begin = t.bounds.x0;
+  std::int64_t end = std::int64_t{t.bounds.x1} + 1;
+  for (const EdgeFunction& e : t.edges) {
+    // Along the row the edge function is row_value + step * px; covered needs > 0.
+    const std::int64_t row_value = e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne);
+    const std::int64_t step = -e.dcdx * kSubpixelOne;
+    if (step > 0) {
+      begin = std::max(begin, FloorDiv(-row_value, step) + 1);  // px > -row_value / step
+    } else if (step < 0) {
+      end = std::min(end, CeilDiv(row_value, -step));  // px < row_value / -step
+    } else if (row_value <= 0) {
+      return {};
+    }
+    if (begin >= end) return {};
+  }
+  return {static_cast<int>(begin), static_cast<int>(end)};
+}
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,47 @@
+// Stage 5 applied row by row: which pixels of a row a triangle covers. Per row the three edge
+// functions are linear in px with exact integer coefficients, so the covered pixels form one span
+// that integer floor/ceil divisions give exactly, equal to testing every pixel of the box.
+// Rows are shared between threads in interleaved bands; every thread walks all triangles in order
+// over its own rows only, so each pixel sees the same triangles in the same order for any thread
+// count.
+#pragma once
+
+#include "cpu/triangle_setup.hpp"
+
+#include <algorithm>
+
+namespace twinraster::cpu {
+
+struct Span {
+  int begin = 0, end = 0;  // covered pixels [begin, end) of one row; empty when begin >= end
+};
+
+Span CoveredSpan(const TriangleSetup& t, int py);
+
+// Rows [band * kBandRows, (band + 1) * kBandRows) belong to part band % parts.
+constexpr int kBandRows = 8;
+
+struct RowShare {
+  unsigned parts = 1;
+  unsigned part = 0;
+};
+
+// Calls fn(py, span) for every non-empty covered span of the rows of `share` in t's box, top down.
+template <class Fn>
+void ForEachSpan(const TriangleSetup& t, const RowShare& share, Fn&& fn) {
+  const int parts = static_cast<int>(share.parts);
+  const int part = static_cast<int>(share.part);
+  const int first_band = t.bounds.y0 / kBandRows;
+  // The first band at or after first_band that this part owns.
+  int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
+  for (; band * kBandRows <= t.bounds.y1; band += parts) {
+    const int row_begin = std::max(t.bounds.y0, band * kBandRows);
+    const int row_end = std::min(t.bounds.y1 + 1, (band + 1) * kBandRows);
+    for (int py = row_begin; py < row_end; ++py) {
+      const Span span = CoveredSpan(t, py);
+      if (span.begin < span.end) fn(py, span);
+    }
+  }
+}
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,75 @@
+#include "cpu/triangle_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace twinraster::cpu {
+
+std::int32_t SnapToSubpixel(float window_coord) {
+  const float scaled = (window_coord - 0.5f) * static_cast<float>(kSubpixelOne);
+  // cvtps2dq's "integer indefinite" for NaN and anything that does not fit.
+  if (!(scaled >= -2147483648.0f && scaled < 2147483648.0f)) {
+    return std::numeric_limits<std::int32_t>::min();
+  }
+  return static_cast<std::int32_t>(std::lrintf(scaled));  // default rounding: half to even
+}
+
+EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj) {
+  EdgeFunction e;
+  e.dcdx = std::int64_t{yi} - yj;
+  e.dcdy = std::int64_t{xi} - xj;
+  e.c = e.dcdx * xi - e.dcdy * yi;
+  const bool left_edge = e.dcdx < 0;
+  const bool top_edge = e.dcdx == 0 && e.dcdy > 0;
+  if (left_edge || top_edge) e.c += 1;
+  return e;
+}
+
+bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
+                   const PixelRect& region, TriangleSetup& out) {
+  std::int32_t x[3] = {SnapToSubpixel(v0.x), SnapToSubpixel(v1.x), SnapToSubpixel(v2.x)};
+  std::int32_t y[3] = {SnapToSubpixel(v0.y), SnapToSubpixel(v1.y), SnapToSubpixel(v2.y)};
+
+  const std::int64_t area = (std::int64_t{x[0]} - x[1]) * (std::int64_t{y[2]} - y[0]) -
+                            (std::int64_t{x[2]} - x[0]) * (std::int64_t{y[0]} - y[1]);
+  if (area == 0) return false;
+
+  const WindowPos* w[3] = {&v0, &v1, &v2};
+  out.swapped = area < 0;
+  if (out.swapped) {
+    std::swap(x[1], x[2]);
+    std::swap(y[1], y[2]);
+    std::swap(w[1], w[2]);
+  }
+
+  // Inclusive box of the pixels whose centres may be inside (llvmpipe's rounding; exact coverage
+  // is the edge test's).
+  const std::int64_t min_x = std::min({x[0], x[1], x[2]}), max_x = std::max({x[0], x[1], x[2]});
+  const std::int64_t min_y = std::min({y[0], y[1], y[2]}), max_y = std::max({y[0], y[1], y[2]});
+  PixelRect box;
+  box.x0 = static_cast<int>(std::max<std::int64_t>(region.x0, min_x >> kSubpixelBits));
+  box.x1 = static_cast<int>(std::min<std::int64_t>(region.x1, (max_x - 1) >> kSubpixelBits));
+  box.y0 = static_cast<int>(std::max<std::int64_t>(region.y0, min_y >> kSubpixelBits));
+  box.y1 = static_cast<int>(std::min<std::int64_t>(region.y1, (max_y - 1) >> kSubpixelBits));
+  if (box.x0 > box.x1 || box.y0 > box.y1) return false;
+  out.bounds = box;
+
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    out.edges[static_cast<std::size_t>(i)] = MakeEdge(x[i], y[i], x[j], y[j]);
+  }
+  out.depth = MakeDepthPlane(*w[0], *w[1], *w[2]);
+  return true;
+}
+
+bool Covers(const TriangleSetup& t, int px, int py) {
+  if (px < t.bounds.x0 || px > t.bounds.x1 || py < t.bounds.y0 || py > t.bounds.y1) return false;
+  for (const EdgeFunction& e : t.edges) {
+    if (EdgeAt(e, px, py) <= 0) return false;
+  }
+  return true;
+}
+
+}  // namespace twinraster::cpu

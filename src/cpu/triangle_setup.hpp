@@ -1,0 +1,55 @@
+// Stages 4 and 5, triangle setup (Vulkan spec "Polygon Rasterization", "Rasterization Rules"):
+//  - Snapping: window x, y to fixed point with 8 subpixel bits, measured from the pixel centre:
+//    X = round_half_even((xw - 0.5f) * 256.0f), so pixel (px, py)'s centre is (px * 256, py * 256).
+//  - Twice the signed area in 64-bit: (X0-X1)(Y2-Y0) - (X2-X0)(Y0-Y1). Zero: nothing is drawn.
+//    Negative: vertices 1 and 2 are swapped (vertex 0, the provoking vertex, stays).
+//  - One edge function per edge i -> j (j = i + 1 mod 3): dcdx = Yi - Yj, dcdy = Xi - Xj,
+//    c = dcdx * Xi - dcdy * Yi, plus 1 for a left edge (dcdx < 0) or a top edge (dcdx == 0 and
+//    dcdy > 0): the top-left rule, turning "on the edge" into "inside" for those edges only.
+//    Pixel (px, py) is covered when c + dcdy * (py * 256) - dcdx * (px * 256) > 0 for all three.
+//  - The bounding box of the snapped vertices (as llvmpipe rounds it) ∩ the draw region.
+#pragma once
+
+#include "cpu/depth_plane.hpp"
+#include "cpu/viewport_transform.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace twinraster::cpu {
+
+constexpr int kSubpixelBits = 8;
+constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
+
+// round_half_even((w - 0.5f) * 256.0f) as SSE's cvtps2dq does it: out of range or NaN gives INT32_MIN.
+std::int32_t SnapToSubpixel(float window_coord);
+
+struct EdgeFunction {
+  std::int64_t c = 0;     // with the top-left bias
+  std::int64_t dcdx = 0;  // Yi - Yj
+  std::int64_t dcdy = 0;  // Xi - Xj
+};
+
+// Edge function value at the centre of pixel (px, py); > 0 is inside.
+inline std::int64_t EdgeAt(const EdgeFunction& e, int px, int py) {
+  return e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne) - e.dcdx * (std::int64_t{px} * kSubpixelOne);
+}
+
+EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj);
+
+struct TriangleSetup {
+  std::array<EdgeFunction, 3> edges;
+  PixelRect bounds;      // pixels that may be covered, inside the draw region
+  DepthPlane depth;      // from the vertices in post-swap order
+  std::uint32_t colour = 0;
+  bool swapped = false;  // the snapped area was negative, so vertices 1 and 2 were swapped
+};
+
+// False when the triangle covers nothing for sure (zero area, or its box misses `region`).
+bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
+                   const PixelRect& region, TriangleSetup& out);
+
+// The coverage test for one pixel, bounds included.
+bool Covers(const TriangleSetup& t, int px, int py);
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,40 @@
+// Stage 3, the viewport transform (Vulkan spec "Coordinate Transformations"): clip coordinates to
+// window coordinates for a viewport (0, 0, W, H) with depth range [0, 1]. lavapipe computes it in
+// two ways, and the twin must use the same one for each vertex:
+//  - vertices from the vertex shader (JIT code): xw = fmaf(x * oow, scale, translate);
+//  - vertices created by clipping (plain C):     xw = (x * oow) * scale + translate, no fma.
+// Also the pixel rectangle coverage is limited to (framebuffer ∩ viewport rectangle).
+#pragma once
+
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+
+namespace twinraster::cpu {
+
+struct WindowPos {
+  float x = 0, y = 0, z = 0;
+};
+
+// pipe_viewport_state as lavapipe fills it: scale = (W/2, H/2, maxDepth - minDepth),
+// translate = (W/2 + x0, H/2 + y0, minDepth).
+struct ViewportState {
+  float scale[3] = {0, 0, 0};
+  float translate[3] = {0, 0, 0};
+};
+
+// Inclusive pixel rectangle; empty when x0 > x1 or y0 > y1.
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+
+ViewportState MakeViewport(std::uint32_t width, std::uint32_t height);
+
+WindowPos ViewportTransformShader(const ViewportState& vp, const glm::vec4& clip);   // fma
+WindowPos ViewportTransformClipped(const ViewportState& vp, const glm::vec4& clip);  // no fma
+
+// Framebuffer ∩ viewport rectangle, the viewport's bounds rounded as llvmpipe does:
+// x0i = (int)(x0 + 0.499f), x1i = (int)(2 * scale + x0 - 0.501f), likewise for y.
+PixelRect DrawRegion(const ViewportState& vp, std::uint32_t fb_width, std::uint32_t fb_height);
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,232 @@
+#include "gpu/gpu_renderer.hpp"
+
+#include "gpu/mesh_buffers.hpp"
+#include "gpu/offscreen_target.hpp"
+#include "gpu/pipeline.hpp"
+#include "gpu/vulkan_context.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstring>
+#include <limits>
+#include <string>
+
+namespace twinraster {
+namespace {
+
+double Milliseconds(std::chrono::steady_clock::duration duration) {
+  return std::chrono::duration<double, std::milli>(duration).count();
+}
+
+void CheckSize(std::uint32_t width, std::uint32_t height, const vk::PhysicalDeviceLimits& limits) {
+  const std::uint32_t max_width = std::min(
+      {limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxViewportDimensions[0]});
+  const std::uint32_t max_height = std::min(
+      {limits.maxImageDimension2D, limits.maxFramebufferHeight, limits.maxViewportDimensions[1]});
+  if (width == 0 || height == 0 || width > max_width || height > max_height) {
+    throw std::invalid_argument("cannot render " + std::to_string(width) + "x" +
+                                std::to_string(height) + " pixels: the device allows 1x1 to " +
+                                std::to_string(max_width) + "x" + std::to_string(max_height));
+  }
+}
+
+// The clear colour as the shader-side float k / 255: converting back to UNORM8 gives k exactly.
+vk::ClearValue ClearColour(Rgb8 background) {
+  const auto unorm = [](std::uint8_t k) { return static_cast<float>(k) / 255.0f; };
+  return vk::ClearValue{
+      .color = vk::ClearColorValue{.float32 = std::array{unorm(background.r), unorm(background.g),
+                                                         unorm(background.b), 1.0f}}};
+}
+
+}  // namespace
+
+struct GpuRenderer::Impl {
+  explicit Impl(const GpuOptions& options);
+  Image Render(const DrawList& list, GpuTimings* timings);
+  void Record(const DrawList& list, const gpu::MeshBuffers& meshes) const;
+
+  // Members are destroyed in reverse order: everything below goes before the device in `context`.
+  gpu::VulkanContext context;
+  gpu::Pipeline pipeline;
+  vk::raii::DescriptorPool descriptor_pool = nullptr;
+  vk::raii::DescriptorSet colour_set = nullptr;  // re-pointed at each Render()'s colour buffer
+  vk::raii::CommandPool command_pool = nullptr;
+  vk::raii::CommandBuffer commands = nullptr;    // re-recorded by each Render()
+  vk::raii::Fence done = nullptr;                // signalled when the frame has been copied out
+  std::unique_ptr<gpu::OffscreenTarget> target;  // kept while the image size stays the same
+};
+
+GpuRenderer::Impl::Impl(const GpuOptions& options) : context(options), pipeline(context.device()) {
+  const vk::raii::Device& device = context.device();
+  const vk::DescriptorPoolSize pool_size{.type = vk::DescriptorType::eStorageBuffer,
+                                         .descriptorCount = 1};
+  descriptor_pool = vk::raii::DescriptorPool(
+      device, vk::DescriptorPoolCreateInfo{
+                  // vk::raii::DescriptorSet frees itself, which needs this flag.
+                  .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                  .maxSets = 1,
+                  .poolSizeCount = 1,
+                  .pPoolSizes = &pool_size,
+              });
+  const vk::DescriptorSetLayout set_layout = *pipeline.colour_set_layout();
+  const vk::DescriptorSetAllocateInfo set_info{
+      .descriptorPool = *descriptor_pool,
+      .descriptorSetCount = 1,
+      .pSetLayouts = &set_layout,
+  };
+  colour_set = std::move(device.allocateDescriptorSets(set_info).front());
+
+  command_pool =
+      vk::raii::CommandPool(device, vk::CommandPoolCreateInfo{
+                                        .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                        .queueFamilyIndex = context.queue_family(),
+                                    });
+  const vk::CommandBufferAllocateInfo command_info{
+      .commandPool = *command_pool,
+      .level = vk::CommandBufferLevel::ePrimary,
+      .commandBufferCount = 1,
+  };
+  commands = std::move(device.allocateCommandBuffers(command_info).front());
+  done = vk::raii::Fence(device, vk::FenceCreateInfo{});
+}
+
+Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+
+  // Setup. Check and upload first: a malformed list then throws before anything is touched.
+  CheckSize(list.width, list.height, context.limits());
+  const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
+  if (!target || target->width() != list.width || target->height() != list.height) {
+    target.reset();  // free the old images first: at 16384x16384 one target holds 3 GiB
+    target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width,
+                                                    list.height);
+  }
+  // Safe to rewrite: the previous frame that read the set has finished (we waited for it).
+  const vk::DescriptorBufferInfo colour_buffer{
+      .buffer = meshes.colours(), .offset = 0, .range = VK_WHOLE_SIZE};
+  context.device().updateDescriptorSets(
+      vk::WriteDescriptorSet{
+          .dstSet = *colour_set,
+          .dstBinding = 0,
+          .descriptorCount = 1,
+          .descriptorType = vk::DescriptorType::eStorageBuffer,
+          .pBufferInfo = &colour_buffer,
+      },
+      nullptr);
+  Record(list, meshes);
+  const Clock::time_point recorded = Clock::now();
+
+  // Draw: run the commands and wait for them.
+  context.device().resetFences(*done);
+  const vk::CommandBuffer command_buffer = *commands;
+  context.queue().submit(
+      vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &command_buffer}, *done);
+  if (context.device().waitForFences(*done, VK_TRUE, std::numeric_limits<std::uint64_t>::max()) !=
+      vk::Result::eSuccess) {
+    throw std::runtime_error("the Vulkan device did not finish the frame");
+  }
+  const Clock::time_point drawn = Clock::now();
+
+  // The readback buffer holds tightly packed RGBA rows, top row first: exactly Image's layout.
+  Image image(list.width, list.height);
+  std::memcpy(image.rgba.data(), target->readback().data(), image.rgba.size());
+  const Clock::time_point read = Clock::now();
+
+  if (timings != nullptr) {
+    *timings = GpuTimings{.setup_ms = Milliseconds(recorded - start),
+                          .draw_ms = Milliseconds(drawn - recorded),
+                          .readback_ms = Milliseconds(read - drawn)};
+  }
+  return image;
+}
+
+void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& meshes) const {
+  const vk::raii::CommandBuffer& cmd = commands;
+  const vk::Extent2D extent{list.width, list.height};
+  cmd.reset();  // a Render() that threw halfway may have left it in the recording state
+  cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+
+  const std::array clear_values = {ClearColour(list.background),
+                                   vk::ClearValue{.depthStencil = {.depth = 1.0f, .stencil = 0}}};
+  cmd.beginRenderPass(
+      vk::RenderPassBeginInfo{
+          .renderPass = *pipeline.render_pass(),
+          .framebuffer = target->framebuffer(),
+          .renderArea = {.offset = {0, 0}, .extent = extent},
+          .clearValueCount = clear_values.size(),
+          .pClearValues = clear_values.data(),
+      },
+      vk::SubpassContents::eInline);
+  cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline());
+  cmd.setViewport(0, vk::Viewport{.x = 0.0f,
+                                  .y = 0.0f,
+                                  .width = static_cast<float>(list.width),
+                                  .height = static_cast<float>(list.height),
+                                  .minDepth = 0.0f,
+                                  .maxDepth = 1.0f});
+  cmd.setScissor(0, vk::Rect2D{.offset = {0, 0}, .extent = extent});
+  cmd.bindVertexBuffers(0, meshes.geometry(), vk::DeviceSize{0});
+  cmd.bindIndexBuffer(meshes.geometry(), meshes.index_offset(), vk::IndexType::eUint32);
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipeline.layout(), 0, *colour_set,
+                         nullptr);
+  // In list order: with depth test LESS, the earlier of two equally deep fragments stays.
+  for (const DrawCall& draw : list.draws) {
+    const gpu::MeshRange& range = meshes.range(draw.mesh);
+    if (range.index_count == 0) continue;  // a mesh without triangles draws nothing
+    const gpu::PushConstants push{.F = draw.mvp, .first_colour = range.first_colour};
+    cmd.pushConstants<gpu::PushConstants>(
+        *pipeline.layout(), vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
+        0, push);
+    cmd.drawIndexed(range.index_count, 1, range.first_index, range.first_vertex, 0);
+  }
+  cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing
+
+  cmd.copyImageToBuffer(target->colour_image(), vk::ImageLayout::eTransferSrcOptimal,
+                        target->readback().buffer(),
+                        vk::BufferImageCopy{
+                            .bufferOffset = 0,
+                            .bufferRowLength = 0,  // 0: rows tightly packed
+                            .bufferImageHeight = 0,
+                            .imageSubresource = {.aspectMask = vk::ImageAspectFlagBits::eColor,
+                                                 .mipLevel = 0,
+                                                 .baseArrayLayer = 0,
+                                                 .layerCount = 1},
+                            .imageOffset = {0, 0, 0},
+                            .imageExtent = {list.width, list.height, 1},
+                        });
+  // Make the copied bytes visible to the host once the fence says the work is done.
+  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
+                      nullptr,
+                      vk::BufferMemoryBarrier{
+                          .srcAccessMask = vk::AccessFlagBits::eTransferWrite,
+                          .dstAccessMask = vk::AccessFlagBits::eHostRead,
+                          .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                          .buffer = target->readback().buffer(),
+                          .offset = 0,
+                          .size = VK_WHOLE_SIZE,
+                      },
+                      nullptr);
+  cmd.end();
+}
+
+GpuRenderer::GpuRenderer(const GpuOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+GpuRenderer::~GpuRenderer() = default;
+GpuRenderer::GpuRenderer(GpuRenderer&&) noexcept = default;
+GpuRenderer& GpuRenderer::operator=(GpuRenderer&&) noexcept = default;
+
+Image GpuRenderer::Render(const DrawList& list, GpuTimings* timings) {
+  if (!impl_) throw std::logic_error("GpuRenderer::Render on a moved-from renderer");
+  return impl_->Render(list, timings);
+}
+
+std::string GpuRenderer::DeviceName() const { return impl_ ? impl_->context.device_name() : ""; }
+
+const std::vector<std::string>& GpuRenderer::ValidationMessages() const {
+  static const std::vector<std::string> none;
+  return impl_ ? impl_->context.messages() : none;
+}
+
+}  // namespace twinraster

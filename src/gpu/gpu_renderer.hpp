@@ -1,0 +1,60 @@
+// The Vulkan renderer: draws a DrawList offscreen on lavapipe (or another device) and reads the
+// pixels back.
+#pragma once
+
+#include "draw_list.hpp"
+#include "image.hpp"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace twinraster {
+
+struct GpuOptions {
+  // Empty: prefer lavapipe (llvmpipe / CPU device type); else a substring of the device name to
+  // pick (case-insensitive).
+  std::string device;
+  // Enable VK_LAYER_KHRONOS_validation with synchronization validation; collect every message.
+  bool validation = false;
+};
+
+// Per Render(): setup = buffers/upload/command recording, draw = submit+wait, readback = map+copy
+// into Image.
+struct GpuTimings {
+  double setup_ms = 0, draw_ms = 0, readback_ms = 0;
+};
+
+// No usable Vulkan device, or the validation layer is missing; the message says what to install.
+class GpuUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class GpuRenderer {
+ public:
+  // Creates the instance, device and pipeline; throws GpuUnavailable.
+  explicit GpuRenderer(const GpuOptions& options = {});
+  ~GpuRenderer();
+  GpuRenderer(GpuRenderer&&) noexcept;
+  GpuRenderer& operator=(GpuRenderer&&) noexcept;
+  GpuRenderer(const GpuRenderer&) = delete;
+  GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+  // May be called many times with different sizes. Throws std::invalid_argument for a malformed
+  // list (size 0 or beyond the device's limit, an index or mesh out of range, a colour missing).
+  Image Render(const DrawList& list, GpuTimings* timings = nullptr);
+
+  std::string DeviceName() const;
+
+  // Every message the validation layer's debug messenger received (warnings and errors, including
+  // synchronization validation); always empty without GpuOptions::validation.
+  const std::vector<std::string>& ValidationMessages() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;  // pImpl: keeps vulkan.hpp out of every file that includes this one
+};
+
+}  // namespace twinraster

@@ -1,0 +1,189 @@
+#include "gpu/pipeline.hpp"
+
+#include "shaders/triangle.frag.h"
+#include "shaders/triangle.vert.h"
+
+#include <array>
+
+namespace twinraster::gpu {
+namespace {
+
+vk::raii::RenderPass CreateRenderPass(const vk::raii::Device& device) {
+  const std::array attachments = {
+      // Colour: cleared, kept, and left ready for the copy to the readback buffer.
+      vk::AttachmentDescription{
+          .format = kColourFormat,
+          .samples = vk::SampleCountFlagBits::e1,
+          .loadOp = vk::AttachmentLoadOp::eClear,
+          .storeOp = vk::AttachmentStoreOp::eStore,
+          .stencilLoadOp = vk::AttachmentLoadOp::eDontCare,
+          .stencilStoreOp = vk::AttachmentStoreOp::eDontCare,
+          .initialLayout = vk::ImageLayout::eUndefined,  // old contents are cleared anyway
+          .finalLayout = vk::ImageLayout::eTransferSrcOptimal,
+      },
+      // Depth: cleared to 1.0 and thrown away after the pass.
+      vk::AttachmentDescription{
+          .format = kDepthFormat,
+          .samples = vk::SampleCountFlagBits::e1,
+          .loadOp = vk::AttachmentLoadOp::eClear,
+          .storeOp = vk::AttachmentStoreOp::eDontCare,
+          .stencilLoadOp = vk::AttachmentLoadOp::eDontCare,
+          .stencilStoreOp = vk::AttachmentStoreOp::eDontCare,
+          .initialLayout = vk::ImageLayout::eUndefined,
+          .finalLayout = vk::ImageLayout::eDepthStencilAttachmentOptimal,
+      },
+  };
+  const vk::AttachmentReference colour_ref{0, vk::ImageLayout::eColorAttachmentOptimal};
+  const vk::AttachmentReference depth_ref{1, vk::ImageLayout::eDepthStencilAttachmentOptimal};
+  const vk::SubpassDescription subpass{
+      .pipelineBindPoint = vk::PipelineBindPoint::eGraphics,
+      .colorAttachmentCount = 1,
+      .pColorAttachments = &colour_ref,
+      .pDepthStencilAttachment = &depth_ref,
+  };
+  const std::array dependencies = {
+      // The images are reused by the next Render() of the same size: its clears must wait for
+      // this frame's copy out of the colour image (write-after-read) and its depth writes
+      // (write-after-write).
+      vk::SubpassDependency{
+          .srcSubpass = VK_SUBPASS_EXTERNAL,
+          .dstSubpass = 0,
+          .srcStageMask =
+              vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eLateFragmentTests,
+          .dstStageMask = vk::PipelineStageFlagBits::eColorAttachmentOutput |
+                          vk::PipelineStageFlagBits::eEarlyFragmentTests |
+                          vk::PipelineStageFlagBits::eLateFragmentTests,
+          .srcAccessMask = vk::AccessFlagBits::eDepthStencilAttachmentWrite,
+          .dstAccessMask = vk::AccessFlagBits::eColorAttachmentWrite |
+                           vk::AccessFlagBits::eDepthStencilAttachmentRead |
+                           vk::AccessFlagBits::eDepthStencilAttachmentWrite,
+      },
+      // The copy to the readback buffer reads what the pass wrote (COLOR_ATTACHMENT_OUTPUT ->
+      // TRANSFER); the final layout transition happens between the two.
+      vk::SubpassDependency{
+          .srcSubpass = 0,
+          .dstSubpass = VK_SUBPASS_EXTERNAL,
+          .srcStageMask = vk::PipelineStageFlagBits::eColorAttachmentOutput,
+          .dstStageMask = vk::PipelineStageFlagBits::eTransfer,
+          .srcAccessMask = vk::AccessFlagBits::eColorAttachmentWrite,
+          .dstAccessMask = vk::AccessFlagBits::eTransferRead,
+      },
+  };
+  return vk::raii::RenderPass(device, vk::RenderPassCreateInfo{
+                                          .attachmentCount = attachments.size(),
+                                          .pAttachments = attachments.data(),
+                                          .subpassCount = 1,
+                                          .pSubpasses = &subpass,
+                                          .dependencyCount = dependencies.size(),
+                                          .pDependencies = dependencies.data(),
+                                      });
+}
+
+vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device,
+                                          const std::uint32_t* words, std::size_t bytes) {
+  return vk::raii::ShaderModule(device,
+                                vk::ShaderModuleCreateInfo{.codeSize = bytes, .pCode = words});
+}
+
+}  // namespace
+
+Pipeline::Pipeline(const vk::raii::Device& device) {
+  render_pass_ = CreateRenderPass(device);
+
+  const vk::DescriptorSetLayoutBinding colour_binding{
+      .binding = 0,
+      .descriptorType = vk::DescriptorType::eStorageBuffer,
+      .descriptorCount = 1,
+      .stageFlags = vk::ShaderStageFlagBits::eFragment,
+  };
+  colour_set_layout_ = vk::raii::DescriptorSetLayout(
+      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = 1, .pBindings = &colour_binding});
+
+  // One range for both stages: the vertex shader reads F, the fragment shader first_colour.
+  const vk::PushConstantRange push_range{
+      .stageFlags = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
+      .offset = 0,
+      .size = sizeof(PushConstants),
+  };
+  const vk::DescriptorSetLayout set_layout = *colour_set_layout_;
+  layout_ = vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo{
+                                                 .setLayoutCount = 1,
+                                                 .pSetLayouts = &set_layout,
+                                                 .pushConstantRangeCount = 1,
+                                                 .pPushConstantRanges = &push_range,
+                                             });
+
+  const vk::raii::ShaderModule vertex =
+      CreateShaderModule(device, triangle_vert_spv, sizeof(triangle_vert_spv));
+  const vk::raii::ShaderModule fragment =
+      CreateShaderModule(device, triangle_frag_spv, sizeof(triangle_frag_spv));
+  const std::array stages = {
+      vk::PipelineShaderStageCreateInfo{
+          .stage = vk::ShaderStageFlagBits::eVertex, .module = *vertex, .pName = "main"},
+      vk::PipelineShaderStageCreateInfo{
+          .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
+  };
+
+  // One attribute: the vec3 position. Colours come per triangle from the storage buffer instead,
+  // so vertices shared by triangles of different colours are not duplicated.
+  const vk::VertexInputBindingDescription binding{
+      .binding = 0, .stride = 3 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex};
+  const vk::VertexInputAttributeDescription position{
+      .location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0};
+  const vk::PipelineVertexInputStateCreateInfo vertex_input{
+      .vertexBindingDescriptionCount = 1,
+      .pVertexBindingDescriptions = &binding,
+      .vertexAttributeDescriptionCount = 1,
+      .pVertexAttributeDescriptions = &position,
+  };
+  const vk::PipelineInputAssemblyStateCreateInfo input_assembly{
+      .topology = vk::PrimitiveTopology::eTriangleList};
+  // Viewport and scissor are dynamic so one pipeline serves every image size.
+  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
+  const vk::PipelineRasterizationStateCreateInfo rasterization{
+      .depthClampEnable = VK_FALSE,
+      .rasterizerDiscardEnable = VK_FALSE,
+      .polygonMode = vk::PolygonMode::eFill,
+      .cullMode = vk::CullModeFlagBits::eNone,  // the chapter draws both sides
+      .frontFace = vk::FrontFace::eCounterClockwise,
+      .depthBiasEnable = VK_FALSE,
+      .lineWidth = 1.0f,
+  };
+  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples =
+                                                               vk::SampleCountFlagBits::e1};
+  // LESS: of two fragments at equal depth the earlier draw stays.
+  const vk::PipelineDepthStencilStateCreateInfo depth_stencil{
+      .depthTestEnable = VK_TRUE,
+      .depthWriteEnable = VK_TRUE,
+      .depthCompareOp = vk::CompareOp::eLess,
+  };
+  const vk::PipelineColorBlendAttachmentState blend_attachment{
+      .blendEnable = VK_FALSE,
+      .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                        vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA,
+  };
+  const vk::PipelineColorBlendStateCreateInfo colour_blend{.attachmentCount = 1,
+                                                           .pAttachments = &blend_attachment};
+  const std::array dynamic_states = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = dynamic_states.size(),
+                                                   .pDynamicStates = dynamic_states.data()};
+
+  pipeline_ = vk::raii::Pipeline(device, nullptr,
+                                 vk::GraphicsPipelineCreateInfo{
+                                     .stageCount = stages.size(),
+                                     .pStages = stages.data(),
+                                     .pVertexInputState = &vertex_input,
+                                     .pInputAssemblyState = &input_assembly,
+                                     .pViewportState = &viewport,
+                                     .pRasterizationState = &rasterization,
+                                     .pMultisampleState = &multisample,
+                                     .pDepthStencilState = &depth_stencil,
+                                     .pColorBlendState = &colour_blend,
+                                     .pDynamicState = &dynamic,
+                                     .layout = *layout_,
+                                     .renderPass = *render_pass_,
+                                     .subpass = 0,
+                                 });
+}
+
+}  // namespace twinraster::gpu

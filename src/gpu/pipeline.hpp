@@ -1,0 +1,40 @@
+// The render pass and the one graphics pipeline (shaders, fixed-function state, layout) every
+// draw uses; none of it depends on the image size, so it is built once per GpuRenderer.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <vulkan/vulkan_raii.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace twinraster::gpu {
+
+constexpr vk::Format kColourFormat =
+    vk::Format::eR8G8B8A8Unorm;  // UNORM: colours reach the PNG unchanged
+constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+
+// The push-constant block of shaders/triangle.vert and .frag, byte for byte (std430: 64 + 4).
+struct PushConstants {
+  glm::mat4 F;                     // DrawCall::mvp; glm is column-major like GLSL
+  std::uint32_t first_colour = 0;  // index of the mesh's first triangle colour
+};
+static_assert(sizeof(PushConstants) == 68 && offsetof(PushConstants, first_colour) == 64);
+
+class Pipeline {
+ public:
+  explicit Pipeline(const vk::raii::Device& device);
+
+  const vk::raii::RenderPass& render_pass() const { return render_pass_; }
+  const vk::raii::DescriptorSetLayout& colour_set_layout() const { return colour_set_layout_; }
+  const vk::raii::PipelineLayout& layout() const { return layout_; }
+  const vk::raii::Pipeline& pipeline() const { return pipeline_; }
+
+ private:
+  vk::raii::RenderPass render_pass_ = nullptr;
+  vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;  // binding 0: the triangle colours
+  vk::raii::PipelineLayout layout_ = nullptr;
+  vk::raii::Pipeline pipeline_ = nullptr;
+};
+
+}  // namespace twinraster::gpu

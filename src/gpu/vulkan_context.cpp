@@ -1,0 +1,215 @@
+#include "gpu/vulkan_context.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <string_view>
+
+namespace twinraster::gpu {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+// The debug messenger's callback: keep the message for ValidationMessages().
+VKAPI_ATTR VkBool32 VKAPI_CALL StoreMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                            VkDebugUtilsMessageTypeFlagsEXT types,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                            void* user_data) {
+  // An exception must not unwind through the layer's C code; a lost message is the lesser harm.
+  try {
+    auto* messages = static_cast<std::vector<std::string>*>(user_data);
+    messages->push_back(vk::to_string(vk::DebugUtilsMessageSeverityFlagBitsEXT(severity)) + " " +
+                        vk::to_string(vk::DebugUtilsMessageTypeFlagsEXT(types)) + ": " +
+                        (data->pMessage != nullptr ? data->pMessage : ""));
+  } catch (...) {
+  }
+  return VK_FALSE;  // VK_TRUE would make the reported call fail; we only want to record
+}
+
+bool HasLayer(const vk::raii::Context& context, std::string_view name) {
+  const auto layers = context.enumerateInstanceLayerProperties();
+  return std::any_of(layers.begin(), layers.end(), [&](const vk::LayerProperties& layer) {
+    return std::string_view(layer.layerName) == name;
+  });
+}
+
+bool HasExtension(const std::vector<vk::ExtensionProperties>& extensions, std::string_view name) {
+  return std::any_of(extensions.begin(), extensions.end(), [&](const vk::ExtensionProperties& e) {
+    return std::string_view(e.extensionName) == name;
+  });
+}
+
+bool ContainsIgnoringCase(std::string_view haystack, std::string_view needle) {
+  const auto lower = [](char c) { return std::tolower(static_cast<unsigned char>(c)); };
+  const auto it = std::search(haystack.begin(), haystack.end(), needle.begin(), needle.end(),
+                              [&](char a, char b) { return lower(a) == lower(b); });
+  return it != haystack.end();
+}
+
+// The queue family we draw with, if the device can do everything the renderer needs: graphics,
+// gl_PrimitiveID in the fragment shader (the geometryShader feature) and a D32_SFLOAT depth buffer.
+std::optional<std::uint32_t> UsableQueueFamily(const vk::raii::PhysicalDevice& device) {
+  if (device.getFeatures().geometryShader == VK_FALSE) return std::nullopt;
+  const vk::FormatProperties depth = device.getFormatProperties(vk::Format::eD32Sfloat);
+  if (!(depth.optimalTilingFeatures & vk::FormatFeatureFlagBits::eDepthStencilAttachment)) {
+    return std::nullopt;
+  }
+  const auto families = device.getQueueFamilyProperties();
+  for (std::uint32_t i = 0; i < families.size(); ++i) {
+    // Graphics queues always support transfers too, which the readback copy needs.
+    if (families[i].queueFlags & vk::QueueFlagBits::eGraphics) return i;
+  }
+  return std::nullopt;
+}
+
+std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
+  std::string names;
+  for (const auto& device : devices) {
+    if (!names.empty()) names += ", ";
+    names += "'" + std::string(device.getProperties().deviceName.data()) + "'";
+  }
+  return names.empty() ? "none" : names;
+}
+
+}  // namespace
+
+// The loader is linked in (Vulkan::Vulkan), so we hand vulkan.hpp its entry point directly rather
+// than have it dlopen the library a second time.
+VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanceProcAddr) {
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  const std::vector<vk::ValidationFeatureEnableEXT> enabled_features = {
+      vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+  vk::DebugUtilsMessengerCreateInfoEXT messenger_info{
+      .messageSeverity = vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
+                         vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+      .messageType = vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
+                     vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
+                     vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
+      .pfnUserCallback = &StoreMessage,
+      .pUserData = &messages_,
+  };
+  // Chained into vkCreateInstance: the layer reads its feature list there, and a messenger in the
+  // chain also hears about vkCreateInstance / vkDestroyInstance themselves.
+  vk::ValidationFeaturesEXT validation_features{
+      .pNext = &messenger_info,
+      .enabledValidationFeatureCount = static_cast<std::uint32_t>(enabled_features.size()),
+      .pEnabledValidationFeatures = enabled_features.data(),
+  };
+
+  if (options.validation) {
+    if (!HasLayer(context_, kValidationLayer)) {
+      throw GpuUnavailable(
+          "the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed; install it "
+          "with `apt-get install vulkan-validationlayers`");
+    }
+    const auto layer_extensions =
+        context_.enumerateInstanceExtensionProperties(std::string(kValidationLayer));
+    const auto loader_extensions = context_.enumerateInstanceExtensionProperties();
+    for (const char* name :
+         {VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME, VK_EXT_DEBUG_UTILS_EXTENSION_NAME}) {
+      if (!HasExtension(layer_extensions, name) && !HasExtension(loader_extensions, name)) {
+        throw GpuUnavailable(
+            std::string("the Vulkan validation layer lacks ") + name +
+            "; install a current one with `apt-get install vulkan-validationlayers`");
+      }
+      extensions.push_back(name);
+    }
+    layers.push_back(kValidationLayer);
+  }
+
+  const vk::ApplicationInfo app_info{
+      .pApplicationName = "twinraster",
+      .applicationVersion = 1,
+      .pEngineName = "twinraster",
+      .engineVersion = 1,
+      .apiVersion = VK_API_VERSION_1_0,  // everything used here is core Vulkan 1.0
+  };
+  const vk::InstanceCreateInfo instance_info{
+      .pNext = options.validation ? &validation_features : nullptr,
+      .pApplicationInfo = &app_info,
+      .enabledLayerCount = static_cast<std::uint32_t>(layers.size()),
+      .ppEnabledLayerNames = layers.data(),
+      .enabledExtensionCount = static_cast<std::uint32_t>(extensions.size()),
+      .ppEnabledExtensionNames = extensions.data(),
+  };
+  try {
+    instance_ = vk::raii::Instance(context_, instance_info);
+  } catch (const vk::SystemError& error) {
+    throw GpuUnavailable(std::string("cannot create a Vulkan instance (") + error.what() +
+                         "); install a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers` "
+                         "for lavapipe");
+  }
+  if (options.validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
+
+  // Pick the device: the first usable one whose name contains options.device if that is set;
+  // otherwise lavapipe (a CPU device: the same pixels on every machine), else the first usable one.
+  const std::vector<vk::raii::PhysicalDevice> devices = instance_.enumeratePhysicalDevices();
+  const vk::raii::PhysicalDevice* chosen = nullptr;
+  std::uint32_t chosen_family = 0;
+  int chosen_score = 0;  // 0: not usable or not asked for, 1: usable, 2: what we look for
+  for (const vk::raii::PhysicalDevice& device : devices) {
+    const std::optional<std::uint32_t> family = UsableQueueFamily(device);
+    if (!family) continue;
+    const vk::PhysicalDeviceProperties properties = device.getProperties();
+    const std::string_view name = properties.deviceName.data();
+    int score = 0;
+    if (!options.device.empty()) {
+      score = ContainsIgnoringCase(name, options.device) ? 2 : 0;
+    } else {
+      const bool lavapipe = properties.deviceType == vk::PhysicalDeviceType::eCpu ||
+                            ContainsIgnoringCase(name, "llvmpipe");
+      score = lavapipe ? 2 : 1;
+    }
+    if (score > chosen_score) {
+      chosen = &device;
+      chosen_family = *family;
+      chosen_score = score;
+    }
+  }
+  if (chosen == nullptr) {
+    if (!options.device.empty()) {
+      throw GpuUnavailable("no usable Vulkan device name contains '" + options.device +
+                           "'; devices present: " + DeviceNames(devices));
+    }
+    throw GpuUnavailable(
+        "no Vulkan device supports what the renderer needs (graphics queue, geometryShader, "
+        "D32_SFLOAT depth); devices present: " +
+        DeviceNames(devices) + "; install lavapipe with `apt-get install mesa-vulkan-drivers`");
+  }
+  physical_device_ = *chosen;
+  queue_family_ = chosen_family;
+  properties_ = physical_device_.getProperties();
+  memory_properties_ = physical_device_.getMemoryProperties();
+
+  const float priority = 1.0f;
+  const vk::DeviceQueueCreateInfo queue_info{
+      .queueFamilyIndex = queue_family_,
+      .queueCount = 1,
+      .pQueuePriorities = &priority,
+  };
+  // The fragment shader reads gl_PrimitiveID, which SPIR-V puts under the Geometry capability.
+  const vk::PhysicalDeviceFeatures features{.geometryShader = VK_TRUE};
+  device_ = vk::raii::Device(physical_device_, vk::DeviceCreateInfo{
+                                                   .queueCreateInfoCount = 1,
+                                                   .pQueueCreateInfos = &queue_info,
+                                                   .pEnabledFeatures = &features,
+                                               });
+  queue_ = device_.getQueue(queue_family_, 0);
+}
+
+std::uint32_t VulkanContext::FindMemoryType(std::uint32_t type_bits,
+                                            vk::MemoryPropertyFlags required,
+                                            vk::MemoryPropertyFlags preferred) const {
+  std::optional<std::uint32_t> fallback;
+  for (std::uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
+    const vk::MemoryPropertyFlags flags = memory_properties_.memoryTypes[i].propertyFlags;
+    if ((type_bits & (1u << i)) == 0 || (flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return i;
+    if (!fallback) fallback = i;
+  }
+  if (!fallback) throw std::runtime_error("no Vulkan memory type with " + vk::to_string(required));
+  return *fallback;
+}
+
+}  // namespace twinraster::gpu

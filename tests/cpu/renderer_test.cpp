@@ -1,0 +1,231 @@
+// The whole CPU renderer: watertightness, closed meshes, colours, draw order, thread-count
+// independence, and agreement with a pixel-by-pixel evaluation of the same stages.
+#include "cpu/coverage.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "cpu/fragment_ops.hpp"
+#include "cpu/geometry.hpp"
+#include "test_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+#include <stdexcept>
+
+using namespace twinraster;
+using namespace twinraster::cputest;
+
+namespace {
+
+// Random overlapping triangles in two draws: one with w = 1 (clip space directly), one with a
+// perspective-like matrix (w = z, some vertices behind the camera), many of them clipped, and
+// exact duplicates with other colours (depth ties).
+DrawList RandomTriangles(std::uint32_t width, std::uint32_t height, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> xy(-1.6f, 1.6f), z(-0.3f, 1.3f), depth(-0.5f, 3.0f);
+  DrawList list;
+  list.width = width;
+  list.height = height;
+  list.background = {1, 2, 3};
+  for (int m = 0; m < 2; ++m) {
+    DrawMesh mesh;
+    for (int t = 0; t < count; ++t) {
+      const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+      for (int k = 0; k < 3; ++k) mesh.positions.push_back({xy(rng), xy(rng), m == 0 ? z(rng) : depth(rng)});
+      mesh.triangles.push_back({base, base + 1, base + 2});
+      mesh.colours.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                              static_cast<std::uint8_t>(rng())});
+      if (t % 7 == 0) {  // the same triangle again, another colour: LESS keeps the first
+        mesh.triangles.push_back({base, base + 1, base + 2});
+        mesh.colours.push_back({static_cast<std::uint8_t>(rng()), 0, 0});
+      }
+    }
+    list.meshes.push_back(mesh);
+  }
+  glm::mat4 perspective(1.0f);
+  perspective[2][2] = 1.02f;   // z' = 1.02 z - 0.1
+  perspective[3][2] = -0.1f;
+  perspective[2][3] = 1.0f;    // w' = z
+  perspective[3][3] = 0.0f;
+  list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
+  list.draws.push_back(DrawCall{1, perspective});
+  return list;
+}
+
+// The same stages without spans, bands or threads: every pixel of every box tested on its own.
+Image RenderPixelByPixel(const DrawList& list) {
+  const std::vector<cpu::TriangleSetup> triangles = cpu::ProcessGeometry(list, 1);
+  cpu::Framebuffer fb(list.width, list.height, cpu::PackRgba(list.background));
+  for (const cpu::TriangleSetup& t : triangles) {
+    for (int py = t.bounds.y0; py <= t.bounds.y1; ++py) {
+      for (int px = t.bounds.x0; px <= t.bounds.x1; ++px) {
+        if (cpu::Covers(t, px, py)) cpu::ShadeFragment(fb, px, py, t.depth, t.colour);
+      }
+    }
+  }
+  Image image(list.width, list.height);
+  std::memcpy(image.rgba.data(), fb.colour.data(), image.rgba.size());
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("a fan inside the image covers every pixel at most once, and the inside exactly once",
+          "[cpu][render]") {
+  const DrawList fan = Fan(97, 83, {0.03f, -0.05f}, 0.8f, 17);
+  const cpu::CoverageCounts counts = cpu::CountCoverage(fan);
+  const auto& ring = fan.meshes[0].positions;
+  const auto window = [&](const glm::vec3& p) {
+    return glm::dvec2((p.x + 1.0) * 0.5 * fan.width, (p.y + 1.0) * 0.5 * fan.height);
+  };
+  std::size_t covered = 0;
+  for (std::uint32_t y = 0; y < fan.height; ++y) {
+    for (std::uint32_t x = 0; x < fan.width; ++x) {
+      INFO("pixel " << x << "," << y);
+      REQUIRE(counts.total(x, y) <= 1);
+      covered += counts.total(x, y);
+      // Well inside the ring polygon (more than a hundredth of a pixel from its outline): covered.
+      const glm::dvec2 c(x + 0.5, y + 0.5);
+      bool inside = true;
+      const std::size_t n = ring.size() - 1;
+      for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec2 a = window(ring[1 + i]), b = window(ring[1 + (i + 1) % n]);
+        const glm::dvec2 e = b - a;
+        const double side = (e.x * (c.y - a.y) - e.y * (c.x - a.x)) / std::hypot(e.x, e.y);
+        inside = inside && side > 0.01;
+      }
+      if (inside) REQUIRE(counts.total(x, y) == 1);
+    }
+  }
+  CHECK(covered > 2000);
+}
+
+TEST_CASE("a clipped fan larger than the image covers every pixel exactly once", "[cpu][render]") {
+  // Ring radius 3 in clip space: every triangle crosses the x or y planes, and the polygon
+  // contains the whole view square, so clipping must leave no gap and no overlap.
+  const DrawList fan = Fan(64, 48, {0.1f, 0.07f}, 3.0f, 16);
+  const cpu::CoverageCounts counts = cpu::CountCoverage(fan);
+  for (std::uint32_t y = 0; y < fan.height; ++y) {
+    for (std::uint32_t x = 0; x < fan.width; ++x) {
+      INFO("pixel " << x << "," << y);
+      REQUIRE(counts.total(x, y) == 1);
+    }
+  }
+}
+
+TEST_CASE("closed cubes: every pixel is covered by as many front as back faces, at most once each",
+          "[cpu][render]") {
+  // Rotated cubes, one inside the image and one cut by the image's left edge.
+  const DrawList list = CubeScene(151, 127, {{{0.4, -0.2, 6.0}, {0.3, 0.8, 0.5}, 37.0, 1.0},
+                                             {{-3.2, 0.6, 7.5}, {1.0, 0.2, 0.1}, 61.0, 1.3}});
+  const cpu::CoverageCounts counts = cpu::CountCoverage(list);
+  std::size_t covered = 0;
+  for (std::uint32_t y = 0; y < list.height; ++y) {
+    for (std::uint32_t x = 0; x < list.width; ++x) {
+      const std::size_t i = counts.index(x, y);
+      INFO("pixel " << x << "," << y);
+      REQUIRE(counts.kept[i] == counts.swapped[i]);
+      REQUIRE(counts.kept[i] <= 2);  // two cubes may overlap
+      covered += counts.kept[i] != 0;
+    }
+  }
+  CHECK(covered > 2000);
+}
+
+TEST_CASE("colours: the triangle's colour with alpha 255 over the background", "[cpu][render]") {
+  DrawList list;
+  list.width = 8;
+  list.height = 8;
+  list.background = {7, 8, 9};
+  DrawMesh mesh;
+  // Clip-space square (-0.5, -0.5) .. (0.5, 0.5): window [2, 6]^2, pixels 2..5 in both directions.
+  mesh.positions = {{-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  mesh.colours = {{200, 100, 50}, {200, 100, 50}};
+  list.meshes.push_back(mesh);
+  list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
+  const Image image = RenderOnCpu(list);
+  REQUIRE(image.width == 8);
+  REQUIRE(image.height == 8);
+  for (std::uint32_t y = 0; y < 8; ++y) {
+    for (std::uint32_t x = 0; x < 8; ++x) {
+      const bool inside = x >= 2 && x <= 5 && y >= 2 && y <= 5;
+      const std::uint8_t* p = image.pixel(x, y);
+      INFO("pixel " << x << "," << y);
+      CHECK(p[0] == (inside ? 200 : 7));
+      CHECK(p[1] == (inside ? 100 : 8));
+      CHECK(p[2] == (inside ? 50 : 9));
+      CHECK(p[3] == 255);
+    }
+  }
+}
+
+TEST_CASE("depth ties keep the earlier draw (LESS); nearer later draws win", "[cpu][render]") {
+  DrawList list;
+  list.width = 16;
+  list.height = 16;
+  DrawMesh mesh;
+  mesh.positions = {{-1.0f, -1.0f, 0.5f}, {3.0f, -1.0f, 0.5f}, {-1.0f, 3.0f, 0.5f}};
+  mesh.triangles = {{0, 1, 2}};
+  mesh.colours = {{255, 0, 0}};
+  list.meshes.push_back(mesh);
+  mesh.colours = {{0, 255, 0}};
+  list.meshes.push_back(mesh);
+  list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
+  list.draws.push_back(DrawCall{1, glm::mat4(1.0f)});  // same depth: rejected everywhere
+  Image image = RenderOnCpu(list);
+  CHECK(image.pixel(5, 5)[0] == 255);
+  CHECK(image.pixel(5, 5)[1] == 0);
+
+  glm::mat4 nearer(1.0f);
+  nearer[3][2] = -0.25f;  // z' = z - 0.25
+  list.draws.push_back(DrawCall{1, nearer});
+  image = RenderOnCpu(list);
+  CHECK(image.pixel(5, 5)[0] == 0);
+  CHECK(image.pixel(5, 5)[1] == 255);
+}
+
+TEST_CASE("the image is the same for any thread count", "[cpu][render][threads]") {
+  const DrawList list = RandomTriangles(173, 131, 300, 7u);
+  const Image one = RenderOnCpu(list, CpuOptions{1});
+  for (unsigned threads : {2u, 3u, 7u, 0u}) {
+    INFO("threads " << threads);
+    const Image other = RenderOnCpu(list, CpuOptions{threads});
+    CHECK(other.rgba == one.rgba);
+  }
+  const DrawList cubes = CubeScene(600, 600, {{{-1.5, 0, 7}}, {{1.25, 2, 7.5}}});
+  const Image cubes_one = RenderOnCpu(cubes, CpuOptions{1});
+  CHECK(RenderOnCpu(cubes, CpuOptions{2}).rgba == cubes_one.rgba);
+  CHECK(RenderOnCpu(cubes, CpuOptions{3}).rgba == cubes_one.rgba);
+}
+
+TEST_CASE("spans, bands and threads give what pixel-by-pixel evaluation gives", "[cpu][render]") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const DrawList list = RandomTriangles(120, 90, 200, seed);
+    CpuTimings timings;
+    const Image fast = RenderOnCpu(list, CpuOptions{2}, &timings);
+    CHECK(fast.rgba == RenderPixelByPixel(list).rgba);
+    CHECK(timings.setup_ms >= 0.0);
+    CHECK(timings.draw_ms > 0.0);
+  }
+}
+
+TEST_CASE("malformed draw lists are refused", "[cpu][render]") {
+  DrawList list = Fan(16, 16, {0.0f, 0.0f}, 0.5f, 5);
+  DrawList bad = list;
+  bad.width = 0;
+  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  bad = list;
+  bad.height = 16385;
+  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  bad = list;
+  bad.draws[0].mesh = 1;
+  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  bad = list;
+  bad.meshes[0].triangles[2][1] = 99;
+  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  bad = list;
+  bad.meshes[0].colours.pop_back();
+  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  CHECK_NOTHROW(RenderOnCpu(list));
+}

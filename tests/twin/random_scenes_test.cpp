@@ -1,0 +1,45 @@
+// The property at the heart of the project: for hundreds of random scenes from fixed seeds, the
+// CPU twin's image equals lavapipe's, 0 differing pixels. A failing scene is written out so it can
+// be replayed with `twinraster render`.
+#include "draw_list.hpp"
+#include "scene_loader.hpp"
+#include "support/test_support.hpp"
+#include "twin_support.hpp"
+#include "random_scene.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+using namespace twinraster;
+
+namespace {
+
+constexpr std::uint32_t kFirstSeed = 1;
+constexpr std::uint32_t kSceneCount = 400;
+
+std::filesystem::path SaveFailure(std::uint32_t seed, const std::string& json_text) {
+  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_BINARY_DIR) / "failed-scenes";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / ("random-" + std::to_string(seed) + ".json");
+  test::WriteFile(file, json_text);
+  return file;
+}
+
+}  // namespace
+
+TEST_CASE("Random scenes: GPU image == CPU image in every one", "[twin][random]") {
+  std::uint32_t failures = 0;
+  for (std::uint32_t seed = kFirstSeed; seed < kFirstSeed + kSceneCount; ++seed) {
+    const std::string text = test::RandomSceneJson(seed).dump(1);
+    const Scene scene = ParseScene(text, "random-" + std::to_string(seed) + ".json");
+    const test::TwinResult r = test::RenderTwins(BuildDrawList(scene));
+    if (r.comparison.Equal()) continue;
+    ++failures;
+    const auto file = SaveFailure(seed, text);
+    UNSCOPED_INFO("seed " << seed << ": " << r.Describe() << "\n  replay: twinraster render " << file.string());
+    CHECK(r.comparison.Equal());
+  }
+  REQUIRE(failures == 0);
+  test::RequireNoValidationMessages();
+}
