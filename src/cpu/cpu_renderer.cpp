@@ -6,9 +6,8 @@
 #include "cpu/rasterize.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
-#include <cstring>
+#include <utility>
 
 namespace twinraster {
 
@@ -23,29 +22,32 @@ double MillisecondsSince(std::chrono::steady_clock::time_point start) {
 Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
   using namespace cpu;
   ValidateDrawList(list);
-  // More parts than rows would leave threads idle; the image does not depend on this number.
-  const unsigned threads = std::min(ResolveThreadCount(options.threads), list.height);
+  // More parts than bands would leave threads idle; the image does not depend on this number.
+  const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
+  const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
 
   // Setup: vertex stage, clipping, viewport transform, triangle setup.
   auto start = std::chrono::steady_clock::now();
   const std::vector<TriangleSetup> triangles = ProcessGeometry(list, threads);
   const double setup_ms = MillisecondsSince(start);
 
-  // Draw: clear, then every part rasterizes all triangles in order over its own rows.
+  // Draw: every part clears its own rows, then rasterizes all triangles in order over them.
   start = std::chrono::steady_clock::now();
-  Framebuffer fb(list.width, list.height, PackRgba(list.background));
+  Framebuffer fb(list.width, list.height);
+  const std::uint32_t background = PackRgba(list.background);
   ParallelParts(threads, [&](unsigned part) {
     const RowShare share{threads, part};
+    ForEachOwnedBand(share, static_cast<int>(list.height),
+                     [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); });
     for (const TriangleSetup& t : triangles) {
       ForEachSpan(t, share, [&](int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
     }
   });
   const double draw_ms = MillisecondsSince(start);
 
-  // Readback: the colour words already hold the RGBA bytes in memory order.
+  // Readback: the colour attachment already is the Image.
   start = std::chrono::steady_clock::now();
-  Image image(list.width, list.height);
-  std::memcpy(image.rgba.data(), fb.colour.data(), image.rgba.size());
+  Image image = std::move(fb.colour);
   const double readback_ms = MillisecondsSince(start);
 
   if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms};

@@ -1,25 +1,40 @@
 // Stages 6 and 7 per fragment: depth from the triangle's plane, the depth test (VK_COMPARE_OP_LESS
 // against a D32_SFLOAT buffer cleared to 1.0), the depth write, and the colour write of the
-// triangle's flat colour as RGBA8 (no blending).
+// triangle's flat colour as RGBA8 (no blending). The colour attachment is the output Image itself.
 #pragma once
 
 #include "cpu/depth_plane.hpp"
 #include "cpu/rasterize.hpp"
+#include "image.hpp"
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <cstring>
+#include <memory>
 
 namespace twinraster::cpu {
 
 struct Framebuffer {
-  std::uint32_t width = 0, height = 0;
-  std::vector<std::uint32_t> colour;  // RGBA8 bytes per pixel, row-major, top row first
-  std::vector<float> depth;
+  Image colour;                    // RGBA8, top row first
+  std::unique_ptr<float[]> depth;  // D32_SFLOAT, same layout
 
-  Framebuffer(std::uint32_t w, std::uint32_t h, std::uint32_t clear_colour, float clear_depth = 1.0f)
-      : width(w), height(h), colour(std::size_t{w} * h, clear_colour), depth(std::size_t{w} * h, clear_depth) {}
+  // Allocates without clearing: call ClearRows on every row before drawing.
+  Framebuffer(std::uint32_t width, std::uint32_t height)
+      : colour(width, height), depth(new float[std::size_t{width} * height]) {}
+
+  std::uint32_t width() const { return colour.width; }
+  std::uint32_t height() const { return colour.height; }
+  std::size_t index(int px, int py) const { return std::size_t(py) * colour.width + std::size_t(px); }
+  std::uint32_t colour_word(std::size_t i) const {  // the pixel's 4 bytes as one word (PackRgba)
+    std::uint32_t word;
+    std::memcpy(&word, colour.rgba.data() + 4 * i, 4);
+    return word;
+  }
 };
+
+// vkCmdBeginRenderPass's clears for rows [row_begin, row_end).
+void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour,
+               float clear_depth = 1.0f);
 
 inline bool DepthTestLess(float fragment_z, float stored_z) { return fragment_z < stored_z; }
 

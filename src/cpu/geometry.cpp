@@ -98,9 +98,14 @@ std::vector<TriangleSetup> ProcessGeometry(const DrawList& list, unsigned thread
                                     start.begin()) - 1;
   };
 
+  // Threads only pay off for enough work; the result does not depend on their number.
+  const auto parts_for = [threads](std::size_t items, std::size_t per_part) {
+    return static_cast<unsigned>(std::min<std::size_t>(threads, 1 + items / per_part));
+  };
+
   // Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices.
   std::vector<ShadedVertex> vertices(vertex_start[draw_count]);
-  ParallelFor(threads, vertices.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+  ParallelFor(parts_for(vertices.size(), 8192), vertices.size(), [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t g = begin; g < end;) {
       const std::size_t d = draw_of(vertex_start, g);
       const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
@@ -113,8 +118,9 @@ std::vector<TriangleSetup> ProcessGeometry(const DrawList& list, unsigned thread
 
   // Primitive assembly, clipping and setup; each part keeps its slice in order.
   const std::size_t triangle_count = triangle_start[draw_count];
-  std::vector<std::vector<TriangleSetup>> parts(std::max(1u, threads));
-  ParallelFor(threads, triangle_count, [&](std::size_t begin, std::size_t end, unsigned part) {
+  const unsigned triangle_parts = parts_for(triangle_count, 2048);
+  std::vector<std::vector<TriangleSetup>> parts(triangle_parts);
+  ParallelFor(triangle_parts, triangle_count, [&](std::size_t begin, std::size_t end, unsigned part) {
     std::vector<TriangleSetup>& out = parts[part];
     out.reserve(end - begin);
     for (std::size_t g = begin; g < end;) {

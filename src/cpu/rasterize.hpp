@@ -26,6 +26,15 @@ struct RowShare {
   unsigned part = 0;
 };
 
+// Calls fn(row_begin, row_end) for each band of rows [0, height) that `share` owns.
+template <class Fn>
+void ForEachOwnedBand(const RowShare& share, int height, Fn&& fn) {
+  const int parts = static_cast<int>(share.parts);
+  for (int band = static_cast<int>(share.part); band * kBandRows < height; band += parts) {
+    fn(band * kBandRows, std::min(height, (band + 1) * kBandRows));
+  }
+}
+
 // Calls fn(py, span) for every non-empty covered span of the rows of `share` in t's box, top down.
 template <class Fn>
 void ForEachSpan(const TriangleSetup& t, const RowShare& share, Fn&& fn) {

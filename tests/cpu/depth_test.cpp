@@ -38,35 +38,46 @@ TEST_CASE("the depth plane is evaluated with fused multiply-adds, then clamped",
   CHECK(DepthAt(DepthPlane{0.5f, 0.25f, -0.5f}, 2, 1) == 0.5f);
 }
 
+namespace {
+
+Framebuffer Cleared(std::uint32_t w, std::uint32_t h, std::uint32_t colour) {
+  Framebuffer fb(w, h);
+  ClearRows(fb, 0, static_cast<int>(h), colour);
+  return fb;
+}
+
+}  // namespace
+
 TEST_CASE("depth test LESS: equal depth is rejected, nearer passes and writes", "[cpu][depth]") {
-  Framebuffer fb(4, 4, 0x11223344u);
+  Framebuffer fb = Cleared(4, 4, 0x11223344u);
   const DepthPlane plane{0.5625f, 0.0f, 0.0f};
   CHECK(fb.depth[5] == 1.0f);
+  CHECK(fb.colour_word(5) == 0x11223344u);
   CHECK(ShadeFragment(fb, 1, 1, plane, 0xaabbccddu));
   CHECK(fb.depth[5] == 0.5625f);
-  CHECK(fb.colour[5] == 0xaabbccddu);
+  CHECK(fb.colour_word(5) == 0xaabbccddu);
   // Same depth again, another colour: LESS fails, nothing changes.
   CHECK_FALSE(ShadeFragment(fb, 1, 1, plane, 0x01020304u));
-  CHECK(fb.colour[5] == 0xaabbccddu);
+  CHECK(fb.colour_word(5) == 0xaabbccddu);
   CHECK_FALSE(DepthTestLess(0.5625f, 0.5625f));
   // A hair nearer passes.
   const DepthPlane nearer{std::nextafter(0.5625f, 0.0f), 0.0f, 0.0f};
   CHECK(ShadeFragment(fb, 1, 1, nearer, 0x01020304u));
-  CHECK(fb.colour[5] == 0x01020304u);
+  CHECK(fb.colour_word(5) == 0x01020304u);
   // A fragment at exactly 1.0 never passes against the cleared buffer.
   CHECK_FALSE(ShadeFragment(fb, 2, 2, DepthPlane{1.0f, 0.0f, 0.0f}, 0x01020304u));
-  CHECK(fb.colour[10] == 0x11223344u);
+  CHECK(fb.colour_word(10) == 0x11223344u);
 }
 
 TEST_CASE("span shading equals fragment-by-fragment shading", "[cpu][depth]") {
-  Framebuffer a(32, 1, 0u), b(32, 1, 0u);
+  Framebuffer a = Cleared(32, 1, 0u), b = Cleared(32, 1, 0u);
   const DepthPlane first{0.8f, -0.01f, 0.0f}, second{0.2f, 0.03f, 0.0f};
   ShadeSpan(a, 0, Span{0, 32}, first, 1u);
   ShadeSpan(a, 0, Span{3, 29}, second, 2u);
   for (int px = 0; px < 32; ++px) ShadeFragment(b, px, 0, first, 1u);
   for (int px = 3; px < 29; ++px) ShadeFragment(b, px, 0, second, 2u);
-  CHECK(a.colour == b.colour);
-  CHECK(a.depth == b.depth);
-  CHECK(a.colour[3] == 2u);
-  CHECK(a.colour[28] == 1u);  // 0.2 + 28 * 0.03 > 0.8 - 28 * 0.01
+  CHECK(a.colour.rgba == b.colour.rgba);
+  for (std::size_t i = 0; i < 32; ++i) CHECK(a.depth[i] == b.depth[i]);
+  CHECK(a.colour_word(3) == 2u);
+  CHECK(a.colour_word(28) == 1u);  // 0.2 + 28 * 0.03 > 0.8 - 28 * 0.01
 }

@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
+#include <utility>
 #include <random>
 #include <stdexcept>
 
@@ -55,7 +55,8 @@ DrawList RandomTriangles(std::uint32_t width, std::uint32_t height, int count, u
 // The same stages without spans, bands or threads: every pixel of every box tested on its own.
 Image RenderPixelByPixel(const DrawList& list) {
   const std::vector<cpu::TriangleSetup> triangles = cpu::ProcessGeometry(list, 1);
-  cpu::Framebuffer fb(list.width, list.height, cpu::PackRgba(list.background));
+  cpu::Framebuffer fb(list.width, list.height);
+  cpu::ClearRows(fb, 0, static_cast<int>(list.height), cpu::PackRgba(list.background));
   for (const cpu::TriangleSetup& t : triangles) {
     for (int py = t.bounds.y0; py <= t.bounds.y1; ++py) {
       for (int px = t.bounds.x0; px <= t.bounds.x1; ++px) {
@@ -63,9 +64,7 @@ Image RenderPixelByPixel(const DrawList& list) {
       }
     }
   }
-  Image image(list.width, list.height);
-  std::memcpy(image.rgba.data(), fb.colour.data(), image.rgba.size());
-  return image;
+  return std::move(fb.colour);
 }
 
 }  // namespace

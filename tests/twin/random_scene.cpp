@@ -95,17 +95,9 @@ json RandomSceneJson(std::uint32_t seed) {
   const double vw = dice.Uniform(0.5, 2);
   scene["viewport"] = {{"width", vw}, {"height", vw * dice.Uniform(0.5, 2)}, {"distance", dice.Uniform(0.5, 2)}};
   const double near = dice.LogUniform(0.01, 1);
-  scene["depth"] = {{"near", near}, {"far", near * dice.LogUniform(10, 1e4)}};
-
-  // The cloud of instances fills [-4, 4] x [-4, 4] x [2, 12]. The camera is inside it half the time.
-  if (dice.Chance(0.5)) {
-    scene["camera"] = {{"position", json::array({dice.Uniform(-3, 3), dice.Uniform(-3, 3), dice.Uniform(3, 11)})},
-                       {"rotation", Rotation(dice)}};
-  } else {
-    scene["camera"] = {{"eye", json::array({dice.Uniform(-15, 15), dice.Uniform(-10, 10), dice.Uniform(-12, -2)})},
-                       {"center", json::array({dice.Uniform(-2, 2), dice.Uniform(-2, 2), dice.Uniform(5, 9)})},
-                       {"up", json::array({dice.Uniform(-0.3, 0.3), 1, dice.Uniform(-0.3, 0.3)})}};
-  }
+  // Usually far enough to hold the whole cloud; sometimes cutting through it (far-plane clipping).
+  const double far = dice.Chance(0.8) ? dice.LogUniform(40, 1e4) : near * dice.LogUniform(10, 1e3);
+  scene["depth"] = {{"near", near}, {"far", far}};
 
   scene["models"] = {{"cube", Cube(dice)},   {"blob", Blob(dice, 1.5)},     {"slivers", Slivers(dice)},
                      {"tiny", Sized(dice, 0.004)}, {"huge", Sized(dice, 60)}};
@@ -114,7 +106,7 @@ json RandomSceneJson(std::uint32_t seed) {
   std::discrete_distribution<int> pick(std::begin(weights), std::end(weights));
   std::mt19937 picker(seed ^ 0x9e3779b9u);
   json instances = json::array();
-  const int count = dice.Int(1, 8);
+  const int count = dice.Int(2, 10);
   for (int i = 0; i < count; ++i) {
     instances.push_back({{"model", names[pick(picker)]},
                          {"transform",
@@ -123,6 +115,25 @@ json RandomSceneJson(std::uint32_t seed) {
                            {"translation", json::array({dice.Uniform(-4, 4), dice.Uniform(-4, 4), dice.Uniform(2, 12)})}}}});
   }
   scene["instances"] = instances;
+
+  // The cloud of instances fills [-4, 4] x [-4, 4] x [2, 12]. Cameras: inside it looking at one of
+  // the instances, outside it looking at its middle, or the chapter's position + rotation.
+  const double kind = dice.Uniform(0, 1);
+  const json up = json::array({dice.Uniform(-0.3, 0.3), 1, dice.Uniform(-0.3, 0.3)});
+  if (kind < 0.4) {
+    const json& target = instances[dice.Int(0, count - 1)]["transform"]["translation"];
+    scene["camera"] = {{"eye", json::array({dice.Uniform(-4, 4), dice.Uniform(-4, 4), dice.Uniform(2, 12)})},
+                       {"center", target},
+                       {"up", up}};
+  } else if (kind < 0.8) {
+    scene["camera"] = {{"eye", json::array({dice.Uniform(-15, 15), dice.Uniform(-10, 10), dice.Uniform(-12, -2)})},
+                       {"center", json::array({dice.Uniform(-2, 2), dice.Uniform(-2, 2), dice.Uniform(5, 9)})},
+                       {"up", up}};
+  } else {
+    scene["camera"] = {{"position", json::array({dice.Uniform(-2, 2), dice.Uniform(-2, 2), dice.Uniform(-6, 0)})},
+                       {"rotation", json::array({json{{"axis", "x"}, {"degrees", dice.Uniform(-20, 20)}},
+                                                 json{{"axis", "y"}, {"degrees", dice.Uniform(-30, 30)}}})}};
+  }
   return scene;
 }
 
