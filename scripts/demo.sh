@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Sets up, builds, and runs twinraster's main job on the default scene.
+# Sets up, builds, and renders the default scene on lavapipe and on the CPU twin, comparing them.
+# Writes out/cgfs-transforms-gpu.png and out/cgfs-transforms-cpu.png. Extra arguments go to render.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
-./build/src/twinraster explain scenes/cgfs-transforms.json "$@"
+mkdir -p out
+./build/src/twinraster render scenes/cgfs-transforms.json -o out/cgfs-transforms.png "$@"

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace twinraster {
 
@@ -39,11 +40,14 @@ std::filesystem::path Suffixed(const std::filesystem::path& out, const std::stri
 
 BackendRun RenderGpu(const DrawList& list, const std::string& device) {
   BackendRun run{"gpu", "", {}, {}};
+  Stopwatch clock;
   GpuRenderer renderer(GpuOptions{device, false});
+  const double device_ms = clock.Milliseconds();
   run.detail = renderer.DeviceName();
   GpuTimings t;
   run.image = renderer.Render(list, &t);
-  run.setup_ms = t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
+  // Set-up is everything before the draw: instance, device and pipeline, then buffers.
+  run.setup_ms = device_ms + t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
   return run;
 }
 
@@ -51,7 +55,8 @@ BackendRun RenderCpu(const DrawList& list, unsigned threads) {
   BackendRun run{"cpu", "", {}, {}};
   CpuTimings t;
   run.image = RenderOnCpu(list, CpuOptions{threads}, &t);
-  run.detail = threads == 0 ? "all cores" : std::to_string(threads) + " thread(s)";
+  const unsigned used = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
+  run.detail = "CPU twin, " + std::to_string(used) + (used == 1 ? " thread" : " threads");
   run.setup_ms = t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
   return run;
 }

@@ -7,6 +7,41 @@ namespace twinraster::cpu {
 
 namespace {
 
+// One cached depth allocation per thread, at most 64 MiB of it.
+constexpr std::size_t kMaxCachedDepth = std::size_t{16} << 20;
+struct CachedDepth {
+  std::unique_ptr<float[]> data;
+  std::size_t capacity = 0;
+};
+thread_local CachedDepth t_cached_depth;
+
+}  // namespace
+
+DepthBuffer::DepthBuffer(std::size_t size) {
+  if (t_cached_depth.capacity >= size) {
+    data_ = std::move(t_cached_depth.data);
+    capacity_ = t_cached_depth.capacity;
+    t_cached_depth.capacity = 0;
+  } else {
+    data_.reset(new float[size]);
+    capacity_ = size;
+  }
+}
+
+DepthBuffer::~DepthBuffer() {
+  if (data_ && capacity_ <= kMaxCachedDepth && capacity_ > t_cached_depth.capacity) {
+    t_cached_depth.data = std::move(data_);
+    t_cached_depth.capacity = capacity_;
+  }
+}
+
+DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept
+    : data_(std::move(other.data_)), capacity_(other.capacity_) {
+  other.capacity_ = 0;
+}
+
+namespace {
+
 // Written so that the compiler can vectorize it (no branches, every store unconditional). On x86-64
 // a second copy is built for CPUs with AVX2 and FMA, where fmaf is one instruction; the portable
 // copy's fmaf is just as exact, only slower.
@@ -32,7 +67,7 @@ void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, fl
 
 void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour, float clear_depth) {
   const std::size_t begin = fb.index(0, row_begin), end = fb.index(0, row_end);
-  std::fill(fb.depth.get() + begin, fb.depth.get() + end, clear_depth);
+  std::fill(fb.depth.data() + begin, fb.depth.data() + end, clear_depth);
   std::uint8_t* rgba = fb.colour.rgba.data();
   for (std::size_t i = begin; i < end; ++i) std::memcpy(rgba + 4 * i, &clear_colour, 4);
 }
@@ -48,7 +83,7 @@ bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std
 
 void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std::uint32_t colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeRow(fb.depth.get() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
+  ShadeRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
            static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, colour);
 }
 

@@ -14,13 +14,33 @@
 
 namespace twinraster::cpu {
 
+// Depth memory, reused between renders on the same thread: fresh memory costs a page fault per
+// 4 KiB, which for a simple scene is as much as drawing it.
+class DepthBuffer {
+ public:
+  explicit DepthBuffer(std::size_t size);  // not cleared
+  ~DepthBuffer();                          // hands the memory back for the next render
+  DepthBuffer(DepthBuffer&& other) noexcept;
+  DepthBuffer& operator=(DepthBuffer&&) = delete;
+  DepthBuffer(const DepthBuffer&) = delete;
+  DepthBuffer& operator=(const DepthBuffer&) = delete;
+
+  float* data() { return data_.get(); }
+  float& operator[](std::size_t i) { return data_[i]; }
+  float operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  std::unique_ptr<float[]> data_;
+  std::size_t capacity_ = 0;
+};
+
 struct Framebuffer {
-  Image colour;                    // RGBA8, top row first
-  std::unique_ptr<float[]> depth;  // D32_SFLOAT, same layout
+  Image colour;       // RGBA8, top row first
+  DepthBuffer depth;  // D32_SFLOAT, same layout
 
   // Allocates without clearing: call ClearRows on every row before drawing.
   Framebuffer(std::uint32_t width, std::uint32_t height)
-      : colour(width, height), depth(new float[std::size_t{width} * height]) {}
+      : colour(width, height), depth(std::size_t{width} * height) {}
 
   std::uint32_t width() const { return colour.width; }
   std::uint32_t height() const { return colour.height; }

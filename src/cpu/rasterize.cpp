@@ -34,4 +34,57 @@ Span CoveredSpan(const TriangleSetup& t, int py) {
   return {static_cast<int>(begin), static_cast<int>(end)};
 }
 
+SpanWalker::SpanWalker(const TriangleSetup& t, int py) : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const EdgeFunction& e = t.edges[i];
+    EdgeState& s = edges_[i];
+    const std::int64_t row_value = e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne);
+    const std::int64_t row_change = e.dcdy * kSubpixelOne;  // of row_value per row down
+    const std::int64_t step = -e.dcdx * kSubpixelOne;
+    if (step == 0) {
+      s.kind = Kind::kConstant;  // q is the row value itself, dq its change
+      s.q = row_value;
+      s.dq = row_change;
+      continue;
+    }
+    s.kind = step > 0 ? Kind::kLowerBound : Kind::kUpperBound;
+    s.m = step > 0 ? step : -step;
+    s.q = FloorDiv(-row_value, s.m);
+    s.r = -row_value - s.q * s.m;
+    s.dq = FloorDiv(-row_change, s.m);
+    s.dr = -row_change - s.dq * s.m;
+  }
+}
+
+Span SpanWalker::span() const {
+  std::int64_t begin = x_begin_, end = x_end_;
+  for (const EdgeState& s : edges_) {
+    switch (s.kind) {
+      case Kind::kLowerBound:  // px > n / m, that is px >= floor(n / m) + 1
+        begin = std::max(begin, s.q + 1);
+        break;
+      case Kind::kUpperBound:  // px < -n / m, that is px < -floor(n / m)
+        end = std::min(end, -s.q);
+        break;
+      case Kind::kConstant:
+        if (s.q <= 0) return {};
+        break;
+    }
+  }
+  if (begin >= end) return {};
+  return {static_cast<int>(begin), static_cast<int>(end)};
+}
+
+void SpanWalker::NextRow() {
+  for (EdgeState& s : edges_) {
+    s.q += s.dq;
+    if (s.kind == Kind::kConstant) continue;
+    s.r += s.dr;
+    if (s.r >= s.m) {
+      s.r -= s.m;
+      s.q += 1;
+    }
+  }
+}
+
 }  // namespace twinraster::cpu

@@ -9,6 +9,7 @@
 #include "cpu/triangle_setup.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace twinraster::cpu {
 
@@ -16,10 +17,31 @@ struct Span {
   int begin = 0, end = 0;  // covered pixels [begin, end) of one row; empty when begin >= end
 };
 
+// Covered span of row py, with three divisions (one per edge).
 Span CoveredSpan(const TriangleSetup& t, int py);
 
+// The same spans for consecutive rows without dividing per row: for each edge the bound
+// floor(-row_value / |step|) is kept as quotient and remainder and stepped exactly, like a DDA.
+class SpanWalker {
+ public:
+  SpanWalker(const TriangleSetup& t, int py);  // positioned at row py
+  Span span() const;                           // equals CoveredSpan(t, row)
+  void NextRow();
+
+ private:
+  enum class Kind : std::uint8_t { kLowerBound, kUpperBound, kConstant };
+  struct EdgeState {
+    Kind kind = Kind::kConstant;
+    std::int64_t q = 0, r = 0;    // floor(n / m) and n mod m, n = -(row value); or the row value
+    std::int64_t m = 1;           // |step| along the row
+    std::int64_t dq = 0, dr = 0;  // the same for the change of n from one row to the next
+  };
+  EdgeState edges_[3];
+  int x_begin_, x_end_;
+};
+
 // Rows [band * kBandRows, (band + 1) * kBandRows) belong to part band % parts.
-constexpr int kBandRows = 8;
+constexpr int kBandRows = 16;
 
 struct RowShare {
   unsigned parts = 1;
@@ -46,8 +68,9 @@ void ForEachSpan(const TriangleSetup& t, const RowShare& share, Fn&& fn) {
   for (; band * kBandRows <= t.bounds.y1; band += parts) {
     const int row_begin = std::max(t.bounds.y0, band * kBandRows);
     const int row_end = std::min(t.bounds.y1 + 1, (band + 1) * kBandRows);
-    for (int py = row_begin; py < row_end; ++py) {
-      const Span span = CoveredSpan(t, py);
+    SpanWalker walker(t, row_begin);
+    for (int py = row_begin; py < row_end; ++py, walker.NextRow()) {
+      const Span span = walker.span();
       if (span.begin < span.end) fn(py, span);
     }
   }

@@ -135,7 +135,7 @@ TEST_CASE("coverage is limited to the draw region", "[cpu][edges]") {
   CHECK_FALSE(SetUpTriangle({20.5f, 1.5f, 0}, {30.5f, 1.5f, 0}, {20.5f, 9.5f, 0}, kRegion, t));
 }
 
-TEST_CASE("row spans equal per-pixel edge tests on many triangles", "[cpu][edges]") {
+TEST_CASE("row spans, divided or stepped, equal per-pixel edge tests on many triangles", "[cpu][edges]") {
   // Vertices on a coarse grid of quarter pixels and half subpixels, so that edges often pass
   // exactly through pixel centres.
   unsigned state = 12345u;
@@ -152,8 +152,12 @@ TEST_CASE("row spans equal per-pixel edge tests on many triangles", "[cpu][edges
     }
     TriangleSetup t;
     if (!SetUpTriangle(v[0], v[1], v[2], kRegion, t)) continue;
-    for (int py = t.bounds.y0; py <= t.bounds.y1; ++py) {
+    SpanWalker walker(t, t.bounds.y0);
+    for (int py = t.bounds.y0; py <= t.bounds.y1; ++py, walker.NextRow()) {
       const Span span = CoveredSpan(t, py);
+      const Span walked = walker.span();
+      REQUIRE(walked.begin == span.begin);
+      REQUIRE(walked.end == span.end);
       for (int px = 0; px < 16; ++px) {
         bool inside = px >= t.bounds.x0 && px <= t.bounds.x1;
         for (const EdgeFunction& e : t.edges) inside = inside && EdgeAt(e, px, py) > 0;
