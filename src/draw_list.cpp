@@ -9,6 +9,7 @@ DrawList BuildDrawList(const Scene& scene) {
   list.width = scene.canvas.width;
   list.height = scene.canvas.height;
   list.background = scene.canvas.background;
+  list.reversed_z = scene.depth.reversed;
 
   for (const Model& model : scene.models) {
     DrawMesh mesh;

@@ -32,7 +32,10 @@ struct DrawList {
   std::uint32_t width = 0, height = 0;
   Rgb8 background;
   std::vector<DrawMesh> meshes;  // meshes[i] is the scene's models[i]
-  std::vector<DrawCall> draws;   // in instance order; on equal depth the earlier draw keeps the pixel (test is LESS)
+  std::vector<DrawCall> draws;   // in instance order; on equal depth the earlier draw keeps the pixel
+  // Standard depth: clear to 1, test LESS. Reversed Z (the projection maps near to 1, far to 0):
+  // clear to 0, test GREATER. Either way depth is D32_SFLOAT and written.
+  bool reversed_z = false;
 };
 
 DrawList BuildDrawList(const Scene& scene);

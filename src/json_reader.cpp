@@ -137,6 +137,11 @@ std::string JsonReader::String() const {
   return value_->get<std::string>();
 }
 
+bool JsonReader::Boolean() const {
+  if (!value_->is_boolean()) Fail("expected true or false, found " + TypeName(*value_));
+  return value_->get<bool>();
+}
+
 double JsonReader::Number() const {
   if (!value_->is_number()) Fail("expected a number, found " + TypeName(*value_));
   const double x = value_->get<double>();

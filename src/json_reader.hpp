@@ -48,6 +48,7 @@ class JsonReader {
   JsonReader operator[](std::size_t index) const;
 
   std::string String() const;
+  bool Boolean() const;
   double Number() const;  // finite, |x| <= kMaxMagnitude
   double Positive() const;
   std::int64_t Integer(std::int64_t min, std::int64_t max) const;

@@ -66,7 +66,9 @@ Camera CameraLookingAt(glm::dvec3 eye, glm::dvec3 center, glm::dvec3 up) {
 
 glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth) {
   const double d = viewport.distance, n = depth.near, f = depth.far;
-  const double a = f / (f - n), b = -f * n / (f - n);
+  // depth = A + B/z: 0 at near and 1 at far, or reversed, 1 at near and 0 at far.
+  const double a = depth.reversed ? -n / (f - n) : f / (f - n);
+  const double b = depth.reversed ? f * n / (f - n) : -f * n / (f - n);
   return FromRows({{d, 0, 0, 0}, {0, d, 0, 0}, {0, 0, a, b}, {0, 0, 1, 0}});
 }
 

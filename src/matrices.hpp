@@ -44,7 +44,8 @@ glm::dmat4 CameraMatrix(const Camera& camera);
 Camera CameraLookingAt(glm::dvec3 eye, glm::dvec3 center, glm::dvec3 up);
 
 // The chapter's perspective projection P (x·d, y·d, z) extended to 4x4: the third row now keeps
-// depth, z' = A·z + B with A = far/(far-near), B = -far·near/(far-near), and w' = z.
+// depth, z' = A·z + B with A = far/(far-near), B = -far·near/(far-near), and w' = z. Reversed Z
+// swaps the ends: A = -near/(far-near), B = far·near/(far-near).
 glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth);
 
 // The chapter's M: viewport units to canvas pixels, a 2D scale by Cw/Vw and Ch/Vh.

@@ -31,10 +31,13 @@ struct Viewport {
   double distance = 1;  // d
 };
 
-// The chapter keeps no depth; Vulkan needs it. Camera-space z in [near, far] maps to depth [0, 1].
+// The chapter keeps no depth; Vulkan needs it. Camera-space z in [near, far] maps to depth [0, 1]
+// (depth test LESS, cleared to 1), or with reversed Z to [1, 0] (test GREATER, cleared to 0), which
+// spends float precision where perspective squeezes distant depths together.
 struct Depth {
   double near = 0.1;
   double far = 100;
+  bool reversed = false;
 };
 
 struct Triangle {

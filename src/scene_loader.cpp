@@ -102,10 +102,11 @@ Viewport ReadViewport(const JsonReader& r) {
 }
 
 Depth ReadDepth(const JsonReader& r) {
-  r.ExpectObject({"near", "far"});
+  r.ExpectObject({"near", "far", "reversed"});
   Depth depth;
   if (auto near = r.Find("near")) depth.near = near->Positive();
   if (auto far = r.Find("far")) depth.far = far->Number();
+  if (auto reversed = r.Find("reversed")) depth.reversed = reversed->Boolean();
   if (!(depth.far > depth.near)) {
     std::ostringstream s;
     s << "far (" << depth.far << ") must be greater than near (" << depth.near << ")";

@@ -16,15 +16,14 @@ CoverageCounts CountCoverage(const DrawList& list, unsigned threads) {
   counts.kept.assign(std::size_t{list.width} * list.height, 0);
   counts.swapped.assign(std::size_t{list.width} * list.height, 0);
   ParallelParts(threads, [&](unsigned part) {
-    const RowShare share{threads, part};
-    for (const TriangleSetup& t : triangles) {
-      std::vector<std::uint32_t>& target = t.swapped ? counts.swapped : counts.kept;
-      ForEachSpan(t, share, [&](int py, Span span) {
-        for (int px = span.begin; px < span.end; ++px) {
-          ++target[counts.index(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py))];
-        }
-      });
-    }
+    RasterizeBands(
+        triangles, RowShare{threads, part}, static_cast<int>(list.height), [](int, int) {},
+        [&](const TriangleSetup& t, int py, Span span) {
+          std::vector<std::uint32_t>& target = t.swapped ? counts.swapped : counts.kept;
+          for (int px = span.begin; px < span.end; ++px) {
+            ++target[counts.index(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py))];
+          }
+        });
   });
   return counts;
 }

@@ -31,17 +31,15 @@ Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* t
   const std::vector<TriangleSetup> triangles = ProcessGeometry(list, threads);
   const double setup_ms = MillisecondsSince(start);
 
-  // Draw: every part clears its own rows, then rasterizes all triangles in order over them.
+  // Draw: every part clears its own bands and rasterizes all triangles, in order, over them.
   start = std::chrono::steady_clock::now();
   Framebuffer fb(list.width, list.height);
   const std::uint32_t background = PackRgba(list.background);
   ParallelParts(threads, [&](unsigned part) {
-    const RowShare share{threads, part};
-    ForEachOwnedBand(share, static_cast<int>(list.height),
-                     [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); });
-    for (const TriangleSetup& t : triangles) {
-      ForEachSpan(t, share, [&](int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
-    }
+    RasterizeBands(
+        triangles, RowShare{threads, part}, static_cast<int>(list.height),
+        [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); },
+        [&](const TriangleSetup& t, int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
   });
   const double draw_ms = MillisecondsSince(start);
 

@@ -1,7 +1,7 @@
 // Stage 5 applied row by row: which pixels of a row a triangle covers. Per row the three edge
 // functions are linear in px with exact integer coefficients, so the covered pixels form one span
 // that integer floor/ceil divisions give exactly, equal to testing every pixel of the box.
-// Rows are shared between threads in interleaved bands; every thread walks all triangles in order
+// Rows are shared between threads in interleaved bands; every thread draws all triangles in order
 // over its own rows only, so each pixel sees the same triangles in the same order for any thread
 // count.
 #pragma once
@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 namespace twinraster::cpu {
 
@@ -48,30 +49,44 @@ struct RowShare {
   unsigned part = 0;
 };
 
-// Calls fn(row_begin, row_end) for each band of rows [0, height) that `share` owns.
-template <class Fn>
-void ForEachOwnedBand(const RowShare& share, int height, Fn&& fn) {
-  const int parts = static_cast<int>(share.parts);
-  for (int band = static_cast<int>(share.part); band * kBandRows < height; band += parts) {
-    fn(band * kBandRows, std::min(height, (band + 1) * kBandRows));
-  }
-}
-
-// Calls fn(py, span) for every non-empty covered span of the rows of `share` in t's box, top down.
-template <class Fn>
-void ForEachSpan(const TriangleSetup& t, const RowShare& share, Fn&& fn) {
+// Rasterizes the rows `share` owns band by band, so that a band's depth and colour rows stay in
+// cache: for each owned band, top down, on_band(row_begin, row_end) first, then
+// on_span(triangle, py, span) for every triangle overlapping the band, in list order, and its
+// covered spans in the band. Each pixel sees the same triangles in the same order as drawing one
+// triangle after the other would give.
+template <class BandFn, class SpanFn>
+void RasterizeBands(const std::vector<TriangleSetup>& triangles, const RowShare& share, int height,
+                    BandFn&& on_band, SpanFn&& on_span) {
   const int parts = static_cast<int>(share.parts);
   const int part = static_cast<int>(share.part);
-  const int first_band = t.bounds.y0 / kBandRows;
-  // The first band at or after first_band that this part owns.
-  int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
-  for (; band * kBandRows <= t.bounds.y1; band += parts) {
-    const int row_begin = std::max(t.bounds.y0, band * kBandRows);
-    const int row_end = std::min(t.bounds.y1 + 1, (band + 1) * kBandRows);
-    SpanWalker walker(t, row_begin);
-    for (int py = row_begin; py < row_end; ++py, walker.NextRow()) {
-      const Span span = walker.span();
-      if (span.begin < span.end) fn(py, span);
+  const int band_count = (height + kBandRows - 1) / kBandRows;
+  if (part >= band_count) return;
+  const int owned = (band_count - part + parts - 1) / parts;
+
+  // Bins: which triangles touch each owned band (band = part + k * parts), in list order.
+  std::vector<std::vector<std::uint32_t>> bins(static_cast<std::size_t>(owned));
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const TriangleSetup& t = triangles[i];
+    const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
+    int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
+    for (; band <= last_band; band += parts) {
+      bins[static_cast<std::size_t>((band - part) / parts)].push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+
+  for (int k = 0; k < owned; ++k) {
+    const int band = part + k * parts;
+    const int band_begin = band * kBandRows, band_end = std::min(height, band_begin + kBandRows);
+    on_band(band_begin, band_end);
+    for (std::uint32_t i : bins[static_cast<std::size_t>(k)]) {
+      const TriangleSetup& t = triangles[i];
+      const int row_begin = std::max(t.bounds.y0, band_begin);
+      const int row_end = std::min(t.bounds.y1 + 1, band_end);
+      SpanWalker walker(t, row_begin);
+      for (int py = row_begin; py < row_end; ++py, walker.NextRow()) {
+        const Span span = walker.span();
+        if (span.begin < span.end) on_span(t, py, span);
+      }
     }
   }
 }

@@ -108,3 +108,23 @@ TEST_CASE("lookat: eye at the origin of camera space, center straight ahead on +
   const glm::dvec4 right_of_center = m * glm::dvec4(1, 0, 0, 1);
   REQUIRE(right_of_center.x > 0);
 }
+
+TEST_CASE("Reversed Z maps near to depth 1 and far to depth 0", "[matrices]") {
+  const Viewport viewport{1, 1, 1};
+  const Canvas canvas{100, 100, {}};
+  for (const bool reversed : {false, true}) {
+    const Depth depth{0.5, 40, reversed};
+    const glm::dmat4 p = ProjectionMatrix(viewport, canvas, depth);
+    const auto depth_at = [&](double z) {
+      const glm::dvec4 c = p * glm::dvec4(0, 0, z, 1);
+      return c.z / c.w;
+    };
+    REQUIRE(depth_at(0.5) == Approx(reversed ? 1.0 : 0.0).margin(1e-15));
+    REQUIRE(depth_at(40) == Approx(reversed ? 0.0 : 1.0).margin(1e-15));
+    // Standard and reversed depths add up to 1 everywhere in between.
+    const Depth other{0.5, 40, !reversed};
+    const glm::dmat4 q = ProjectionMatrix(viewport, canvas, other);
+    const glm::dvec4 c = q * glm::dvec4(0, 0, 7.25, 1);
+    REQUIRE(depth_at(7.25) + c.z / c.w == Approx(1.0).margin(1e-15));
+  }
+}
