@@ -110,13 +110,16 @@ int RenderCommand(const std::vector<std::string>& args) {
   const std::filesystem::path diff_file = Suffixed(out, "diff");
   if (runs.size() == 2) comparison = CompareImages(runs[0].image, runs[1].image);
 
+  // Every output is staged in full before any is renamed into place.
+  std::vector<StagedPng> staged;
   for (BackendRun& run : runs) {
     Stopwatch clock;
-    WritePng(run.output, run.image);
+    staged.emplace_back(run.output, run.image);
     run.png_ms = clock.Milliseconds();
   }
   const bool wrote_diff = comparison && !comparison->Equal();
-  if (wrote_diff) WritePng(diff_file, DiffImage(runs[0].image, runs[1].image));
+  if (wrote_diff) staged.emplace_back(diff_file, DiffImage(runs[0].image, runs[1].image));
+  for (StagedPng& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   if (comparison && comparison->Equal()) std::filesystem::remove(diff_file);
 

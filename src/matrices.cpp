@@ -32,6 +32,20 @@ glm::dmat3 Rotation(glm::dvec3 axis, double degrees) {
   return m;
 }
 
+glm::dmat3 AccumulatedRotation(glm::dvec3 axis, double degrees, int steps, bool reorthonormalize) {
+  const glm::dmat3 step = Rotation(axis, degrees / steps);
+  glm::dmat3 r(1.0);
+  for (int i = 0; i < steps; ++i) {
+    r = step * r;
+    if (reorthonormalize) {
+      const glm::dvec3 x = glm::normalize(r[0]);
+      const glm::dvec3 y = glm::normalize(r[1] - glm::dot(r[1], x) * x);
+      r = glm::dmat3(x, y, glm::cross(x, y));
+    }
+  }
+  return r;
+}
+
 glm::dmat4 Translation(glm::dvec3 t) {
   return FromRows({{1, 0, 0, t.x}, {0, 1, 0, t.y}, {0, 0, 1, t.z}, {0, 0, 0, 1}});
 }

@@ -28,6 +28,11 @@ glm::dmat4 FromRows(const double (&rows)[4][4]);
 // Rotation about a unit-length axis by `degrees`, chapter convention (see above).
 glm::dmat3 Rotation(glm::dvec3 axis, double degrees);
 
+// The same rotation reached the way an animated camera reaches it: `steps` small rotations by
+// degrees/steps multiplied one after another, each product rounded, optionally re-orthonormalized
+// (Gram-Schmidt) after every step. Shows how rounding drifts a rotation away from orthonormal.
+glm::dmat3 AccumulatedRotation(glm::dvec3 axis, double degrees, int steps, bool reorthonormalize);
+
 glm::dmat4 Translation(glm::dvec3 t);      // I_T, C_T
 glm::dmat4 Rotation4(const glm::dmat3& r);  // I_R, C_R: the 3x3 with w kept
 glm::dmat4 Scale(glm::dvec3 s);             // I_S

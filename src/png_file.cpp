@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -30,32 +31,43 @@ std::string SystemError() { return std::strerror(errno); }
 
 }  // namespace
 
-void WritePng(const std::filesystem::path& file, const Image& image) {
+StagedPng::StagedPng(std::filesystem::path target, const Image& image) : target_(std::move(target)) {
   std::vector<unsigned char> png;
   const int stride = static_cast<int>(image.width * 4);
-  if (!stbi_write_png_to_func(AppendBytes, &png, static_cast<int>(image.width), static_cast<int>(image.height),
-                              4, image.rgba.data(), stride)) {
-    throw FileError(file.string() + ": PNG encoding failed");
+  if (!stbi_write_png_to_func(AppendBytes, &png, static_cast<int>(image.width), static_cast<int>(image.height), 4,
+                              image.rgba.data(), stride)) {
+    throw FileError(target_.string() + ": PNG encoding failed");
   }
-
-  // Same directory as the target, so that rename() is atomic (one file system).
-  std::filesystem::path temporary = file;
-  temporary += ".tmp-" + std::to_string(::getpid());
+  // Same directory as the target, so that the final rename() is atomic (one file system).
+  const std::filesystem::path temporary = target_.string() + ".tmp-" + std::to_string(::getpid());
   std::FILE* out = std::fopen(temporary.c_str(), "wb");
-  if (!out) throw FileError(file.string() + ": cannot write: " + SystemError());
+  if (!out) throw FileError(target_.string() + ": cannot write: " + SystemError());
   const bool written = std::fwrite(png.data(), 1, png.size(), out) == png.size() && std::fflush(out) == 0 &&
                        ::fsync(::fileno(out)) == 0;
   const std::string write_error = written ? "" : SystemError();
   if (std::fclose(out) != 0 || !written) {
+    const std::string error = written ? SystemError() : write_error;
     std::remove(temporary.c_str());
-    throw FileError(file.string() + ": cannot write: " + (written ? SystemError() : write_error));
+    throw FileError(target_.string() + ": cannot write: " + error);
   }
-  if (std::rename(temporary.c_str(), file.c_str()) != 0) {
-    const std::string error = SystemError();
-    std::remove(temporary.c_str());
-    throw FileError(file.string() + ": cannot write: " + error);
-  }
+  temporary_ = temporary;
 }
+
+StagedPng::StagedPng(StagedPng&& other) noexcept
+    : target_(std::move(other.target_)), temporary_(std::exchange(other.temporary_, {})) {}
+
+StagedPng::~StagedPng() {
+  if (!temporary_.empty()) std::remove(temporary_.c_str());
+}
+
+void StagedPng::Commit() {
+  if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+    throw FileError(target_.string() + ": cannot write: " + SystemError());  // the destructor removes the temporary
+  }
+  temporary_.clear();
+}
+
+void WritePng(const std::filesystem::path& file, const Image& image) { StagedPng(file, image).Commit(); }
 
 Image ReadPng(const std::filesystem::path& file) {
   int width = 0, height = 0, channels = 0;

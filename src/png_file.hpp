@@ -16,7 +16,24 @@ class FileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-void WritePng(const std::filesystem::path& file, const Image& image);
+// A PNG written in full to a temporary file beside `target`; Commit() renames it into place. If it
+// is destroyed uncommitted it removes the temporary, so a run that fails part-way through writing
+// several outputs changes none of them.
+class StagedPng {
+ public:
+  StagedPng(std::filesystem::path target, const Image& image);
+  ~StagedPng();
+  StagedPng(StagedPng&& other) noexcept;
+  StagedPng(const StagedPng&) = delete;
+  StagedPng& operator=(const StagedPng&) = delete;
+  StagedPng& operator=(StagedPng&&) = delete;
+  void Commit();
+
+ private:
+  std::filesystem::path target_, temporary_;
+};
+
+void WritePng(const std::filesystem::path& file, const Image& image);  // staged and committed at once
 Image ReadPng(const std::filesystem::path& file);  // converted to RGBA
 
 }  // namespace twinraster

@@ -73,8 +73,17 @@ glm::dmat3 ReadRotation(const JsonReader& r) {
   if (!r.IsObject()) {
     r.Fail("expected {\"axis\": ..., \"degrees\": ...} or a list of them, found " + TypeName(r.json()));
   }
-  r.ExpectObject({"axis", "degrees"});
-  return Rotation(ReadAxis(r.Required("axis")), r.Required("degrees").Number());
+  r.ExpectObject({"axis", "degrees", "steps", "reorthonormalize"});
+  const glm::dvec3 axis = ReadAxis(r.Required("axis"));
+  const double degrees = r.Required("degrees").Number();
+  const std::optional<JsonReader> steps = r.Find("steps");
+  const std::optional<JsonReader> reorthonormalize = r.Find("reorthonormalize");
+  if (!steps) {
+    if (reorthonormalize) reorthonormalize->Fail("only meaningful together with \"steps\"");
+    return Rotation(axis, degrees);
+  }
+  return AccumulatedRotation(axis, degrees, static_cast<int>(steps->Integer(1, 10'000'000)),
+                             reorthonormalize && reorthonormalize->Boolean());
 }
 
 glm::dvec3 ReadScale(const JsonReader& r) {

@@ -20,11 +20,18 @@ void RequireIdentity(const glm::dmat4& m, double tolerance) {
     for (int r = 0; r < 4; ++r) REQUIRE(m[c][r] == Approx(c == r ? 1.0 : 0.0).margin(tolerance));
 }
 
-void RequireOrthonormal(const glm::dmat3& r) {
+void RequireOrthonormal(const glm::dmat3& r, double tolerance = 1e-12) {
   const glm::dmat3 product = glm::transpose(r) * r;
   for (int c = 0; c < 3; ++c)
-    for (int k = 0; k < 3; ++k) REQUIRE(product[c][k] == Approx(c == k ? 1.0 : 0.0).margin(1e-12));
-  REQUIRE(glm::determinant(r) == Approx(1.0).margin(1e-12));  // a rotation, not a mirror
+    for (int k = 0; k < 3; ++k) REQUIRE(product[c][k] == Approx(c == k ? 1.0 : 0.0).margin(tolerance));
+  REQUIRE(glm::determinant(r) == Approx(1.0).margin(tolerance));  // a rotation, not a mirror
+}
+
+// scenes/hard/accumulated-rotation.json multiplies a million small rotations without ever
+// re-orthonormalizing, on purpose: its camera drifts 7.3e-11 away from orthonormal (measured), so
+// properties that rely on Rᵀ = R⁻¹ hold only to that. Every other scene holds them to 1e-12.
+double CameraTolerance(const std::filesystem::path& file) {
+  return file.filename() == "accumulated-rotation.json" ? 1e-10 : 1e-12;
 }
 
 }  // namespace
@@ -33,7 +40,8 @@ TEST_CASE("M_Camera times the camera's own transform C_T · C_R is the identity"
   for (const auto& file : test::ShippedScenes()) {
     INFO(file.string());
     const Camera camera = LoadScene(file).camera;
-    RequireIdentity(CameraMatrix(camera) * Translation(camera.position) * Rotation4(camera.rotation), 1e-12);
+    RequireIdentity(CameraMatrix(camera) * Translation(camera.position) * Rotation4(camera.rotation),
+                    CameraTolerance(file));
   }
 }
 
@@ -48,9 +56,25 @@ TEST_CASE("Rotations are orthonormal: random axes and angles, and every shipped 
   for (const auto& file : test::ShippedScenes()) {
     INFO(file.string());
     const Scene scene = LoadScene(file);
-    RequireOrthonormal(scene.camera.rotation);
+    RequireOrthonormal(scene.camera.rotation, CameraTolerance(file));
     for (const Instance& instance : scene.instances) RequireOrthonormal(instance.transform.rotation);
   }
+}
+
+TEST_CASE("A million accumulated steps drift from orthonormal unless re-orthonormalized", "[chain]") {
+  const auto drift = [](const std::string& name) {
+    const glm::dmat3 r = LoadScene(test::SourcePath("scenes/hard/" + name)).camera.rotation;
+    const glm::dmat3 product = glm::transpose(r) * r;
+    double worst = 0;
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(product[c][k] - (c == k ? 1.0 : 0.0)));
+    return worst;
+  };
+  const double raw = drift("accumulated-rotation.json");
+  const double fixed = drift("accumulated-rotation-reorthonormalized.json");
+  REQUIRE(raw > 1e-12);   // the drift is real
+  REQUIRE(raw < 1e-10);   // but in double it stays tiny: about 7e-11 after 1e6 steps
+  REQUIRE(fixed < 1e-15);
 }
 
 TEST_CASE("F · V equals Listing 10-3's step-by-step chain for every vertex of every shipped scene", "[chain]") {

@@ -1,0 +1,98 @@
+#include "bench/vertex_methods.hpp"
+
+#include "cpu/vertex_stage.hpp"
+#include "matrices.hpp"
+
+#include <glm/matrix.hpp>
+
+#include <stdexcept>
+
+namespace twinraster {
+
+namespace {
+
+glm::mat4 ToFloat(const glm::dmat4& m) { return glm::mat4(m); }
+glm::mat3 ToFloat(const glm::dmat3& m) { return glm::mat3(m); }
+glm::vec3 ToFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+// Method 2: each of the chapter's matrices rounded to float as it is built, every product in float.
+glm::mat4 ComposeInFloat(const Scene& scene, const Transform& t) {
+  const glm::mat4 projection = ToFloat(PerspectiveMatrix(scene.viewport, scene.depth));
+  const glm::mat4 to_canvas = ToFloat(ViewportToCanvas(scene.viewport, scene.canvas));
+  const glm::mat4 to_clip = ToFloat(CanvasToClip(scene.canvas));
+  const glm::mat4 camera = ToFloat(Rotation4(glm::transpose(scene.camera.rotation))) *
+                           ToFloat(Translation(-scene.camera.position));
+  const glm::mat4 model = ToFloat(Translation(t.translation)) * ToFloat(Rotation4(t.rotation)) * ToFloat(Scale(t.scale));
+  return to_clip * to_canvas * projection * camera * model;
+}
+
+// Method 4: the camera's position is subtracted from each instance's translation in double, so
+// that nothing composed afterwards carries the large absolute coordinates.
+glm::mat4 CameraRelative(const Scene& scene, const Transform& t) {
+  const glm::dmat4 projection = ProjectionMatrix(scene.viewport, scene.canvas, scene.depth);
+  const glm::dmat4 camera_rotation = Rotation4(glm::transpose(scene.camera.rotation));
+  const glm::dmat4 model = Translation(t.translation - scene.camera.position) * Rotation4(t.rotation) * Scale(t.scale);
+  return ToFloat(projection * camera_rotation * model);
+}
+
+// Method 3: Listing 10-3's ApplyTransform, the camera and the projection, one step at a time in float.
+glm::vec4 StepsInFloat(const glm::vec3& v, const Transform& t, const Scene& scene, const glm::mat4& projection) {
+  const glm::vec3 scaled = v * ToFloat(t.scale);
+  const glm::vec3 rotated = ToFloat(t.rotation) * scaled;
+  const glm::vec3 world = rotated + ToFloat(t.translation);
+  const glm::vec3 translated = world - ToFloat(scene.camera.position);
+  const glm::vec3 camera = glm::transpose(ToFloat(scene.camera.rotation)) * translated;
+  return cpu::VertexStage(projection, camera);
+}
+
+}  // namespace
+
+std::string_view MethodName(VertexMethod method) {
+  switch (method) {
+    case VertexMethod::kComposeDouble: return "compose-f64";
+    case VertexMethod::kComposeFloat: return "compose-f32";
+    case VertexMethod::kStepsFloat: return "steps-f32";
+    case VertexMethod::kCameraRelative: return "camera-relative";
+  }
+  return "?";
+}
+
+std::optional<VertexMethod> ParseMethod(std::string_view name) {
+  for (VertexMethod m : kAllMethods)
+    if (MethodName(m) == name) return m;
+  return std::nullopt;
+}
+
+std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method) {
+  std::vector<glm::mat4> matrices;
+  const Chain chain = SceneChain(scene);
+  for (const Instance& instance : scene.instances) {
+    switch (method) {
+      case VertexMethod::kComposeDouble: matrices.push_back(ToFloat(InstanceMatrix(chain, instance.transform))); break;
+      case VertexMethod::kComposeFloat: matrices.push_back(ComposeInFloat(scene, instance.transform)); break;
+      case VertexMethod::kCameraRelative: matrices.push_back(CameraRelative(scene, instance.transform)); break;
+      case VertexMethod::kStepsFloat: throw std::logic_error("steps-f32 has no instance matrix");
+    }
+  }
+  return matrices;
+}
+
+ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method) {
+  ClipPositions clip(list.draws.size());
+  if (method == VertexMethod::kStepsFloat) {
+    const glm::mat4 projection = ToFloat(ProjectionMatrix(scene.viewport, scene.canvas, scene.depth));
+    for (std::size_t d = 0; d < list.draws.size(); ++d) {
+      const Transform& t = scene.instances[d].transform;
+      for (const glm::vec3& p : list.meshes[list.draws[d].mesh].positions)
+        clip[d].push_back(StepsInFloat(p, t, scene, projection));
+    }
+    return clip;
+  }
+  const std::vector<glm::mat4> f = InstanceMatrices(scene, method);
+  for (std::size_t d = 0; d < list.draws.size(); ++d) {
+    for (const glm::vec3& p : list.meshes[list.draws[d].mesh].positions) clip[d].push_back(cpu::VertexStage(f[d], p));
+  }
+  return clip;
+}
+
+}  // namespace twinraster
