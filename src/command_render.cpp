@@ -111,15 +111,15 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (runs.size() == 2) comparison = CompareImages(runs[0].image, runs[1].image);
 
   // Every output is staged in full before any is renamed into place.
-  std::vector<StagedPng> staged;
+  std::vector<StagedFile> staged;
   for (BackendRun& run : runs) {
     Stopwatch clock;
-    staged.emplace_back(run.output, run.image);
+    staged.push_back(StagePng(run.output, run.image));
     run.png_ms = clock.Milliseconds();
   }
   const bool wrote_diff = comparison && !comparison->Equal();
-  if (wrote_diff) staged.emplace_back(diff_file, DiffImage(runs[0].image, runs[1].image));
-  for (StagedPng& file : staged) file.Commit();
+  if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image)));
+  for (StagedFile& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   if (comparison && comparison->Equal()) std::filesystem::remove(diff_file);
 

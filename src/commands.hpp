@@ -19,5 +19,6 @@ enum ExitCode : int {
 int ExplainCommand(const std::vector<std::string>& args);
 int RenderCommand(const std::vector<std::string>& args);
 int CompareCommand(const std::vector<std::string>& args);
+int BenchCommand(const std::vector<std::string>& args);
 
 }  // namespace twinraster

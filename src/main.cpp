@@ -24,6 +24,9 @@ constexpr const char* kUsage =
     "      the scene's name in the current directory)\n"
     "  twinraster compare A.png B.png [--diff D.png] [--json]\n"
     "      count the pixels that differ between two images\n"
+    "  twinraster bench [--out DIR] [--runs N] [--only TEXT] [--scenes DIR] [--json]\n"
+    "      time every way of computing the chain and both renderers on the scene suite, against the\n"
+    "      double-precision ground truth; with --out, also write bench.csv, bench.svg, bench.json\n"
     "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device\n";
 
 int Run(const std::vector<std::string>& args) {
@@ -33,6 +36,7 @@ int Run(const std::vector<std::string>& args) {
   if (command == "explain") return ExplainCommand(rest);
   if (command == "render") return RenderCommand(rest);
   if (command == "compare") return CompareCommand(rest);
+  if (command == "bench") return BenchCommand(rest);
   if (command == "help" || command == "--help" || command == "-h") {
     std::cout << kUsage;
     return kExitOk;

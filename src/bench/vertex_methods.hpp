@@ -3,6 +3,7 @@
 // chapter's step-by-step chain in float, and camera-relative composition.
 #pragma once
 
+#include "cpu/cpu_renderer.hpp"  // ClipPositions
 #include "draw_list.hpp"
 #include "scene.hpp"
 
@@ -27,9 +28,6 @@ inline constexpr VertexMethod kAllMethods[] = {VertexMethod::kComposeDouble, Ver
 std::string_view MethodName(VertexMethod method);  // "compose-f64", "compose-f32", "steps-f32", "camera-relative"
 std::optional<VertexMethod> ParseMethod(std::string_view name);
 
-// Clip-space positions in float, one vector per draw (the DrawList's instances, in order), each
-// holding that draw's mesh vertices transformed.
-using ClipPositions = std::vector<std::vector<glm::vec4>>;
 
 // The per-instance float matrix F of the methods that have one (1, 2, 4); method 3 has none.
 std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method);

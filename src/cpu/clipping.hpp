@@ -6,8 +6,8 @@
 //  - Otherwise Sutherland-Hodgman over the planes whose bit is in the union, lowest bit first.
 //    A plane's distance is the float dot product of the clip position with the plane vector, summed
 //    left to right. A new vertex is interpolated from the edge's endpoint nearer the plane (the
-//    inside one on a tie) toward the other: base + t * (other - base), t = |d_base| / |d_out - d_in|.
-//    Its window position uses the plain (non-fma) viewport formula.
+//    inside one on a tie) toward the other: base + t * (other - base), t = |d_base| / |d_out -
+//    d_in|. Its window position uses the plain (non-fma) viewport formula.
 //  - The polygon becomes the fan (p0, p[i-1], p[i]), i = 2 .. n-1.
 #pragma once
 

@@ -9,7 +9,7 @@ namespace twinraster::cpu {
 CoverageCounts CountCoverage(const DrawList& list, unsigned threads) {
   ValidateDrawList(list);
   threads = ResolveThreadCount(threads);
-  const std::vector<TriangleSetup> triangles = ProcessGeometry(list, threads);
+  const TriangleChunks triangles = ProcessGeometry(list, threads);
   CoverageCounts counts;
   counts.width = list.width;
   counts.height = list.height;

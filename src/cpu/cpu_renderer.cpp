@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace twinraster {
@@ -14,32 +16,38 @@ namespace twinraster {
 namespace {
 
 double MillisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
-}  // namespace
-
-Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
+// The pipeline after validation; `clip` replaces the vertex stage when given.
+Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options,
+             CpuTimings* timings) {
   using namespace cpu;
-  ValidateDrawList(list);
   // More parts than bands would leave threads idle; the image does not depend on this number.
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
   const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
 
   // Setup: vertex stage, clipping, viewport transform, triangle setup.
   auto start = std::chrono::steady_clock::now();
-  const std::vector<TriangleSetup> triangles = ProcessGeometry(list, threads);
+  // Kept per thread from one render to the next (see GeometryScratch), up to 64 MiB.
+  thread_local GeometryScratch scratch;
+  ProcessGeometry(list, threads, scratch, clip);
+  const TriangleChunks& triangles = scratch.triangles;
   const double setup_ms = MillisecondsSince(start);
 
   // Draw: every part clears its own bands and rasterizes all triangles, in order, over them.
   start = std::chrono::steady_clock::now();
-  Framebuffer fb(list.width, list.height);
+  Framebuffer fb(list.width, list.height,
+                 list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
   const std::uint32_t background = PackRgba(list.background);
   ParallelParts(threads, [&](unsigned part) {
     RasterizeBands(
         triangles, RowShare{threads, part}, static_cast<int>(list.height),
         [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); },
-        [&](const TriangleSetup& t, int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
+        [&](const TriangleSetup& t, int py, Span span) {
+          ShadeSpan(fb, py, span, t.depth, t.colour);
+        });
   });
   const double draw_ms = MillisecondsSince(start);
 
@@ -48,8 +56,28 @@ Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* t
   Image image = std::move(fb.colour);
   const double readback_ms = MillisecondsSince(start);
 
+  if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
   if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms};
   return image;
+}
+
+}  // namespace
+
+Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
+  cpu::ValidateDrawList(list);
+  return Render(list, nullptr, options, timings);
+}
+
+Image RasterizeClipSpace(const DrawList& list, const ClipPositions& clip, const CpuOptions& options,
+                         CpuTimings* timings) {
+  cpu::ValidateDrawList(list);
+  if (clip.size() != list.draws.size()) throw std::invalid_argument("clip positions for the wrong number of draws");
+  for (std::size_t d = 0; d < clip.size(); ++d) {
+    if (clip[d].size() != list.meshes[list.draws[d].mesh].positions.size()) {
+      throw std::invalid_argument("draw " + std::to_string(d) + ": clip positions do not match its mesh");
+    }
+  }
+  return Render(list, &clip, options, timings);
 }
 
 }  // namespace twinraster

@@ -5,6 +5,10 @@
 #include "draw_list.hpp"
 #include "image.hpp"
 
+#include <glm/vec4.hpp>
+
+#include <vector>
+
 namespace twinraster {
 
 // threads: 0 = std::thread::hardware_concurrency(). The image is identical for any thread count.
@@ -20,6 +24,17 @@ struct CpuTimings {
 
 // Throws std::invalid_argument for a malformed list (size 0 or over 16384, a mesh or vertex index
 // out of range, a colour missing), as the GPU renderer does.
-Image RenderOnCpu(const DrawList& list, const CpuOptions& options = {}, CpuTimings* timings = nullptr);
+Image RenderOnCpu(const DrawList& list, const CpuOptions& options = {},
+                  CpuTimings* timings = nullptr);
+
+// Clip-space positions from some other vertex stage: one vector per draw, holding that draw's mesh
+// vertices transformed.
+using ClipPositions = std::vector<std::vector<glm::vec4>>;
+
+// Everything after the vertex stage (clipping onward) on positions another method computed, so
+// that ways of computing the chain can be compared by the images they make. Throws
+// std::invalid_argument when `clip` does not match the list's draws.
+Image RasterizeClipSpace(const DrawList& list, const ClipPositions& clip, const CpuOptions& options = {},
+                         CpuTimings* timings = nullptr);
 
 }  // namespace twinraster

@@ -5,7 +5,6 @@
 
 #include "cpu/viewport_transform.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace twinraster::cpu {
@@ -24,10 +23,18 @@ inline float PlaneDepth(const DepthPlane& p, float px, float py) {
   return std::fma(p.dzdy, py, std::fma(p.dzdx, px, p.a0));
 }
 
-// What the depth test sees: the plane value clamped to [minDepth, maxDepth] = [0, 1].
+// The clamp to the depth range [minDepth, maxDepth] = [0, 1] as llvmpipe's code does it with SSE:
+// min(z, 1) then max(z, 0), where min(a, b) = a < b ? a : b and max(a, b) = a > b ? a : b. So a NaN
+// (from a triangle whose float area is 0 although its snapped area is not) becomes 1.0, and -0.0
+// becomes +0.0.
+inline float ClampDepth(float z) {
+  z = z < 1.0f ? z : 1.0f;
+  return z > 0.0f ? z : 0.0f;
+}
+
+// What the depth test sees at pixel (px, py).
 inline float DepthAt(const DepthPlane& p, int px, int py) {
-  const float z = PlaneDepth(p, static_cast<float>(px), static_cast<float>(py));
-  return std::min(std::max(z, 0.0f), 1.0f);
+  return ClampDepth(PlaneDepth(p, static_cast<float>(px), static_cast<float>(py)));
 }
 
 }  // namespace twinraster::cpu

@@ -43,18 +43,19 @@ DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept
 namespace {
 
 // Written so that the compiler can vectorize it (no branches, every store unconditional). On x86-64
-// a second copy is built for CPUs with AVX2 and FMA, where fmaf is one instruction; the portable
-// copy's fmaf is just as exact, only slower.
+// a second copy is built for CPUs with FMA (chosen at load time), where fmaf is one instruction;
+// the portable copy's fmaf is a library call, just as exact, only slower.
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("arch=haswell", "default")))
+__attribute__((target_clones("fma", "default")))
 #endif
 void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
-              float dzdy, std::uint32_t fill) {
+              float dzdy, bool greater, std::uint32_t fill) {
   for (int px = begin; px < end; ++px) {
     float z = std::fma(dzdy, py, std::fma(dzdx, static_cast<float>(px), a0));  // PlaneDepth
-    z = std::min(std::max(z, 0.0f), 1.0f);                                   // DepthAt's clamp
+    z = z < 1.0f ? z : 1.0f;                                                   // ClampDepth
+    z = z > 0.0f ? z : 0.0f;
     const float stored = depth[px];
-    const bool pass = z < stored;  // DepthTestLess
+    const bool pass = greater ? z > stored : z < stored;  // DepthTest
     depth[px] = pass ? z : stored;
     std::uint32_t old;
     std::memcpy(&old, rgba + 4 * px, 4);
@@ -65,7 +66,8 @@ void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, fl
 
 }  // namespace
 
-void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour, float clear_depth) {
+void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour) {
+  const float clear_depth = ClearDepth(fb.compare);
   const std::size_t begin = fb.index(0, row_begin), end = fb.index(0, row_end);
   std::fill(fb.depth.data() + begin, fb.depth.data() + end, clear_depth);
   std::uint8_t* rgba = fb.colour.rgba.data();
@@ -75,7 +77,7 @@ void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_
 bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std::uint32_t colour) {
   const std::size_t i = fb.index(px, py);
   const float z = DepthAt(plane, px, py);
-  if (!DepthTestLess(z, fb.depth[i])) return false;
+  if (!DepthTest(fb.compare, z, fb.depth[i])) return false;
   fb.depth[i] = z;
   std::memcpy(fb.colour.rgba.data() + 4 * i, &colour, 4);
   return true;
@@ -84,7 +86,8 @@ bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std
 void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std::uint32_t colour) {
   const std::size_t row = fb.index(0, py);
   ShadeRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
-           static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, colour);
+           static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy,
+           fb.compare == DepthCompare::kGreater, colour);
 }
 
 }  // namespace twinraster::cpu

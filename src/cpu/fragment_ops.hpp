@@ -1,5 +1,6 @@
-// Stages 6 and 7 per fragment: depth from the triangle's plane, the depth test (VK_COMPARE_OP_LESS
-// against a D32_SFLOAT buffer cleared to 1.0), the depth write, and the colour write of the
+// Stages 6 and 7 per fragment: depth from the triangle's plane, the depth test against a
+// D32_SFLOAT buffer (VK_COMPARE_OP_LESS and cleared to 1.0, or with reversed Z
+// VK_COMPARE_OP_GREATER and cleared to 0.0), the depth write, and the colour write of the
 // triangle's flat colour as RGBA8 (no blending). The colour attachment is the output Image itself.
 #pragma once
 
@@ -34,17 +35,30 @@ class DepthBuffer {
   std::size_t capacity_ = 0;
 };
 
+// The depth test's VkCompareOp. Both are strict: of two fragments at equal depth the first stays.
+enum class DepthCompare { kLess, kGreater };
+
+inline bool DepthTest(DepthCompare op, float fragment_z, float stored_z) {
+  return op == DepthCompare::kLess ? fragment_z < stored_z : fragment_z > stored_z;
+}
+
+// The value depth is cleared to: the far end, which no fragment passes against.
+inline float ClearDepth(DepthCompare op) { return op == DepthCompare::kLess ? 1.0f : 0.0f; }
+
 struct Framebuffer {
   Image colour;       // RGBA8, top row first
   DepthBuffer depth;  // D32_SFLOAT, same layout
+  DepthCompare compare;
 
   // Allocates without clearing: call ClearRows on every row before drawing.
-  Framebuffer(std::uint32_t width, std::uint32_t height)
-      : colour(width, height), depth(std::size_t{width} * height) {}
+  Framebuffer(std::uint32_t width, std::uint32_t height, DepthCompare op = DepthCompare::kLess)
+      : colour(width, height), depth(std::size_t{width} * height), compare(op) {}
 
   std::uint32_t width() const { return colour.width; }
   std::uint32_t height() const { return colour.height; }
-  std::size_t index(int px, int py) const { return std::size_t(py) * colour.width + std::size_t(px); }
+  std::size_t index(int px, int py) const {
+    return std::size_t(py) * colour.width + std::size_t(px);
+  }
   std::uint32_t colour_word(std::size_t i) const {  // the pixel's 4 bytes as one word (PackRgba)
     std::uint32_t word;
     std::memcpy(&word, colour.rgba.data() + 4 * i, 4);
@@ -52,11 +66,9 @@ struct Framebuffer {
   }
 };
 
-// vkCmdBeginRenderPass's clears for rows [row_begin, row_end).
-void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour,
-               float clear_depth = 1.0f);
-
-inline bool DepthTestLess(float fragment_z, float stored_z) { return fragment_z < stored_z; }
+// vkCmdBeginRenderPass's clears for rows [row_begin, row_end): colour, and depth to
+// ClearDepth(fb.compare).
+void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour);
 
 // One fragment: depth test, and on pass depth and colour writes. Returns whether it passed.
 bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std::uint32_t colour);

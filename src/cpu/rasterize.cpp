@@ -34,7 +34,8 @@ Span CoveredSpan(const TriangleSetup& t, int py) {
   return {static_cast<int>(begin), static_cast<int>(end)};
 }
 
-SpanWalker::SpanWalker(const TriangleSetup& t, int py) : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
+SpanWalker::SpanWalker(const TriangleSetup& t, int py)
+    : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
   for (std::size_t i = 0; i < 3; ++i) {
     const EdgeFunction& e = t.edges[i];
     EdgeState& s = edges_[i];
@@ -53,37 +54,6 @@ SpanWalker::SpanWalker(const TriangleSetup& t, int py) : x_begin_(t.bounds.x0), 
     s.r = -row_value - s.q * s.m;
     s.dq = FloorDiv(-row_change, s.m);
     s.dr = -row_change - s.dq * s.m;
-  }
-}
-
-Span SpanWalker::span() const {
-  std::int64_t begin = x_begin_, end = x_end_;
-  for (const EdgeState& s : edges_) {
-    switch (s.kind) {
-      case Kind::kLowerBound:  // px > n / m, that is px >= floor(n / m) + 1
-        begin = std::max(begin, s.q + 1);
-        break;
-      case Kind::kUpperBound:  // px < -n / m, that is px < -floor(n / m)
-        end = std::min(end, -s.q);
-        break;
-      case Kind::kConstant:
-        if (s.q <= 0) return {};
-        break;
-    }
-  }
-  if (begin >= end) return {};
-  return {static_cast<int>(begin), static_cast<int>(end)};
-}
-
-void SpanWalker::NextRow() {
-  for (EdgeState& s : edges_) {
-    s.q += s.dq;
-    if (s.kind == Kind::kConstant) continue;
-    s.r += s.dr;
-    if (s.r >= s.m) {
-      s.r -= s.m;
-      s.q += 1;
-    }
   }
 }
 

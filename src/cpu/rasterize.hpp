@@ -1,9 +1,9 @@
 // Stage 5 applied row by row: which pixels of a row a triangle covers. Per row the three edge
 // functions are linear in px with exact integer coefficients, so the covered pixels form one span
 // that integer floor/ceil divisions give exactly, equal to testing every pixel of the box.
-// Rows are shared between threads in interleaved bands; every thread draws all triangles in order
-// over its own rows only, so each pixel sees the same triangles in the same order for any thread
-// count.
+// Rows are shared between threads in interleaved bands of kBandRows rows; every thread draws all
+// triangles in order over its own bands only, so each pixel sees the same triangles in the same
+// order for any thread count.
 #pragma once
 
 #include "cpu/triangle_setup.hpp"
@@ -41,6 +41,37 @@ class SpanWalker {
   int x_begin_, x_end_;
 };
 
+inline Span SpanWalker::span() const {
+  std::int64_t begin = x_begin_, end = x_end_;
+  for (const EdgeState& s : edges_) {
+    switch (s.kind) {
+      case Kind::kLowerBound:  // px > n / m, that is px >= floor(n / m) + 1
+        begin = std::max(begin, s.q + 1);
+        break;
+      case Kind::kUpperBound:  // px < -n / m, that is px < -floor(n / m)
+        end = std::min(end, -s.q);
+        break;
+      case Kind::kConstant:
+        if (s.q <= 0) return {};
+        break;
+    }
+  }
+  if (begin >= end) return {};
+  return {static_cast<int>(begin), static_cast<int>(end)};
+}
+
+inline void SpanWalker::NextRow() {
+  for (EdgeState& s : edges_) {
+    s.q += s.dq;
+    if (s.kind == Kind::kConstant) continue;
+    s.r += s.dr;
+    if (s.r >= s.m) {
+      s.r -= s.m;
+      s.q += 1;
+    }
+  }
+}
+
 // Rows [band * kBandRows, (band + 1) * kBandRows) belong to part band % parts.
 constexpr int kBandRows = 16;
 
@@ -49,14 +80,14 @@ struct RowShare {
   unsigned part = 0;
 };
 
-// Rasterizes the rows `share` owns band by band, so that a band's depth and colour rows stay in
-// cache: for each owned band, top down, on_band(row_begin, row_end) first, then
-// on_span(triangle, py, span) for every triangle overlapping the band, in list order, and its
-// covered spans in the band. Each pixel sees the same triangles in the same order as drawing one
-// triangle after the other would give.
+// Rasterizes the bands `share` owns one after the other, so that a band's depth and colour rows
+// stay in cache: for each owned band, top down, on_band(row_begin, row_end) first, then
+// on_span(triangle, py, span) for each covered span in the band of every triangle overlapping it,
+// triangles in order (chunk after chunk). Each pixel sees the same triangles in the same order as
+// drawing one whole triangle after the other would give.
 template <class BandFn, class SpanFn>
-void RasterizeBands(const std::vector<TriangleSetup>& triangles, const RowShare& share, int height,
-                    BandFn&& on_band, SpanFn&& on_span) {
+void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share,
+                    int height, BandFn&& on_band, SpanFn&& on_span) {
   const int parts = static_cast<int>(share.parts);
   const int part = static_cast<int>(share.part);
   const int band_count = (height + kBandRows - 1) / kBandRows;
@@ -64,13 +95,14 @@ void RasterizeBands(const std::vector<TriangleSetup>& triangles, const RowShare&
   const int owned = (band_count - part + parts - 1) / parts;
 
   // Bins: which triangles touch each owned band (band = part + k * parts), in list order.
-  std::vector<std::vector<std::uint32_t>> bins(static_cast<std::size_t>(owned));
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const TriangleSetup& t = triangles[i];
-    const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
-    int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
-    for (; band <= last_band; band += parts) {
-      bins[static_cast<std::size_t>((band - part) / parts)].push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::vector<const TriangleSetup*>> bins(static_cast<std::size_t>(owned));
+  for (const std::vector<TriangleSetup>& chunk : triangles) {
+    for (const TriangleSetup& t : chunk) {
+      const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
+      int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
+      for (; band <= last_band; band += parts) {
+        bins[static_cast<std::size_t>((band - part) / parts)].push_back(&t);
+      }
     }
   }
 
@@ -78,8 +110,8 @@ void RasterizeBands(const std::vector<TriangleSetup>& triangles, const RowShare&
     const int band = part + k * parts;
     const int band_begin = band * kBandRows, band_end = std::min(height, band_begin + kBandRows);
     on_band(band_begin, band_end);
-    for (std::uint32_t i : bins[static_cast<std::size_t>(k)]) {
-      const TriangleSetup& t = triangles[i];
+    for (const TriangleSetup* triangle : bins[static_cast<std::size_t>(k)]) {
+      const TriangleSetup& t = *triangle;
       const int row_begin = std::max(t.bounds.y0, band_begin);
       const int row_end = std::min(t.bounds.y1 + 1, band_end);
       SpanWalker walker(t, row_begin);

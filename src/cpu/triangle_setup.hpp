@@ -21,7 +21,8 @@ namespace twinraster::cpu {
 constexpr int kSubpixelBits = 8;
 constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
 
-// round_half_even((w - 0.5f) * 256.0f) as SSE's cvtps2dq does it: out of range or NaN gives INT32_MIN.
+// round_half_even((w - 0.5f) * 256.0f) as SSE's cvtps2dq does it: out of range or NaN gives
+// INT32_MIN.
 std::int32_t SnapToSubpixel(float window_coord);
 
 struct EdgeFunction {
@@ -32,15 +33,16 @@ struct EdgeFunction {
 
 // Edge function value at the centre of pixel (px, py); > 0 is inside.
 inline std::int64_t EdgeAt(const EdgeFunction& e, int px, int py) {
-  return e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne) - e.dcdx * (std::int64_t{px} * kSubpixelOne);
+  return e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne) -
+         e.dcdx * (std::int64_t{px} * kSubpixelOne);
 }
 
 EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj);
 
 struct TriangleSetup {
   std::array<EdgeFunction, 3> edges;
-  PixelRect bounds;      // pixels that may be covered, inside the draw region
-  DepthPlane depth;      // from the vertices in post-swap order
+  PixelRect bounds;  // pixels that may be covered, inside the draw region
+  DepthPlane depth;  // from the vertices in post-swap order
   std::uint32_t colour = 0;
   bool swapped = false;  // the snapped area was negative, so vertices 1 and 2 were swapped
 };

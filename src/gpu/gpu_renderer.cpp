@@ -148,8 +148,11 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
   cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
 
-  const std::array clear_values = {ClearColour(list.background),
-                                   vk::ClearValue{.depthStencil = {.depth = 1.0f, .stencil = 0}}};
+  // Depth starts at the far end: 1.0, or 0.0 with reversed Z.
+  const float far_depth = list.reversed_z ? 0.0f : 1.0f;
+  const std::array clear_values = {
+      ClearColour(list.background),
+      vk::ClearValue{.depthStencil = {.depth = far_depth, .stencil = 0}}};
   cmd.beginRenderPass(
       vk::RenderPassBeginInfo{
           .renderPass = *pipeline.render_pass(),
@@ -159,7 +162,7 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
           .pClearValues = clear_values.data(),
       },
       vk::SubpassContents::eInline);
-  cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline());
+  cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(list.reversed_z));
   cmd.setViewport(0, vk::Viewport{.x = 0.0f,
                                   .y = 0.0f,
                                   .width = static_cast<float>(list.width),
@@ -171,7 +174,8 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
   cmd.bindIndexBuffer(meshes.geometry(), meshes.index_offset(), vk::IndexType::eUint32);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipeline.layout(), 0, *colour_set,
                          nullptr);
-  // In list order: with depth test LESS, the earlier of two equally deep fragments stays.
+  // In list order: the depth test is strict (LESS, or GREATER with reversed Z), so the earlier of
+  // two equally deep fragments stays.
   for (const DrawCall& draw : list.draws) {
     const gpu::MeshRange& range = meshes.range(draw.mesh);
     if (range.index_count == 0) continue;  // a mesh without triangles draws nothing

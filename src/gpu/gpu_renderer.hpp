@@ -34,7 +34,7 @@ class GpuUnavailable : public std::runtime_error {
 
 class GpuRenderer {
  public:
-  // Creates the instance, device and pipeline; throws GpuUnavailable.
+  // Creates the instance, device and pipelines; throws GpuUnavailable.
   explicit GpuRenderer(const GpuOptions& options = {});
   ~GpuRenderer();
   GpuRenderer(GpuRenderer&&) noexcept;

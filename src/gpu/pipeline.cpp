@@ -21,7 +21,8 @@ vk::raii::RenderPass CreateRenderPass(const vk::raii::Device& device) {
           .initialLayout = vk::ImageLayout::eUndefined,  // old contents are cleared anyway
           .finalLayout = vk::ImageLayout::eTransferSrcOptimal,
       },
-      // Depth: cleared to 1.0 and thrown away after the pass.
+      // Depth: cleared (to 1.0, or 0.0 for reversed Z: the value is given when the pass begins)
+      // and thrown away after the pass.
       vk::AttachmentDescription{
           .format = kDepthFormat,
           .samples = vk::SampleCountFlagBits::e1,
@@ -151,12 +152,6 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
   };
   const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples =
                                                                vk::SampleCountFlagBits::e1};
-  // LESS: of two fragments at equal depth the earlier draw stays.
-  const vk::PipelineDepthStencilStateCreateInfo depth_stencil{
-      .depthTestEnable = VK_TRUE,
-      .depthWriteEnable = VK_TRUE,
-      .depthCompareOp = vk::CompareOp::eLess,
-  };
   const vk::PipelineColorBlendAttachmentState blend_attachment{
       .blendEnable = VK_FALSE,
       .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
@@ -168,22 +163,33 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
   const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = dynamic_states.size(),
                                                    .pDynamicStates = dynamic_states.data()};
 
-  pipeline_ = vk::raii::Pipeline(device, nullptr,
-                                 vk::GraphicsPipelineCreateInfo{
-                                     .stageCount = stages.size(),
-                                     .pStages = stages.data(),
-                                     .pVertexInputState = &vertex_input,
-                                     .pInputAssemblyState = &input_assembly,
-                                     .pViewportState = &viewport,
-                                     .pRasterizationState = &rasterization,
-                                     .pMultisampleState = &multisample,
-                                     .pDepthStencilState = &depth_stencil,
-                                     .pColorBlendState = &colour_blend,
-                                     .pDynamicState = &dynamic,
-                                     .layout = *layout_,
-                                     .renderPass = *render_pass_,
-                                     .subpass = 0,
-                                 });
+  // The compare op is strict either way (LESS, or GREATER for reversed Z), so of two fragments
+  // at equal depth the earlier draw stays, and a fragment exactly at the clear value is hidden.
+  const auto create = [&](vk::CompareOp depth_compare) {
+    const vk::PipelineDepthStencilStateCreateInfo depth_stencil{
+        .depthTestEnable = VK_TRUE,
+        .depthWriteEnable = VK_TRUE,
+        .depthCompareOp = depth_compare,
+    };
+    return vk::raii::Pipeline(device, nullptr,
+                              vk::GraphicsPipelineCreateInfo{
+                                  .stageCount = stages.size(),
+                                  .pStages = stages.data(),
+                                  .pVertexInputState = &vertex_input,
+                                  .pInputAssemblyState = &input_assembly,
+                                  .pViewportState = &viewport,
+                                  .pRasterizationState = &rasterization,
+                                  .pMultisampleState = &multisample,
+                                  .pDepthStencilState = &depth_stencil,
+                                  .pColorBlendState = &colour_blend,
+                                  .pDynamicState = &dynamic,
+                                  .layout = *layout_,
+                                  .renderPass = *render_pass_,
+                                  .subpass = 0,
+                              });
+  };
+  standard_pipeline_ = create(vk::CompareOp::eLess);
+  reversed_z_pipeline_ = create(vk::CompareOp::eGreater);
 }
 
 }  // namespace twinraster::gpu

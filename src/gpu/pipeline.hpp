@@ -1,5 +1,5 @@
-// The render pass and the one graphics pipeline (shaders, fixed-function state, layout) every
-// draw uses; none of it depends on the image size, so it is built once per GpuRenderer.
+// The render pass and the graphics pipelines (shaders, fixed-function state, layout) every draw
+// uses; none of it depends on the image size, so it is built once per GpuRenderer.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -28,13 +28,18 @@ class Pipeline {
   const vk::raii::RenderPass& render_pass() const { return render_pass_; }
   const vk::raii::DescriptorSetLayout& colour_set_layout() const { return colour_set_layout_; }
   const vk::raii::PipelineLayout& layout() const { return layout_; }
-  const vk::raii::Pipeline& pipeline() const { return pipeline_; }
+  // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z).
+  const vk::raii::Pipeline& pipeline(bool reversed_z) const {
+    return reversed_z ? reversed_z_pipeline_ : standard_pipeline_;
+  }
 
  private:
   vk::raii::RenderPass render_pass_ = nullptr;
   vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;  // binding 0: the triangle colours
   vk::raii::PipelineLayout layout_ = nullptr;
-  vk::raii::Pipeline pipeline_ = nullptr;
+  // Identical but for the depth compare op, which is baked into a Vulkan 1.0 pipeline.
+  vk::raii::Pipeline standard_pipeline_ = nullptr;
+  vk::raii::Pipeline reversed_z_pipeline_ = nullptr;
 };
 
 }  // namespace twinraster::gpu

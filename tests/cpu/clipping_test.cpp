@@ -146,7 +146,8 @@ TEST_CASE("new vertices start from the endpoint nearer the plane, whichever way 
 
   // A tie (distances 1 and -1) starts from the inside vertex: 0.1f + 0.5 (0.3f - 0.1f) =
   // 0x1.99999cp-3, where starting from 0.3f would give 0x1.99999ap-3.
-  const ClipVertex in_tie = Vertex(0.1f, 0.0f, 1.0f, 1.0f), out_tie = Vertex(0.3f, 0.0f, -1.0f, 1.0f);
+  const ClipVertex in_tie = Vertex(0.1f, 0.0f, 1.0f, 1.0f),
+                   out_tie = Vertex(0.3f, 0.0f, -1.0f, 1.0f);
   CHECK(IntersectEdge(in_tie, 1.0f, out_tie, -1.0f, kVp).clip.x == 0x1.99999cp-3f);
   CHECK(IntersectEdge(out_tie, -1.0f, in_tie, 1.0f, kVp).clip.x == 0x1.99999cp-3f);
 }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <numbers>
 
 namespace twinraster::cputest {
@@ -15,7 +16,7 @@ namespace twinraster::cputest {
 inline Model ChapterCube() {
   Model cube;
   cube.name = "cube";
-  cube.vertices = {{1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1},
+  cube.vertices = {{1, 1, 1},  {-1, 1, 1},  {-1, -1, 1},  {1, -1, 1},
                    {1, 1, -1}, {-1, 1, -1}, {-1, -1, -1}, {1, -1, -1}};
   const Rgb8 red{255, 0, 0}, green{0, 255, 0}, blue{0, 0, 255}, yellow{255, 255, 0},
       purple{255, 0, 255}, cyan{0, 255, 255};
@@ -33,11 +34,13 @@ struct Placed {
   double degrees = 0;
   double scale = 1;
 };
-inline DrawList CubeScene(std::uint32_t width, std::uint32_t height, std::initializer_list<Placed> cubes) {
+inline DrawList CubeScene(std::uint32_t width, std::uint32_t height,
+                          std::initializer_list<Placed> cubes, bool reversed_z = false) {
   Scene scene;
   scene.name = "cubes";
   scene.canvas.width = width;
   scene.canvas.height = height;
+  scene.depth.reversed = reversed_z;
   scene.models.push_back(ChapterCube());
   for (const Placed& p : cubes) {
     Instance instance;
@@ -65,7 +68,8 @@ inline DrawList Fan(std::uint32_t width, std::uint32_t height, glm::vec2 centre,
                               centre.y + r * static_cast<float>(std::sin(a)), 0.5f});
   }
   for (int i = 0; i < n; ++i) {
-    const auto a = static_cast<std::uint32_t>(1 + i), b = static_cast<std::uint32_t>(1 + (i + 1) % n);
+    const auto a = static_cast<std::uint32_t>(1 + i),
+               b = static_cast<std::uint32_t>(1 + (i + 1) % n);
     if (i % 2 == 0) {
       mesh.triangles.push_back({0, a, b});
     } else {

@@ -165,11 +165,13 @@ inline Model ChapterCube() {
 }
 
 // The chapter's "instances" demo (figure 10-3): two cubes in front of the camera, on a
-// width x height canvas, through the host's own chain (BuildDrawList).
-inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height = 600) {
+// width x height canvas, through the host's own chain (BuildDrawList), optionally with reversed Z.
+inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height = 600,
+                                 bool reversed_z = false) {
   Scene scene;
   scene.canvas.width = width;
   scene.canvas.height = height;
+  scene.depth.reversed = reversed_z;
   scene.models = {ChapterCube()};
   Instance left, right;
   left.transform.translation = glm::dvec3(-1.5, 0, 7);

@@ -1,0 +1,137 @@
+#include "bench/bench_report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+namespace twinraster {
+
+namespace {
+
+std::string Fixed(double x, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
+  return buffer;
+}
+
+std::string Sci(double x) {
+  if (x < 0) return "-";
+  if (x == 0) return "0";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.2e", x);
+  return buffer;
+}
+
+}  // namespace
+
+std::string BenchTable(const BenchResult& result) {
+  std::ostringstream out;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-36s %-16s %3s %10s %10s %12s %10s %9s\n", "scene", "method", "thr",
+                "vertex ms", "frame ms", "vertex err px", "image err", "z-fight");
+  out << line;
+  for (const BenchRow& r : result.rows) {
+    std::snprintf(line, sizeof line, "%-36s %-16s %3u %10s %10s %12s %10llu %9s\n", r.scene.c_str(), r.method.c_str(),
+                  r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(), Fixed(r.frame_ms, 2).c_str(),
+                  Sci(r.vertex_error_px).c_str(), static_cast<unsigned long long>(r.image_error_px),
+                  r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-");
+    out << line;
+  }
+  out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n";
+  return out.str();
+}
+
+std::string BenchCsv(const BenchResult& result) {
+  std::ostringstream out;
+  out << "scene,method,threads,width,height,vertices,triangles,vertex_ms,frame_ms,vertex_error_px,image_error_px,"
+         "z_fighting_px\n";
+  out.precision(9);
+  for (const BenchRow& r : result.rows) {
+    out << r.scene << ',' << r.method << ',' << r.threads << ',' << r.width << ',' << r.height << ',' << r.vertices
+        << ',' << r.triangles << ',' << (r.vertex_ms < 0 ? std::string() : std::to_string(r.vertex_ms)) << ','
+        << r.frame_ms << ',' << (r.vertex_error_px < 0 ? std::string() : Sci(r.vertex_error_px)) << ','
+        << r.image_error_px << ',' << (r.z_fighting_px ? std::to_string(*r.z_fighting_px) : std::string()) << '\n';
+  }
+  return out.str();
+}
+
+nlohmann::ordered_json BenchJson(const BenchResult& result) {
+  nlohmann::ordered_json j;
+  j["machine"] = result.machine;
+  j["runs"] = result.runs;
+  j["seconds"] = result.seconds;
+  j["rows"] = nlohmann::ordered_json::array();
+  for (const BenchRow& r : result.rows) {
+    nlohmann::ordered_json row = {{"scene", r.scene},         {"method", r.method},       {"threads", r.threads},
+                                  {"width", r.width},         {"height", r.height},       {"vertices", r.vertices},
+                                  {"triangles", r.triangles}, {"frame_ms", r.frame_ms},   {"image_error_px", r.image_error_px}};
+    row["vertex_ms"] = r.vertex_ms < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_ms);
+    row["vertex_error_px"] = r.vertex_error_px < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_error_px);
+    row["z_fighting_px"] = r.z_fighting_px ? nlohmann::ordered_json(*r.z_fighting_px) : nlohmann::ordered_json(nullptr);
+    j["rows"].push_back(row);
+  }
+  return j;
+}
+
+std::string BenchChartSvg(const BenchResult& result) {
+  // Log axes; an error of exactly 0 is drawn on the bottom edge, at the floor value.
+  constexpr double kErrorFloor = 1e-9;
+  const double width = 760, height = 480, left = 80, right = 200, top = 30, bottom = 60;
+  struct Point { double x, y; std::string method, scene; };
+  std::vector<Point> points;
+  for (const BenchRow& r : result.rows) {
+    if (r.vertex_ms < 0 || r.vertex_error_px < 0 || r.vertices == 0) continue;
+    points.push_back({r.vertex_ms * 1e6 / double(r.vertices), std::max(r.vertex_error_px, kErrorFloor), r.method, r.scene});
+  }
+  if (points.empty()) return "<svg xmlns=\"http://www.w3.org/2000/svg\"/>\n";
+  double x_min = 1e300, x_max = 0, y_max = kErrorFloor * 10;
+  for (const Point& p : points) x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x), y_max = std::max(y_max, p.y);
+  const double lx0 = std::floor(std::log10(x_min)), lx1 = std::ceil(std::log10(x_max) + 1e-9);
+  const double ly0 = std::log10(kErrorFloor), ly1 = std::ceil(std::log10(y_max) + 1e-9);
+  const auto sx = [&](double x) { return left + (std::log10(x) - lx0) / (lx1 - lx0) * (width - left - right); };
+  const auto sy = [&](double y) { return height - bottom - (std::log10(y) - ly0) / (ly1 - ly0) * (height - top - bottom); };
+  const std::map<std::string, std::string> colours = {
+      {"compose-f64", "#1f77b4"}, {"compose-f32", "#d62728"}, {"steps-f32", "#ff7f0e"}, {"camera-relative", "#2ca02c"}};
+
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (double e = lx0; e <= lx1; ++e) {
+    const double x = sx(std::pow(10, e));
+    svg << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << height - bottom
+        << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << height - bottom + 16 << "\" text-anchor=\"middle\">1e"
+        << e << "</text>\n";
+  }
+  for (double e = ly0; e <= ly1; ++e) {
+    const double y = sy(std::pow(10, e));
+    svg << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << width - right << "\" y2=\"" << y
+        << "\" stroke=\"#ddd\"/><text x=\"" << left - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
+        << (e == ly0 ? "≤1e" : "1e") << e << "</text>\n";
+  }
+  const double subpixel_y = sy(1.0 / 256);
+  svg << "<line x1=\"" << left << "\" y1=\"" << subpixel_y << "\" x2=\"" << width - right << "\" y2=\"" << subpixel_y
+      << "\" stroke=\"#888\" stroke-dasharray=\"4 3\"/><text x=\"" << width - right + 4 << "\" y=\"" << subpixel_y + 4
+      << "\" fill=\"#555\">1/256 px</text>\n";
+  svg << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 18
+      << "\" text-anchor=\"middle\">vertex stage, ms per million vertices (median)</text>\n";
+  svg << "<text transform=\"translate(18 " << (top + height - bottom) / 2
+      << ") rotate(-90)\" text-anchor=\"middle\">max vertex error, pixels</text>\n";
+  for (const Point& p : points) {
+    svg << "<circle cx=\"" << sx(p.x) << "\" cy=\"" << sy(p.y) << "\" r=\"4\" fill-opacity=\"0.7\" fill=\""
+        << colours.at(p.method) << "\"><title>" << p.scene << " " << p.method << "</title></circle>\n";
+  }
+  double legend_y = top + 10;
+  for (const auto& [method, colour] : colours) {
+    svg << "<circle cx=\"" << width - right + 16 << "\" cy=\"" << legend_y << "\" r=\"5\" fill=\"" << colour
+        << "\"/><text x=\"" << width - right + 26 << "\" y=\"" << legend_y + 4 << "\">" << method << "</text>\n";
+    legend_y += 20;
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace twinraster

@@ -1,0 +1,19 @@
+// The benchmark's results as a text table, CSV, JSON and an SVG chart of time against error.
+#pragma once
+
+#include "bench/bench_suite.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+namespace twinraster {
+
+std::string BenchTable(const BenchResult& result);
+std::string BenchCsv(const BenchResult& result);
+nlohmann::ordered_json BenchJson(const BenchResult& result);
+// One point per (scene, method): vertex-stage time per million vertices (x, log) against vertex
+// error in pixels (y, log), a colour per method.
+std::string BenchChartSvg(const BenchResult& result);
+
+}  // namespace twinraster

@@ -1,0 +1,154 @@
+#include "bench/bench_suite.hpp"
+
+#include "bench/error_metrics.hpp"
+#include "bench/vertex_methods.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "draw_list.hpp"
+#include "gpu/gpu_renderer.hpp"
+#include "image_compare.hpp"
+#include "scene_loader.hpp"
+#include "stopwatch.hpp"
+#include "truth/truth_renderer.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <thread>
+
+namespace twinraster {
+
+namespace {
+
+// Median of `runs` timings of fn(); the last result is kept in `result` by fn itself.
+double MedianMs(int runs, const std::function<void()>& fn) {
+  std::vector<double> times;
+  for (int i = 0; i < runs; ++i) {
+    Stopwatch clock;
+    fn();
+    times.push_back(clock.Milliseconds());
+  }
+  std::sort(times.begin(), times.end());
+  return times.size() % 2 ? times[times.size() / 2] : (times[times.size() / 2 - 1] + times[times.size() / 2]) / 2;
+}
+
+std::vector<std::filesystem::path> SuiteScenes(const BenchOptions& options) {
+  std::vector<std::filesystem::path> files;
+  for (const char* sub : {"", "hard", "bench"}) {
+    const std::filesystem::path dir = options.scenes_dir / sub;
+    if (!std::filesystem::is_directory(dir)) continue;
+    std::vector<std::filesystem::path> here;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.is_regular_file() && entry.path().extension() == ".json") here.push_back(entry.path());
+    std::sort(here.begin(), here.end());
+    files.insert(files.end(), here.begin(), here.end());
+  }
+  if (options.only) {
+    std::erase_if(files, [&](const auto& f) { return f.string().find(*options.only) == std::string::npos; });
+  }
+  return files;
+}
+
+// The depth-precision scenes draw a blue plate behind a red one: blue where the truth shows red
+// is depth failing to tell the plates apart.
+std::optional<std::uint64_t> ZFighting(const std::filesystem::path& file, const Image& image, const Image& truth) {
+  if (file.filename().string().find("depth-ratio") == std::string::npos) return std::nullopt;
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const bool blue = image.rgba[i] == 0 && image.rgba[i + 2] == 255;
+    const bool truth_red = truth.rgba[i] == 255 && truth.rgba[i + 2] == 0;
+    count += (blue && truth_red) ? 1 : 0;
+  }
+  return count;
+}
+
+// lavapipe reads LP_NUM_THREADS when an instance creates its device: 0 rasterizes on its own
+// queue thread (one thread in all), N > 0 starts N rasterizer threads. A renderer keeps the count
+// it was created with, so the variable is set just for its construction.
+GpuRenderer LavapipeWithThreads(unsigned threads) {
+  const char* previous = std::getenv("LP_NUM_THREADS");
+  const std::string saved = previous ? previous : "";
+  ::setenv("LP_NUM_THREADS", threads <= 1 ? "0" : std::to_string(threads).c_str(), 1);
+  GpuRenderer renderer;
+  if (previous) ::setenv("LP_NUM_THREADS", saved.c_str(), 1);
+  else ::unsetenv("LP_NUM_THREADS");
+  return renderer;
+}
+
+std::string MachineDescription(const std::string& device) {
+  std::string model = "unknown CPU";
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; Vulkan: " + device;
+}
+
+}  // namespace
+
+BenchResult RunBench(const BenchOptions& options) {
+  Stopwatch total;
+  BenchResult result;
+  result.runs = options.runs;
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::pair<unsigned, GpuRenderer>> lavapipes;
+  lavapipes.emplace_back(1, LavapipeWithThreads(1));
+  if (cores > 1) lavapipes.emplace_back(cores, LavapipeWithThreads(cores));
+  result.machine = MachineDescription(lavapipes.front().second.DeviceName());
+
+  for (const std::filesystem::path& file : SuiteScenes(options)) {
+    const Scene scene = LoadScene(file);
+    const DrawList list = BuildDrawList(scene);
+    const ExactClipPositions exact = ExactClipSpace(scene);
+    const Image truth = RenderTruth(list, exact);
+
+    BenchRow base;
+    base.scene = file.parent_path().filename() == "scenes" ? scene.name : file.parent_path().filename().string() + "/" + scene.name;
+    base.width = list.width, base.height = list.height;
+    for (const DrawCall& d : list.draws) {
+      base.vertices += list.meshes[d.mesh].positions.size();
+      base.triangles += list.meshes[d.mesh].triangles.size();
+    }
+
+    // Each method: its vertex stage alone, then a whole frame on the CPU twin's rasterizer.
+    for (VertexMethod method : kAllMethods) {
+      BenchRow row = base;
+      row.method = std::string(MethodName(method));
+      row.threads = cores;
+      ClipPositions clip;
+      row.vertex_ms = MedianMs(options.runs, [&] { clip = TransformVertices(scene, list, method); });
+      row.vertex_error_px = VertexErrorPixels(clip, exact, list.width, list.height);
+      Image image;
+      row.frame_ms = MedianMs(options.runs, [&] {
+        image = RasterizeClipSpace(list, TransformVertices(scene, list, method), CpuOptions{cores});
+      });
+      row.image_error_px = CompareImages(image, truth).differing_pixels;
+      row.z_fighting_px = ZFighting(file, image, truth);
+      result.rows.push_back(row);
+    }
+
+    // The two renderers as a user runs them, with one thread and with every core, back to back.
+    for (auto& [threads, lavapipe] : lavapipes) {
+      for (const char* renderer : {"cpu-twin", "lavapipe"}) {
+        BenchRow row = base;
+        row.method = renderer;
+        row.threads = threads;
+        Image image;
+        const bool twin = row.method == "cpu-twin";
+        row.frame_ms = MedianMs(options.runs, [&] {
+          image = twin ? RenderOnCpu(list, CpuOptions{threads}) : lavapipe.Render(list);
+        });
+        row.image_error_px = CompareImages(image, truth).differing_pixels;
+        row.z_fighting_px = ZFighting(file, image, truth);
+        result.rows.push_back(row);
+      }
+    }
+  }
+  result.seconds = total.Milliseconds() / 1000;
+  return result;
+}
+
+}  // namespace twinraster

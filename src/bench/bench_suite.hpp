@@ -1,0 +1,40 @@
+// `twinraster bench`: runs a fixed suite of scenes through every way of computing the chain and
+// both renderers, timing each (medians) and measuring its error against the ground truth.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace twinraster {
+
+struct BenchOptions {
+  std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
+  int runs = 5;                                 // timings are medians over this many runs
+  std::optional<std::string> only;              // only scenes whose name contains this
+};
+
+struct BenchRow {
+  std::string scene;
+  std::string method;       // a VertexMethod's name, or "cpu-twin" / "lavapipe" for whole frames
+  unsigned threads = 0;     // rasterizer threads for the frame time
+  std::size_t vertices = 0, triangles = 0;
+  std::uint32_t width = 0, height = 0;
+  double vertex_ms = -1;    // median time of the vertex stage alone (-1: not separable, e.g. lavapipe)
+  double frame_ms = 0;      // median time of the whole frame: vertex stage, clipping, rasterization
+  double vertex_error_px = -1;  // max distance from the truth's framebuffer positions (-1: not measured)
+  std::uint64_t image_error_px = 0;   // pixels that differ from the truth image
+  std::optional<std::uint64_t> z_fighting_px;  // depth scenes: far plate showing where the near one should
+};
+
+struct BenchResult {
+  std::vector<BenchRow> rows;
+  std::string machine;  // CPU model and core count, Vulkan device
+  int runs = 0;
+  double seconds = 0;
+};
+
+BenchResult RunBench(const BenchOptions& options);
+
+}  // namespace twinraster

@@ -1,0 +1,33 @@
+// An output file written in full to a temporary file beside its target and renamed into place by
+// Commit(): a run that fails part-way never leaves a truncated file or destroys an earlier one.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+
+namespace twinraster {
+
+// An output or input file problem; the message names the file.
+class FileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class StagedFile {
+ public:
+  StagedFile(std::filesystem::path target, std::string_view bytes);  // throws FileError
+  ~StagedFile();  // removes the temporary unless committed
+  StagedFile(StagedFile&& other) noexcept;
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+  StagedFile& operator=(StagedFile&&) = delete;
+  void Commit();  // throws FileError
+
+ private:
+  std::filesystem::path target_, temporary_;
+};
+
+void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+}  // namespace twinraster

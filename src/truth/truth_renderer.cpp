@@ -1,0 +1,113 @@
+#include "truth/truth_renderer.hpp"
+
+#include "matrices.hpp"
+#include "truth/truth_clipping.hpp"
+#include "truth/truth_raster.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace twinraster {
+
+namespace {
+
+// lavapipe's maxViewportDimensions, the twin's limit too.
+constexpr std::uint32_t kMaxFramebufferSize = 16384;
+
+// The twin's checks (cpu::ValidateDrawList), plus that `clip` has one position per mesh vertex of
+// every draw.
+void ValidateInputs(const DrawList& list, const ExactClipPositions& clip) {
+  if (list.width == 0 || list.height == 0 || list.width > kMaxFramebufferSize ||
+      list.height > kMaxFramebufferSize) {
+    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" + std::to_string(list.height) +
+                                " is outside 1.." + std::to_string(kMaxFramebufferSize));
+  }
+  if (clip.size() != list.draws.size()) {
+    throw std::invalid_argument("clip positions for " + std::to_string(clip.size()) + " draws, but the list has " +
+                                std::to_string(list.draws.size()));
+  }
+  for (std::size_t d = 0; d < list.draws.size(); ++d) {
+    const std::uint32_t m = list.draws[d].mesh;
+    if (m >= list.meshes.size()) {
+      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(m) + " of " +
+                                  std::to_string(list.meshes.size()));
+    }
+    if (clip[d].size() != list.meshes[m].positions.size()) {
+      throw std::invalid_argument("draw " + std::to_string(d) + " has " + std::to_string(clip[d].size()) +
+                                  " clip positions for " + std::to_string(list.meshes[m].positions.size()) +
+                                  " vertices");
+    }
+  }
+  for (std::size_t m = 0; m < list.meshes.size(); ++m) {
+    const DrawMesh& mesh = list.meshes[m];
+    if (mesh.colours.size() < mesh.triangles.size()) {
+      throw std::invalid_argument("mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +
+                                  " triangles but " + std::to_string(mesh.colours.size()) + " colours");
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      for (std::uint32_t index : mesh.triangles[t]) {
+        if (index >= mesh.positions.size()) {
+          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " + std::to_string(t) +
+                                      " uses vertex " + std::to_string(index) + " of " +
+                                      std::to_string(mesh.positions.size()));
+        }
+      }
+    }
+  }
+}
+
+// Clipping, then the viewport transform of the polygon's vertices, then the fan, drawn in order.
+void DrawClipTriangle(truth::TruthTarget& target, const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c,
+                      Rgb8 colour) {
+  const truth::ClipPolygon polygon = truth::ClipToViewVolume(a, b, c);
+  std::vector<glm::dvec3> window;
+  window.reserve(polygon.size());
+  for (const glm::dvec4& p : polygon) {
+    window.push_back(ExactFramebuffer(p, target.colour.width, target.colour.height));
+  }
+  for (std::size_t i = 2; i < window.size(); ++i) {
+    truth::DrawTriangle(target, truth::WindowTriangle{{window[0], window[i - 1], window[i]}, colour});
+  }
+}
+
+}  // namespace
+
+ExactClipPositions ExactClipSpace(const Scene& scene) {
+  const Chain chain = SceneChain(scene);
+  ExactClipPositions clip;
+  clip.reserve(scene.instances.size());
+  for (const Instance& instance : scene.instances) {
+    if (instance.model >= scene.models.size()) {
+      throw std::invalid_argument("instance uses model " + std::to_string(instance.model) + " of " +
+                                  std::to_string(scene.models.size()));
+    }
+    const glm::dmat4 f = InstanceMatrix(chain, instance.transform);  // never rounded to float
+    std::vector<glm::dvec4>& positions = clip.emplace_back();
+    for (const glm::dvec3& v : scene.models[instance.model].vertices) positions.push_back(f * glm::dvec4(v, 1.0));
+  }
+  return clip;
+}
+
+glm::dvec3 ExactFramebuffer(glm::dvec4 clip, std::uint32_t width, std::uint32_t height) {
+  const double w = static_cast<double>(width), h = static_cast<double>(height);
+  // Viewport (0, 0, W, H), depth range [0, 1]: clip z/w already lies in [0, 1] (Vulkan).
+  return {(clip.x / clip.w + 1.0) * w / 2.0, (clip.y / clip.w + 1.0) * h / 2.0, clip.z / clip.w};
+}
+
+Image RenderTruth(const DrawList& list, const ExactClipPositions& clip) {
+  ValidateInputs(list, clip);
+  truth::TruthTarget target(list.width, list.height, list.background, list.reversed_z);
+  // Draws in list order, triangles in index order, a clipped triangle's fan in fan order.
+  for (std::size_t d = 0; d < list.draws.size(); ++d) {
+    const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
+    const std::vector<glm::dvec4>& positions = clip[d];
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      DrawClipTriangle(target, positions[tri[0]], positions[tri[1]], positions[tri[2]], mesh.colours[t]);
+    }
+  }
+  return std::move(target.colour);
+}
+
+}  // namespace twinraster
