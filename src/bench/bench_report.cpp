@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace twinraster {
@@ -26,22 +28,140 @@ std::string Sci(double x) {
   return buffer;
 }
 
+const BenchRow* Find(const BenchResult& result, const std::string& scene, const std::string& method, unsigned threads = 0) {
+  for (const BenchRow& r : result.rows)
+    if (r.scene == scene && r.method == method && (threads == 0 || r.threads == threads)) return &r;
+  return nullptr;
+}
+
+struct ZFightOnset {
+  std::optional<double> ratio;  // the largest near/far ratio that z-fights; none: no ratio tried does
+  double smallest_tried = 1;
+};
+
+// From the depth-ratio scenes' CPU twin rows ("hard/depth-ratio-1e-4" is near/far = 1e-4).
+ZFightOnset Onset(const BenchResult& result, bool reversed) {
+  ZFightOnset onset;
+  for (const BenchRow& r : result.rows) {
+    const std::size_t at = r.scene.find("depth-ratio-1e-");
+    if (at == std::string::npos || r.method != "cpu-twin" || !r.z_fighting_px) continue;
+    if ((r.scene.find("reversed") != std::string::npos) != reversed) continue;
+    const double ratio = std::pow(10.0, -std::atof(r.scene.c_str() + at + 15));
+    onset.smallest_tried = std::min(onset.smallest_tried, ratio);
+    if (*r.z_fighting_px > 0 && (!onset.ratio || ratio > *onset.ratio)) onset.ratio = ratio;
+  }
+  return onset;
+}
+
+// The scene with the most vertices gives the steadiest per-vertex cost.
+const BenchRow* Largest(const BenchResult& result) {
+  const BenchRow* largest = nullptr;
+  for (const BenchRow& r : result.rows)
+    if (!largest || r.vertices > largest->vertices) largest = &r;
+  return largest;
+}
+
+std::vector<std::string> Scenes(const BenchResult& result) {
+  std::vector<std::string> scenes;
+  for (const BenchRow& r : result.rows)
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+  return scenes;
+}
+
+std::vector<unsigned> ThreadCounts(const BenchResult& result) {
+  std::vector<unsigned> counts;
+  for (const BenchRow& r : result.rows)
+    if (r.method == "lavapipe" && std::find(counts.begin(), counts.end(), r.threads) == counts.end()) counts.push_back(r.threads);
+  return counts;
+}
+
+const char* kMethods[] = {"compose-f64", "compose-f32", "steps-f32", "camera-relative"};
+
 }  // namespace
+
+nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
+  nlohmann::ordered_json j;
+  for (const char* method : kMethods) {
+    if (const BenchRow* far = Find(result, "hard/far-1e7", method)) j["far_1e7_vertex_error_px"][method] = far->vertex_error_px;
+  }
+  for (const bool reversed : {false, true}) {
+    const ZFightOnset onset = Onset(result, reversed);
+    j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] =
+        onset.ratio ? nlohmann::ordered_json(*onset.ratio) : nlohmann::ordered_json(nullptr);
+  }
+  if (const BenchRow* largest = Largest(result)) {
+    j["vertex_ms_per_million_vertices"]["scene"] = largest->scene;
+    for (const char* method : kMethods) {
+      if (const BenchRow* r = Find(result, largest->scene, method))
+        j["vertex_ms_per_million_vertices"][method] = r->vertex_ms * 1e6 / double(r->vertices);
+    }
+  }
+  for (const std::string& scene : Scenes(result)) {
+    for (unsigned threads : ThreadCounts(result)) {
+      const BenchRow* twin = Find(result, scene, "cpu-twin", threads);
+      const BenchRow* gpu = Find(result, scene, "lavapipe", threads);
+      if (twin && gpu) j["cpu_twin_over_lavapipe"][scene][std::to_string(threads) + "_threads"] = twin->frame_ms / gpu->frame_ms;
+    }
+  }
+  return j;
+}
+
+std::string BenchSummary(const BenchResult& result) {
+  std::ostringstream out;
+  out << "Vertex error at 1e7 units from the origin (hard/far-1e7, 1920x1080), max over vertices:\n";
+  for (const char* method : kMethods) {
+    if (const BenchRow* r = Find(result, "hard/far-1e7", method))
+      out << "  " << method << ": " << Sci(r->vertex_error_px) << " px" << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
+  }
+  out << "Z-fighting onset (D32_SFLOAT, plates 0.02 apart at ~45 units; largest near/far that fights):\n";
+  for (const bool reversed : {false, true}) {
+    const ZFightOnset onset = Onset(result, reversed);
+    out << "  " << (reversed ? "reversed Z: " : "standard Z: ")
+        << (onset.ratio ? "near/far = " + Sci(*onset.ratio) : "none down to near/far = " + Sci(onset.smallest_tried)) << "\n";
+  }
+  if (const BenchRow* largest = Largest(result)) {
+    out << "Vertex stage, ms per million vertices (" << largest->scene << ", " << largest->vertices << " vertices):\n";
+    for (const char* method : kMethods) {
+      if (const BenchRow* r = Find(result, largest->scene, method))
+        out << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
+    }
+  }
+  out << "Whole frame, CPU twin time / lavapipe time:\n";
+  const std::vector<unsigned> counts = ThreadCounts(result);
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-44s", "scene");
+  out << line;
+  for (unsigned t : counts) out << "  " << t << (t == 1 ? " thread " : " threads");
+  out << "\n";
+  for (const std::string& scene : Scenes(result)) {
+    std::snprintf(line, sizeof line, "  %-44s", scene.c_str());
+    out << line;
+    for (unsigned threads : counts) {
+      const BenchRow* twin = Find(result, scene, "cpu-twin", threads);
+      const BenchRow* gpu = Find(result, scene, "lavapipe", threads);
+      std::snprintf(line, sizeof line, "  %9s", twin && gpu ? Fixed(twin->frame_ms / gpu->frame_ms, 3).c_str() : "-");
+      out << line;
+    }
+    out << "\n";
+  }
+  return out.str();
+}
 
 std::string BenchTable(const BenchResult& result) {
   std::ostringstream out;
   char line[512];
-  std::snprintf(line, sizeof line, "%-36s %-16s %3s %10s %10s %12s %10s %9s\n", "scene", "method", "thr",
+  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s\n", "scene", "method", "thr",
                 "vertex ms", "frame ms", "vertex err px", "image err", "z-fight");
   out << line;
   for (const BenchRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-36s %-16s %3u %10s %10s %12s %10llu %9s\n", r.scene.c_str(), r.method.c_str(),
+    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s\n", r.scene.c_str(), r.method.c_str(),
                   r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(), Fixed(r.frame_ms, 2).c_str(),
                   Sci(r.vertex_error_px).c_str(), static_cast<unsigned long long>(r.image_error_px),
                   r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-");
     out << line;
   }
-  out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n";
+  out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n\n";
+  out << BenchSummary(result);
   return out.str();
 }
 
@@ -64,6 +184,7 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
   j["machine"] = result.machine;
   j["runs"] = result.runs;
   j["seconds"] = result.seconds;
+  j["summary"] = BenchSummaryJson(result);
   j["rows"] = nlohmann::ordered_json::array();
   for (const BenchRow& r : result.rows) {
     nlohmann::ordered_json row = {{"scene", r.scene},         {"method", r.method},       {"threads", r.threads},

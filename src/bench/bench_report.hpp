@@ -9,7 +9,12 @@
 
 namespace twinraster {
 
-std::string BenchTable(const BenchResult& result);
+std::string BenchTable(const BenchResult& result);  // every row, then the summary
+
+// The figures the rows add up to: vertex error far from the origin per method, the near/far
+// ratio where z-fighting starts, vertex-stage cost per million vertices, CPU twin / lavapipe time.
+std::string BenchSummary(const BenchResult& result);
+nlohmann::ordered_json BenchSummaryJson(const BenchResult& result);
 std::string BenchCsv(const BenchResult& result);
 nlohmann::ordered_json BenchJson(const BenchResult& result);
 // One point per (scene, method): vertex-stage time per million vertices (x, log) against vertex
