@@ -1,4 +1,4 @@
-// Transforms a model-space vertex to clip space with the instance's matrix F (DrawCall::mvp).
+// Transforms a model-space vertex to clip space with the instance's matrix F (DrawCall::F).
 #version 450
 
 layout(location = 0) in vec3 p;  // the only vertex attribute; colours are per triangle

@@ -55,8 +55,7 @@ BackendRun RenderCpu(const DrawList& list, unsigned threads) {
   BackendRun run{"cpu", "", {}, {}};
   CpuTimings t;
   run.image = RenderOnCpu(list, CpuOptions{threads}, &t);
-  const unsigned used = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
-  run.detail = "CPU twin, " + std::to_string(used) + (used == 1 ? " thread" : " threads");
+  run.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
   run.setup_ms = t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
   return run;
 }
@@ -89,19 +88,16 @@ int RenderCommand(const std::vector<std::string>& args) {
   const std::filesystem::path scene_file = cl.Positional()[0];
   const Scene scene = LoadScene(scene_file);
   const std::filesystem::path out = cl.Option("-o").value_or(scene.name + ".png");
+  std::error_code ignored;
+  if (out.filename().empty() || std::filesystem::is_directory(out, ignored)) {
+    throw UsageError("-o " + out.string() + ": give a file name (OUT.png), not a directory");
+  }
   const DrawList list = BuildDrawList(scene);
 
   // Render everything before writing anything: a run that fails writes no file at all.
   std::vector<BackendRun> runs;
   if (backend != "cpu") {
-    try {
-      runs.push_back(RenderGpu(list, cl.Option("--device").value_or("")));
-    } catch (const GpuUnavailable& e) {
-      std::cerr << "twinraster: no usable Vulkan device: " << e.what()
-                << "\n  Install Mesa's software Vulkan driver (lavapipe) with `apt-get install mesa-vulkan-drivers`,"
-                   " or render with --backend cpu.\n";
-      return kExitNoVulkan;
-    }
+    runs.push_back(RenderGpu(list, cl.Option("--device").value_or("")));  // GpuUnavailable: exit 3
   }
   if (backend != "gpu") runs.push_back(RenderCpu(list, threads));
   for (BackendRun& run : runs) run.output = backend == "both" ? Suffixed(out, run.name) : out;
@@ -121,7 +117,9 @@ int RenderCommand(const std::vector<std::string>& args) {
   if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image)));
   for (StagedFile& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
-  if (comparison && comparison->Equal()) std::filesystem::remove(diff_file);
+  if (comparison && comparison->Equal() && std::filesystem::is_regular_file(diff_file, ignored)) {
+    std::filesystem::remove(diff_file, ignored);
+  }
 
   if (cl.Flag("--json")) {
     nlohmann::ordered_json j;

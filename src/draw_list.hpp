@@ -25,7 +25,7 @@ struct DrawMesh {
 // rounded to float once. glm stores it column-major, as GLSL expects.
 struct DrawCall {
   std::uint32_t mesh = 0;
-  glm::mat4 mvp{1.0f};
+  glm::mat4 F{1.0f};
 };
 
 struct DrawList {

@@ -161,6 +161,11 @@ double JsonReader::Positive() const {
     s << "must be greater than 0, found " << x;
     Fail(s.str());
   }
+  if (x < kMinPositive) {
+    std::ostringstream s;
+    s << "number " << x << " is absurdly small (below " << kMinPositive << ")";
+    Fail(s.str());
+  }
   return x;
 }
 

@@ -20,6 +20,10 @@ namespace twinraster {
 // Numbers beyond this magnitude are rejected as absurd: far past anything a scene can mean,
 // and where squaring them in double would start to lose the chain's precision.
 inline constexpr double kMaxMagnitude = 1e12;
+// Sizes and distances that must be positive must also be at least this: smaller ones make the
+// projection's entries overflow or underflow once rounded to float. With both bounds every entry
+// of F stays below about 1e34, inside float's range (3.4e38).
+inline constexpr double kMinPositive = 1e-9;
 
 class JsonReader {
  public:
@@ -50,7 +54,7 @@ class JsonReader {
   std::string String() const;
   bool Boolean() const;
   double Number() const;  // finite, |x| <= kMaxMagnitude
-  double Positive() const;
+  double Positive() const;  // > 0 and >= kMinPositive
   std::int64_t Integer(std::int64_t min, std::int64_t max) const;
   glm::dvec3 Vec3() const;
 

@@ -1,6 +1,7 @@
 // twinraster's command line: explain a scene's transform chain, render it on Vulkan and on the
 // CPU twin, compare images. Every error becomes one message and an exit code.
 #include "commands.hpp"
+#include "gpu/gpu_renderer.hpp"
 #include "png_file.hpp"
 #include "scene_error.hpp"
 #include "usage_error.hpp"
@@ -26,8 +27,9 @@ constexpr const char* kUsage =
     "      count the pixels that differ between two images\n"
     "  twinraster bench [--out DIR] [--runs N] [--only TEXT] [--scenes DIR] [--json]\n"
     "      time every way of computing the chain and both renderers on the scene suite, against the\n"
-    "      double-precision ground truth; with --out, also write bench.csv, bench.svg, bench.json\n"
-    "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device\n";
+    "      double-precision ground truth; with --out, also write bench.csv, .svg, .json, .txt\n"
+    "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device,\n"
+    "  4 internal error\n";
 
 int Run(const std::vector<std::string>& args) {
   if (args.empty()) throw UsageError("missing command");
@@ -55,6 +57,10 @@ int main(int argc, char** argv) {
   } catch (const FileError& e) {
     std::cerr << "twinraster: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const GpuUnavailable& e) {
+    std::cerr << "twinraster: no usable Vulkan device: " << e.what()
+              << "\n  (render --backend cpu works without one)\n";
+    return kExitNoVulkan;
   } catch (const UsageError& e) {
     std::cerr << "twinraster: " << e.what() << "\n" << kUsage;
     return kExitBadInput;

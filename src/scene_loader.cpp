@@ -8,7 +8,9 @@
 #include <glm/geometric.hpp>
 
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -263,14 +265,22 @@ Scene ParseScene(std::string_view json_text, const std::string& file_name) {
   const JsonReader instances = root.Required("instances");
   const std::size_t count = instances.ExpectArray();
   for (std::size_t i = 0; i < count; ++i) scene.instances.push_back(ReadInstance(instances[i], scene.models));
+
   return scene;
 }
 
 Scene LoadScene(const std::filesystem::path& file) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) throw SceneError(file.string(), "(file)", "is a directory, not a scene file");
+  if (!std::filesystem::exists(file, ec)) throw SceneError(file.string(), "(file)", "no such file");
+  if (!std::filesystem::is_regular_file(file, ec)) throw SceneError(file.string(), "(file)", "not a regular file");
+  // Far beyond any scene a person writes; refusing it keeps /dev/zero-like inputs from eating memory.
+  constexpr std::uintmax_t kMaxSceneBytes = 256u << 20;
+  if (std::filesystem::file_size(file, ec) > kMaxSceneBytes) {
+    throw SceneError(file.string(), "(file)", "larger than 256 MiB: not a scene file");
+  }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string(), "(file)", "cannot open the file for reading");
+  if (!in) throw SceneError(file.string(), "(file)", std::string("cannot open the file for reading: ") + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw SceneError(file.string(), "(file)", "read error");

@@ -15,6 +15,12 @@ std::string SystemError() { return std::strerror(errno); }
 }  // namespace
 
 StagedFile::StagedFile(std::filesystem::path target, std::string_view bytes) : target_(std::move(target)) {
+  // Checked here, not at Commit(): every output is staged before the first is committed, so a
+  // target that cannot take a file must fail while nothing has been replaced yet.
+  std::error_code ignored;
+  if (target_.filename().empty() || std::filesystem::is_directory(target_, ignored)) {
+    throw FileError(target_.string() + ": is a directory, not a file name");
+  }
   // Same directory as the target, so that the final rename() is atomic (one file system).
   const std::filesystem::path temporary = target_.string() + ".tmp-" + std::to_string(::getpid());
   std::FILE* out = std::fopen(temporary.c_str(), "wb");
@@ -42,10 +48,6 @@ void StagedFile::Commit() {
     throw FileError(target_.string() + ": cannot write: " + SystemError());  // the destructor removes the temporary
   }
   temporary_.clear();
-}
-
-void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes) {
-  StagedFile(target, bytes).Commit();
 }
 
 }  // namespace twinraster

@@ -28,6 +28,5 @@ class StagedFile {
   std::filesystem::path target_, temporary_;
 };
 
-void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes);
 
 }  // namespace twinraster

@@ -10,11 +10,6 @@ class Stopwatch {
   double Milliseconds() const {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
   }
-  double Lap() {  // milliseconds since the last lap (or construction), and restart
-    const double ms = Milliseconds();
-    start_ = std::chrono::steady_clock::now();
-    return ms;
-  }
 
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();

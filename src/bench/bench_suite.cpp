@@ -9,6 +9,7 @@
 #include "scene_loader.hpp"
 #include "stopwatch.hpp"
 #include "truth/truth_renderer.hpp"
+#include "usage_error.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -20,7 +21,7 @@ namespace twinraster {
 
 namespace {
 
-// Median of `runs` timings of fn(); the last result is kept in `result` by fn itself.
+// Median of `runs` timings of fn() (which keeps its own last result).
 double MedianMs(int runs, const std::function<void()>& fn) {
   std::vector<double> times;
   for (int i = 0; i < runs; ++i) {
@@ -99,14 +100,16 @@ BenchResult RunBench(const BenchOptions& options) {
   if (cores > 1) lavapipes.emplace_back(cores, LavapipeWithThreads(cores));
   result.machine = MachineDescription(lavapipes.front().second.DeviceName());
 
-  for (const std::filesystem::path& file : SuiteScenes(options)) {
+  const std::vector<std::filesystem::path> files = SuiteScenes(options);
+  if (files.empty()) throw UsageError("no scene in " + options.scenes_dir.string() + (options.only ? " matches --only " + *options.only : ""));
+  for (const std::filesystem::path& file : files) {
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
     const ExactClipPositions exact = ExactClipSpace(scene);
     const Image truth = RenderTruth(list, exact);
 
     BenchRow base;
-    base.scene = file.parent_path().filename() == "scenes" ? scene.name : file.parent_path().filename().string() + "/" + scene.name;
+    base.scene = std::filesystem::relative(file, options.scenes_dir).replace_extension().generic_string();
     base.width = list.width, base.height = list.height;
     for (const DrawCall& d : list.draws) {
       base.vertices += list.meshes[d.mesh].positions.size();

@@ -11,7 +11,7 @@ namespace twinraster {
 
 struct BenchOptions {
   std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
-  int runs = 5;                                 // timings are medians over this many runs
+  int runs = 15;                                // timings are medians over this many runs
   std::optional<std::string> only;              // only scenes whose name contains this
 };
 

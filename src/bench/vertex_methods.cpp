@@ -57,12 +57,6 @@ std::string_view MethodName(VertexMethod method) {
   return "?";
 }
 
-std::optional<VertexMethod> ParseMethod(std::string_view name) {
-  for (VertexMethod m : kAllMethods)
-    if (MethodName(m) == name) return m;
-  return std::nullopt;
-}
-
 std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method) {
   std::vector<glm::mat4> matrices;
   const Chain chain = SceneChain(scene);

@@ -26,7 +26,6 @@ inline constexpr VertexMethod kAllMethods[] = {VertexMethod::kComposeDouble, Ver
                                                VertexMethod::kStepsFloat, VertexMethod::kCameraRelative};
 
 std::string_view MethodName(VertexMethod method);  // "compose-f64", "compose-f32", "steps-f32", "camera-relative"
-std::optional<VertexMethod> ParseMethod(std::string_view name);
 
 
 // The per-instance float matrix F of the methods that have one (1, 2, 4); method 3 has none.

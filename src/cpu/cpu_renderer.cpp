@@ -57,7 +57,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   const double readback_ms = MillisecondsSince(start);
 
   if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
-  if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms};
+  if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms, threads};
   return image;
 }
 

@@ -20,6 +20,7 @@ struct CpuOptions {
 // readback = building the Image.
 struct CpuTimings {
   double setup_ms = 0, draw_ms = 0, readback_ms = 0;
+  unsigned threads = 0;  // the threads actually used: at most one per 16-row band
 };
 
 // Throws std::invalid_argument for a malformed list (size 0 or over 16384, a mesh or vertex index

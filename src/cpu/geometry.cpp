@@ -134,7 +134,7 @@ void ProcessGeometry(const DrawList& list, unsigned threads, GeometryScratch& sc
                   for (; g < stop; ++g) {
                     const std::size_t i = g - vertex_start[d];
                     vertices[g] = clip ? ShadeClipVertex((*clip)[d][i], vp)
-                                       : ShadeVertex(list.draws[d].mvp, mesh.positions[i], vp);
+                                       : ShadeVertex(list.draws[d].F, mesh.positions[i], vp);
                   }
                 }
               });

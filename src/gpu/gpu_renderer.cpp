@@ -179,7 +179,7 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
   for (const DrawCall& draw : list.draws) {
     const gpu::MeshRange& range = meshes.range(draw.mesh);
     if (range.index_count == 0) continue;  // a mesh without triangles draws nothing
-    const gpu::PushConstants push{.F = draw.mvp, .first_colour = range.first_colour};
+    const gpu::PushConstants push{.F = draw.F, .first_colour = range.first_colour};
     cmd.pushConstants<gpu::PushConstants>(
         *pipeline.layout(), vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
         0, push);

@@ -16,7 +16,7 @@ constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 
 // The push-constant block of shaders/triangle.vert and .frag, byte for byte (std430: 64 + 4).
 struct PushConstants {
-  glm::mat4 F;                     // DrawCall::mvp; glm is column-major like GLSL
+  glm::mat4 F;                     // DrawCall::F; glm is column-major like GLSL
   std::uint32_t first_colour = 0;  // index of the mesh's first triangle colour
 };
 static_assert(sizeof(PushConstants) == 68 && offsetof(PushConstants, first_colour) == 64);

@@ -92,7 +92,7 @@ TEST_CASE("With reversed Z the larger depth is nearer, whatever the draw order",
   // The depth comes from F too: the far square moved nearer (z 0.25 + 0.6 = 0.85) now wins.
   SECTION("depth through F") {
     DrawList list = SquaresList({kAt075, kAt025}, true);
-    list.draws[1].mvp = Translation(0, 0, 0.6f);
+    list.draws[1].F = Translation(0, 0, 0.6f);
     CheckSquare(gpu.Render(list), kGreen);
   }
   SECTION("no draws: only the background") { CheckSquare(render({}), std::nullopt); }

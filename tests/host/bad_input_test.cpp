@@ -63,6 +63,11 @@ std::vector<BadCase> Cases() {
       {"bad rotation axis", With("/camera/rotation/axis", "w"), "camera.rotation.axis", "unknown axis \"w\""},
       {"zero rotation axis", With("/camera/rotation/axis", {0, 0, 0}), "camera.rotation.axis", "zero vector"},
       {"top level not an object", "[1, 2, 3]", "(top level)", "expected an object, found an array"},
+      {"empty file", "", "line 1, column 1", "unexpected end of input"},
+      {"absurdly small viewport", With("/viewport/width", 1e-300), "viewport.width", "absurdly small"},
+      {"absurdly small near", With("/depth", {{"near", 1e-300}, {"far", 10}}), "depth.near", "absurdly small"},
+      {"reversed is not a boolean", With("/depth", {{"reversed", 1}}), "depth.reversed", "expected true or false"},
+      {"steps out of range", With("/camera/rotation/steps", 0), "camera.rotation.steps", "in 1..10000000"},
   };
 }
 
@@ -85,19 +90,32 @@ TEST_CASE("Bad scene files: one message naming file, place and problem; exit cod
   }
 }
 
-TEST_CASE("A missing file or a directory is bad input too", "[bad-input]") {
+TEST_CASE("A missing file, a directory or a device is bad input too", "[bad-input]") {
   const test::TempDir dir;
-  for (const auto& path : {dir / "no-such-scene.json", dir.path()}) {
+  const std::vector<std::pair<std::filesystem::path, std::string>> cases = {
+      {dir / "no-such-scene.json", "no such file"},
+      {dir.path(), "is a directory"},
+      {"/dev/zero", "not a regular file"},
+  };
+  for (const auto& [path, problem] : cases) {
     const test::CliResult r = test::RunCli({"explain", path.string()});
     INFO(r.err);
     REQUIRE(r.exit_code == 2);
-    REQUIRE(r.err.find(path.string()) != std::string::npos);
+    REQUIRE(r.err.rfind("twinraster: " + path.string() + ": (file): " + problem, 0) == 0);
   }
 }
 
-TEST_CASE("Usage errors exit with 2", "[bad-input]") {
-  REQUIRE(test::RunCli({}).exit_code == 2);
-  REQUIRE(test::RunCli({"frobnicate"}).exit_code == 2);
-  REQUIRE(test::RunCli({"explain"}).exit_code == 2);
-  REQUIRE(test::RunCli({"explain", "a.json", "b.json"}).exit_code == 2);
+TEST_CASE("Usage errors exit with 2 and say what is wrong", "[bad-input]") {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{}, "missing command"},
+      {{"frobnicate"}, "unknown command \"frobnicate\""},
+      {{"explain"}, "missing SCENE"},
+      {{"explain", "a.json", "b.json"}, "unexpected argument b.json"},
+  };
+  for (const auto& [args, message] : cases) {
+    const test::CliResult r = test::RunCli(args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.rfind("twinraster: " + message, 0) == 0);
+  }
 }

@@ -49,6 +49,6 @@ TEST_CASE("ExactClipSpace: the chapter's chain in double, one vector per instanc
   const glm::dmat4 f = InstanceMatrix(SceneChain(scene), instance.transform);
   CHECK(clip[1][0] == f * glm::dvec4(1, 1, 1, 1));
   const DrawList list = BuildDrawList(scene);
-  const glm::vec4 float_clip = list.draws[0].mvp * glm::vec4(1, 1, 1, 1);
+  const glm::vec4 float_clip = list.draws[0].F * glm::vec4(1, 1, 1, 1);
   for (int k = 0; k < 4; ++k) CHECK(double(float_clip[k]) == Approx(v[k]).epsilon(1e-6));
 }

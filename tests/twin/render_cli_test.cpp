@@ -37,7 +37,7 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   REQUIRE(std::filesystem::exists(dir / "frame-gpu.png"));
   REQUIRE(std::filesystem::exists(dir / "frame-cpu.png"));
   REQUIRE(!std::filesystem::exists(dir / "frame-diff.png"));
-  // Nothing but the three outputs: no temporary file left behind.
+  // Nothing but the two outputs (no diff: the images agree), and no temporary left behind.
   REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 2);
 }
 
@@ -98,4 +98,29 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   const test::CliResult bad = test::RunCli({"compare", (dir / "a.png").string(), (dir / "not.png").string()});
   REQUIRE(bad.exit_code == 2);
   REQUIRE(bad.err.find("not.png") != std::string::npos);
+}
+
+TEST_CASE("-o must name a file; an output that is a directory fails before anything is replaced", "[cli][render]") {
+  const test::TempDir dir;
+  REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string(), "--backend", "cpu"}).exit_code == 2);
+  REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string() + "/", "--backend", "cpu"}).exit_code == 2);
+  REQUIRE(test::RunCli({"render", kScene, "-o", "", "--backend", "cpu"}).exit_code == 2);
+
+  // x-gpu.png holds an earlier result; x-cpu.png is in the way as a directory. The run must fail
+  // without touching x-gpu.png, although the GPU image was rendered and staged first.
+  test::WriteFile(dir / "x-gpu.png", "earlier result");
+  std::filesystem::create_directory(dir / "x-cpu.png");
+  const test::CliResult r = test::RunCli({"render", kScene, "-o", (dir / "x.png").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("x-cpu.png") != std::string::npos);
+  REQUIRE(test::ReadFile(dir / "x-gpu.png") == "earlier result");
+  REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 2);  // no temporary left
+}
+
+TEST_CASE("Without a Vulkan device, bench exits 3 too", "[cli][bench]") {
+  const test::CliResult r = test::RunCli({"bench", "--runs", "1", "--only", "cgfs-scene", "--scenes",
+                                          test::SourcePath("scenes").string()}, {kNoVulkan});
+  REQUIRE(r.exit_code == 3);
+  REQUIRE(r.err.find("mesa-vulkan-drivers") != std::string::npos);
 }

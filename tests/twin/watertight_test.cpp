@@ -23,10 +23,10 @@ struct Coverage {
   std::vector<int> gpu, cpu;  // how many triangles covered each pixel
 };
 
-// Draws each triangle of `mesh` by itself with matrix `mvp`, on both backends, counting coverage.
+// Draws each triangle of `mesh` by itself with matrix `f`, on both backends, counting coverage.
 // `count_it` picks which triangles count (all of them, or the front faces only, ...).
 template <typename Predicate>
-Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, const glm::mat4& mvp,
+Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, const glm::mat4& f,
                        Predicate count_it) {
   Coverage c{w, h, std::vector<int>(std::size_t{w} * h), std::vector<int>(std::size_t{w} * h)};
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -37,7 +37,7 @@ Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, c
     single.triangles = {{0, 1, 2}};
     single.colours = {Rgb8{255, 255, 255}};
     one.meshes = {single};
-    one.draws = {DrawCall{0, mvp}};
+    one.draws = {DrawCall{0, f}};
     const Image gpu = test::SharedGpu().Render(one);
     const Image cpu = RenderOnCpu(one);
     for (std::size_t i = 0; i < c.gpu.size(); ++i) {
@@ -152,7 +152,7 @@ TEST_CASE("Watertight: a closed convex mesh covers each pixel once with front fa
     t.rotation = Rotation(glm::normalize(glm::dvec3(offset(random), 1, offset(random))), angle(random));
     t.translation = glm::dvec3(offset(random), offset(random), 4.2);  // wholly inside the view: no clipping
     const glm::dmat4 f = InstanceMatrix(chain, t);
-    const glm::mat4 mvp(f);
+    const glm::mat4 f_float(f);
 
     // Facing from the projected winding (every vertex is in front of the camera here).
     const auto facing = [&](std::size_t i) {
@@ -163,8 +163,8 @@ TEST_CASE("Watertight: a closed convex mesh covers each pixel once with front fa
       }
       return (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
     };
-    const Coverage front = CountCoverage(91, 77, sphere, mvp, [&](std::size_t i) { return facing(i) > 0; });
-    const Coverage back = CountCoverage(91, 77, sphere, mvp, [&](std::size_t i) { return facing(i) < 0; });
+    const Coverage front = CountCoverage(91, 77, sphere, f_float, [&](std::size_t i) { return facing(i) > 0; });
+    const Coverage back = CountCoverage(91, 77, sphere, f_float, [&](std::size_t i) { return facing(i) < 0; });
     std::size_t covered = 0;
     for (std::size_t i = 0; i < front.cpu.size(); ++i) {
       INFO("round " << round << ", pixel " << i % 91 << ", " << i / 91);
