@@ -38,6 +38,14 @@ struct DrawList {
   bool reversed_z = false;
 };
 
+// The largest canvas side: lavapipe's maxImageDimension2D and maxViewportDimensions (both 16384).
+inline constexpr std::uint32_t kMaxCanvasSize = 16384;
+
 DrawList BuildDrawList(const Scene& scene);
+
+// What every renderer checks before drawing a list someone else built: a size in 1..kMaxCanvasSize,
+// every draw naming an existing mesh, every triangle using existing vertices and having its colour.
+// Throws std::invalid_argument naming the first problem.
+void ValidateDrawList(const DrawList& list);
 
 }  // namespace twinraster

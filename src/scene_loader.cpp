@@ -1,5 +1,6 @@
 #include "scene_loader.hpp"
 
+#include "draw_list.hpp"
 #include "json_reader.hpp"
 #include "matrices.hpp"
 
@@ -19,7 +20,6 @@ namespace twinraster {
 
 namespace {
 
-constexpr std::int64_t kMaxCanvas = 16384;  // Vulkan's maxImageDimension2D on lavapipe
 
 const std::map<std::string, Rgb8, std::less<>>& NamedColours() {
   // The chapter's six cube colours, plus the neutral ones a scene's background needs.
@@ -100,8 +100,8 @@ glm::dvec3 ReadScale(const JsonReader& r) {
 Canvas ReadCanvas(const JsonReader& r) {
   r.ExpectObject({"width", "height", "background"});
   Canvas canvas;
-  canvas.width = static_cast<std::uint32_t>(r.Required("width").Integer(1, kMaxCanvas));
-  canvas.height = static_cast<std::uint32_t>(r.Required("height").Integer(1, kMaxCanvas));
+  canvas.width = static_cast<std::uint32_t>(r.Required("width").Integer(1, kMaxCanvasSize));
+  canvas.height = static_cast<std::uint32_t>(r.Required("height").Integer(1, kMaxCanvasSize));
   if (auto background = r.Find("background")) canvas.background = ReadColour(*background);
   return canvas;
 }

@@ -64,13 +64,13 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 }  // namespace
 
 Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
-  cpu::ValidateDrawList(list);
+  ValidateDrawList(list);
   return Render(list, nullptr, options, timings);
 }
 
 Image RasterizeClipSpace(const DrawList& list, const ClipPositions& clip, const CpuOptions& options,
                          CpuTimings* timings) {
-  cpu::ValidateDrawList(list);
+  ValidateDrawList(list);
   if (clip.size() != list.draws.size()) throw std::invalid_argument("clip positions for the wrong number of draws");
   for (std::size_t d = 0; d < clip.size(); ++d) {
     if (clip[d].size() != list.meshes[list.draws[d].mesh].positions.size()) {

@@ -10,39 +10,6 @@
 
 namespace twinraster::cpu {
 
-void ValidateDrawList(const DrawList& list) {
-  if (list.width == 0 || list.height == 0 || list.width > kMaxFramebufferSize ||
-      list.height > kMaxFramebufferSize) {
-    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" +
-                                std::to_string(list.height) + " is outside 1.." +
-                                std::to_string(kMaxFramebufferSize));
-  }
-  for (std::size_t d = 0; d < list.draws.size(); ++d) {
-    if (list.draws[d].mesh >= list.meshes.size()) {
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " +
-                                  std::to_string(list.draws[d].mesh) + " of " +
-                                  std::to_string(list.meshes.size()));
-    }
-  }
-  for (std::size_t m = 0; m < list.meshes.size(); ++m) {
-    const DrawMesh& mesh = list.meshes[m];
-    if (mesh.colours.size() < mesh.triangles.size()) {
-      throw std::invalid_argument("mesh " + std::to_string(m) + " has " +
-                                  std::to_string(mesh.triangles.size()) + " triangles but " +
-                                  std::to_string(mesh.colours.size()) + " colours");
-    }
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      for (std::uint32_t index : mesh.triangles[t]) {
-        if (index >= mesh.positions.size()) {
-          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " +
-                                      std::to_string(t) + " uses vertex " + std::to_string(index) +
-                                      " of " + std::to_string(mesh.positions.size()));
-        }
-      }
-    }
-  }
-}
-
 std::uint32_t PackRgba(Rgb8 colour) {
   return std::bit_cast<std::uint32_t>(
       std::array<std::uint8_t, 4>{colour.r, colour.g, colour.b, 255});

@@ -15,12 +15,6 @@
 
 namespace twinraster::cpu {
 
-constexpr std::uint32_t kMaxFramebufferSize = 16384;  // lavapipe's maxViewportDimensions
-
-// Throws std::invalid_argument: size 0 or over the limit, mesh or vertex index out of range, a
-// triangle without colour.
-void ValidateDrawList(const DrawList& list);
-
 // Rgb8 as the RGBA8 bytes (r, g, b, 255) in memory, viewed as one 32-bit word.
 std::uint32_t PackRgba(Rgb8 colour);
 

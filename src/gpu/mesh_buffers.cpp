@@ -12,26 +12,13 @@ using IndexTriple = std::array<std::uint32_t, 3>;
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are uploaded as packed vec3");
 static_assert(sizeof(IndexTriple) == 3 * sizeof(std::uint32_t), "triangles as packed uint32s");
 
-// Checks the list and lays the meshes out one after another.
+// Checks the list (the renderers' common checks, then this device's limits) and lays the meshes
+// out one after another.
 MeshPlan PlanMeshes(const DrawList& list, const vk::PhysicalDeviceLimits& limits) {
+  ValidateDrawList(list);  // an index out of range would make the GPU read outside the buffer
   MeshPlan plan;
   for (std::size_t m = 0; m < list.meshes.size(); ++m) {
     const DrawMesh& mesh = list.meshes[m];
-    if (mesh.colours.size() != mesh.triangles.size()) {
-      throw std::invalid_argument("mesh " + std::to_string(m) + " has " +
-                                  std::to_string(mesh.triangles.size()) + " triangles but " +
-                                  std::to_string(mesh.colours.size()) + " colours");
-    }
-    for (const IndexTriple& triangle : mesh.triangles) {
-      for (std::uint32_t index : triangle) {
-        // Out of range, the GPU would read outside the buffer: undefined, possibly a crash.
-        if (index >= mesh.positions.size()) {
-          throw std::invalid_argument("mesh " + std::to_string(m) + " uses vertex " +
-                                      std::to_string(index) + " of " +
-                                      std::to_string(mesh.positions.size()));
-        }
-      }
-    }
     plan.ranges.push_back(MeshRange{
         .first_vertex = static_cast<std::int32_t>(plan.vertices),
         .first_index = static_cast<std::uint32_t>(plan.triangles * 3),
@@ -46,12 +33,6 @@ MeshPlan PlanMeshes(const DrawList& list, const vk::PhysicalDeviceLimits& limits
         plan.triangles * 3 > std::numeric_limits<std::uint32_t>::max() ||
         plan.triangles * sizeof(std::uint32_t) > limits.maxStorageBufferRange) {
       throw std::invalid_argument("the draw list's meshes are too large for one draw");
-    }
-  }
-  for (const DrawCall& draw : list.draws) {
-    if (draw.mesh >= list.meshes.size()) {
-      throw std::invalid_argument("a draw uses mesh " + std::to_string(draw.mesh) + " of " +
-                                  std::to_string(list.meshes.size()));
     }
   }
   return plan;

@@ -12,47 +12,19 @@ namespace twinraster {
 
 namespace {
 
-// lavapipe's maxViewportDimensions, the twin's limit too.
-constexpr std::uint32_t kMaxFramebufferSize = 16384;
-
-// The twin's checks (cpu::ValidateDrawList), plus that `clip` has one position per mesh vertex of
+// The renderers' checks (ValidateDrawList), plus that `clip` has one position per mesh vertex of
 // every draw.
 void ValidateInputs(const DrawList& list, const ExactClipPositions& clip) {
-  if (list.width == 0 || list.height == 0 || list.width > kMaxFramebufferSize ||
-      list.height > kMaxFramebufferSize) {
-    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" + std::to_string(list.height) +
-                                " is outside 1.." + std::to_string(kMaxFramebufferSize));
-  }
+  ValidateDrawList(list);
   if (clip.size() != list.draws.size()) {
     throw std::invalid_argument("clip positions for " + std::to_string(clip.size()) + " draws, but the list has " +
                                 std::to_string(list.draws.size()));
   }
   for (std::size_t d = 0; d < list.draws.size(); ++d) {
-    const std::uint32_t m = list.draws[d].mesh;
-    if (m >= list.meshes.size()) {
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(m) + " of " +
-                                  std::to_string(list.meshes.size()));
-    }
-    if (clip[d].size() != list.meshes[m].positions.size()) {
+    const std::size_t vertices = list.meshes[list.draws[d].mesh].positions.size();
+    if (clip[d].size() != vertices) {
       throw std::invalid_argument("draw " + std::to_string(d) + " has " + std::to_string(clip[d].size()) +
-                                  " clip positions for " + std::to_string(list.meshes[m].positions.size()) +
-                                  " vertices");
-    }
-  }
-  for (std::size_t m = 0; m < list.meshes.size(); ++m) {
-    const DrawMesh& mesh = list.meshes[m];
-    if (mesh.colours.size() < mesh.triangles.size()) {
-      throw std::invalid_argument("mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +
-                                  " triangles but " + std::to_string(mesh.colours.size()) + " colours");
-    }
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      for (std::uint32_t index : mesh.triangles[t]) {
-        if (index >= mesh.positions.size()) {
-          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " + std::to_string(t) +
-                                      " uses vertex " + std::to_string(index) + " of " +
-                                      std::to_string(mesh.positions.size()));
-        }
-      }
+                                  " clip positions for " + std::to_string(vertices) + " vertices");
     }
   }
 }
