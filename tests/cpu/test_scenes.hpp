@@ -1,6 +1,7 @@
 // Scenes for the CPU twin's whole-renderer tests: the chapter's cube and hand-made draw lists.
 #pragma once
 
+#include "support/chapter_cube.hpp"
 #include "draw_list.hpp"
 #include "matrices.hpp"
 #include "scene.hpp"
@@ -11,21 +12,6 @@
 #include <numbers>
 
 namespace twinraster::cputest {
-
-// The chapter's cube: 8 vertices, 12 triangles, six colours.
-inline Model ChapterCube() {
-  Model cube;
-  cube.name = "cube";
-  cube.vertices = {{1, 1, 1},  {-1, 1, 1},  {-1, -1, 1},  {1, -1, 1},
-                   {1, 1, -1}, {-1, 1, -1}, {-1, -1, -1}, {1, -1, -1}};
-  const Rgb8 red{255, 0, 0}, green{0, 255, 0}, blue{0, 0, 255}, yellow{255, 255, 0},
-      purple{255, 0, 255}, cyan{0, 255, 255};
-  cube.triangles = {{{0, 1, 2}, red},    {{0, 2, 3}, red},    {{4, 0, 3}, green},
-                    {{4, 3, 7}, green},  {{5, 4, 7}, blue},   {{5, 7, 6}, blue},
-                    {{1, 5, 6}, yellow}, {{1, 6, 2}, yellow}, {{4, 5, 1}, purple},
-                    {{4, 1, 0}, purple}, {{2, 6, 7}, cyan},   {{2, 7, 3}, cyan}};
-  return cube;
-}
 
 // The chapter's scene with cube instances at the given places (camera at the origin).
 struct Placed {
@@ -41,7 +27,7 @@ inline DrawList CubeScene(std::uint32_t width, std::uint32_t height,
   scene.canvas.width = width;
   scene.canvas.height = height;
   scene.depth.reversed = reversed_z;
-  scene.models.push_back(ChapterCube());
+  scene.models.push_back(test::ChapterCube());
   for (const Placed& p : cubes) {
     Instance instance;
     instance.model = 0;

@@ -2,6 +2,7 @@
 // pixels, so the expected image can be worked out by hand (or by the edge test below).
 #pragma once
 
+#include "support/chapter_cube.hpp"
 #include "draw_list.hpp"
 #include "image.hpp"
 
@@ -148,22 +149,6 @@ inline PixelCheck CheckPixels(const Image& image, Rgb8 background,
   return check;
 }
 
-// The chapter's cube model (vertices ±1, two triangles per face, one colour per face).
-inline Model ChapterCube() {
-  Model cube;
-  cube.name = "cube";
-  cube.vertices = {glm::dvec3(1, 1, 1),    glm::dvec3(-1, 1, 1), glm::dvec3(-1, -1, 1),
-                   glm::dvec3(1, -1, 1),   glm::dvec3(1, 1, -1), glm::dvec3(-1, 1, -1),
-                   glm::dvec3(-1, -1, -1), glm::dvec3(1, -1, -1)};
-  const Rgb8 red{255, 0, 0}, green{0, 255, 0}, blue{0, 0, 255}, yellow{255, 255, 0},
-      purple{255, 0, 255}, cyan{0, 255, 255};
-  cube.triangles = {{{0, 1, 2}, red},    {{0, 2, 3}, red},    {{4, 0, 3}, green},
-                    {{4, 3, 7}, green},  {{5, 4, 7}, blue},   {{5, 7, 6}, blue},
-                    {{1, 5, 6}, yellow}, {{1, 6, 2}, yellow}, {{4, 5, 1}, purple},
-                    {{4, 1, 0}, purple}, {{2, 6, 7}, cyan},   {{2, 7, 3}, cyan}};
-  return cube;
-}
-
 // The chapter's "instances" demo (figure 10-3): two cubes in front of the camera, on a
 // width x height canvas, through the host's own chain (BuildDrawList), optionally with reversed Z.
 inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height = 600,
@@ -172,7 +157,7 @@ inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height
   scene.canvas.width = width;
   scene.canvas.height = height;
   scene.depth.reversed = reversed_z;
-  scene.models = {ChapterCube()};
+  scene.models = {test::ChapterCube()};
   Instance left, right;
   left.transform.translation = glm::dvec3(-1.5, 0, 7);
   right.transform.translation = glm::dvec3(1.25, 2, 7.5);
