@@ -1,3 +1,5 @@
+// `twinraster bench`: runs the suite, prints the table and summary, and with --out writes
+// bench.csv, bench.svg, bench.json and bench.txt (all staged, so all or none are replaced).
 #include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
 #include "command_line.hpp"

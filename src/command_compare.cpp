@@ -1,3 +1,4 @@
+// `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image.
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "comparison_report.hpp"

@@ -1,3 +1,4 @@
+// `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON.
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "explain.hpp"

@@ -19,7 +19,7 @@ class CommandLine {
   std::optional<std::string> Option(const std::string& name) const;
   std::optional<std::size_t> Index(const std::string& name) const;  // a non-negative integer option
   const std::vector<std::string>& Positional() const { return positional_; }
-  // Exactly `count` positional arguments, named in the error message when missing.
+  // Exactly one positional argument per name; a missing one is named in the error message.
   void ExpectPositional(const std::vector<std::string>& names) const;
 
  private:

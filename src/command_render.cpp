@@ -1,3 +1,5 @@
+// `twinraster render SCENE`: draws the scene on lavapipe, on the CPU twin or both, writes the
+// PNGs (staged: all or none) and compares the two images.
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "comparison_report.hpp"

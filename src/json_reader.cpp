@@ -173,12 +173,8 @@ std::int64_t JsonReader::Integer(std::int64_t min, std::int64_t max) const {
   const std::string range = " in " + std::to_string(min) + ".." + std::to_string(max);
   if (!value_->is_number()) Fail("expected an integer" + range + ", found " + TypeName(*value_));
   const double x = value_->get<double>();
-  if (x != std::floor(x) || !std::isfinite(x)) {
-    std::ostringstream s;
-    s << "expected an integer" << range << ", found " << x;
-    Fail(s.str());
-  }
-  if (x < static_cast<double>(min) || x > static_cast<double>(max)) {
+  const bool integral = std::isfinite(x) && x == std::floor(x);
+  if (!integral || x < static_cast<double>(min) || x > static_cast<double>(max)) {
     std::ostringstream s;
     s << "expected an integer" << range << ", found " << x;
     Fail(s.str());

@@ -51,10 +51,11 @@ struct Model {
   std::vector<Triangle> triangles;
 };
 
-// A rotation as a 3x3 matrix in the chapter's convention (see matrices.hpp); the loader composes
-// a list of axis rotations into one matrix.
+// An instance's transform, applied scale first, then rotation, then translation (M_Model).
 struct Transform {
   glm::dvec3 scale{1, 1, 1};
+  // A 3x3 matrix in the chapter's convention (see matrices.hpp); the loader composes a list of
+  // axis rotations into one matrix.
   glm::dmat3 rotation{1.0};
   glm::dvec3 translation{0, 0, 0};
 };

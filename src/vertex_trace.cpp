@@ -19,9 +19,12 @@ VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4
   t.canvas = glm::dvec2(t.ndc.x * half_w, -t.ndc.y * half_h);
   t.framebuffer = glm::dvec3((t.ndc.x + 1.0) * half_w, (t.ndc.y + 1.0) * half_h, t.ndc.z);
 
-  const glm::dvec4& c = t.clip;
-  t.inside = -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w && 0 <= c.z && c.z <= c.w;
+  t.inside = InsideClipVolume(t.clip);
   return t;
+}
+
+bool InsideClipVolume(const glm::dvec4& c) {
+  return -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w && 0 <= c.z && c.z <= c.w;
 }
 
 glm::dvec3 ApplyTransform(glm::dvec3 vertex, const Transform& transform) {

@@ -22,6 +22,9 @@ struct VertexTrace {
   bool inside = false;     // inside the clip volume (-w <= x, y <= w, 0 <= z <= w)
 };
 
+// -w <= x, y <= w and 0 <= z <= w: the vertex is drawn where it is, not clipped away.
+bool InsideClipVolume(const glm::dvec4& clip);
+
 VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4& model_matrix,
                         glm::dvec3 vertex);
 

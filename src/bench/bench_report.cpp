@@ -1,5 +1,7 @@
 #include "bench/bench_report.hpp"
 
+#include "bench/vertex_methods.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -75,13 +77,12 @@ std::vector<unsigned> ThreadCounts(const BenchResult& result) {
   return counts;
 }
 
-const char* kMethods[] = {"compose-f64", "compose-f32", "steps-f32", "camera-relative"};
-
 }  // namespace
 
 nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
   nlohmann::ordered_json j;
-  for (const char* method : kMethods) {
+  for (VertexMethod m : kAllMethods) {
+    const std::string method(MethodName(m));
     if (const BenchRow* far = Find(result, "hard/far-1e7", method)) j["far_1e7_vertex_error_px"][method] = far->vertex_error_px;
   }
   for (const bool reversed : {false, true}) {
@@ -91,7 +92,8 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
   }
   if (const BenchRow* largest = Largest(result)) {
     j["vertex_ms_per_million_vertices"]["scene"] = largest->scene;
-    for (const char* method : kMethods) {
+    for (VertexMethod m : kAllMethods) {
+      const std::string method(MethodName(m));
       if (const BenchRow* r = Find(result, largest->scene, method))
         j["vertex_ms_per_million_vertices"][method] = r->vertex_ms * 1e6 / double(r->vertices);
     }
@@ -109,7 +111,8 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
 std::string BenchSummary(const BenchResult& result) {
   std::ostringstream out;
   out << "Vertex error at 1e7 units from the origin (hard/far-1e7, 1920x1080), max over vertices:\n";
-  for (const char* method : kMethods) {
+  for (VertexMethod m : kAllMethods) {
+    const std::string method(MethodName(m));
     if (const BenchRow* r = Find(result, "hard/far-1e7", method))
       out << "  " << method << ": " << Sci(r->vertex_error_px) << " px" << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
   }
@@ -121,7 +124,8 @@ std::string BenchSummary(const BenchResult& result) {
   }
   if (const BenchRow* largest = Largest(result)) {
     out << "Vertex stage, ms per million vertices (" << largest->scene << ", " << largest->vertices << " vertices):\n";
-    for (const char* method : kMethods) {
+    for (VertexMethod m : kAllMethods) {
+      const std::string method(MethodName(m));
       if (const BenchRow* r = Find(result, largest->scene, method))
         out << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
     }

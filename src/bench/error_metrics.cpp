@@ -1,16 +1,12 @@
 #include "bench/error_metrics.hpp"
 
+#include "vertex_trace.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 
 namespace twinraster {
-
-namespace {
-bool InsideClipVolume(const glm::dvec4& c) {
-  return -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w && 0 <= c.z && c.z <= c.w;
-}
-}  // namespace
 
 double VertexErrorPixels(const ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
                          std::uint32_t height) {

@@ -21,7 +21,7 @@ struct WindowTriangle {
   Rgb8 colour;
 };
 
-// Colour and a double depth buffer, cleared as the brief's depth modes say.
+// Colour and a double depth buffer, cleared for the list's depth mode (standard or reversed Z).
 struct TruthTarget {
   Image colour;
   std::vector<double> depth;

@@ -85,7 +85,7 @@ TEST_CASE("Catlike's rotations are this project's with the angles negated", "[ma
 }
 
 TEST_CASE("The demo camera turned -30° about Y looks toward +X", "[matrices]") {
-  // chapter-scenes.md: forward axis in world space (0.5, 0, 0.866).
+  // The chapter demo's camera (shared/reference/chapter-scenes.md): forward is (0.5, 0, 0.866).
   const glm::dvec3 forward = Load("cgfs-transforms").camera.rotation * glm::dvec3(0, 0, 1);
   REQUIRE(forward.x == Approx(0.5).margin(kTolerance));
   REQUIRE(forward.y == Approx(0).margin(kTolerance));
