@@ -20,6 +20,11 @@ int CompareCommand(const std::vector<std::string>& args) {
   const std::optional<std::string> diff = cl.Option("--diff");
   const bool wrote_diff = diff && comparison.same_size && !comparison.Equal();
   if (wrote_diff) WritePng(*diff, DiffImage(a, b));
+  // A diff left by an earlier run would now describe images that no longer differ.
+  std::error_code ignored;
+  if (diff && comparison.Equal() && std::filesystem::is_regular_file(*diff, ignored)) {
+    std::filesystem::remove(*diff, ignored);
+  }
 
   if (cl.Flag("--json")) {
     nlohmann::ordered_json out = ComparisonJson(a, b, comparison);

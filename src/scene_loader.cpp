@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -147,6 +148,10 @@ Camera ReadCamera(const JsonReader& r) {
   if (up_reader) up = up_reader->Vec3();
   const glm::dvec3 view = center - eye;
   if (glm::length(view) == 0) center_reader.Fail("center equals eye: the camera has no view direction");
+  // Closer than this (relative to where they are), the direction is mostly rounding noise.
+  if (glm::length(view) < 1e-9 * std::max(1.0, glm::length(eye))) {
+    center_reader.Fail("center is too close to eye (under 1e-9) to give a view direction");
+  }
   if (glm::length(up) == 0) up_reader->Fail("up must not be the zero vector");
   // Parallel when the sine of the angle between up and the view direction vanishes. The bound is
   // tiny on purpose: 1e-7 away from parallel is a legitimate (hard) case, exact parallel is not.

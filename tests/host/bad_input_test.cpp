@@ -59,6 +59,7 @@ std::vector<BadCase> Cases() {
       {"far not beyond near", With("/depth", {{"near", 5}, {"far", 5}}), "depth", "far (5) must be greater than near (5)"},
       {"up parallel to the view direction", LookAt({0, 0, 0}, {0, 0, 5}, {0, 0, 2}), "camera.up", "up is parallel to the view direction"},
       {"eye equals center", LookAt({1, 2, 3}, {1, 2, 3}, {0, 1, 0}), "camera.center", "center equals eye"},
+      {"center a hair from eye", LookAt({1, 2, 3}, {1, 2, 3 + 1e-12}, {0, 1, 0}), "camera.center", "too close to eye"},
       {"both camera styles", With("/camera/eye", {0, 0, 0}), "camera", "use either position + rotation"},
       {"bad rotation axis", With("/camera/rotation/axis", "w"), "camera.rotation.axis", "unknown axis \"w\""},
       {"zero rotation axis", With("/camera/rotation/axis", {0, 0, 0}), "camera.rotation.axis", "zero vector"},
