@@ -9,12 +9,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
 
 namespace twinraster {
 
 int BenchCommand(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--json"}, {"--out", "--runs", "--only", "--scenes"});
+  const CommandLine cl(args, {"--json"}, {"--out", "--runs", "--only", "--scenes", "--methods"});
   cl.ExpectPositional({});
   BenchOptions options;
   if (auto runs = cl.Index("--runs")) {
@@ -22,6 +23,21 @@ int BenchCommand(const std::vector<std::string>& args) {
     options.runs = static_cast<int>(*runs);
   }
   options.only = cl.Option("--only");
+  if (auto methods = cl.Option("--methods")) {
+    const std::vector<std::string> known = BenchMethodNames();
+    std::string rest = *methods;
+    while (!rest.empty()) {
+      const std::size_t comma = rest.find(',');
+      const std::string name = rest.substr(0, comma);
+      rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+      if (std::find(known.begin(), known.end(), name) == known.end()) {
+        std::string all;
+        for (const std::string& k : known) all += (all.empty() ? "" : ", ") + k;
+        throw UsageError("--methods: unknown method \"" + name + "\"; known: " + all);
+      }
+      options.methods.push_back(name);
+    }
+  }
   if (auto scenes = cl.Option("--scenes")) options.scenes_dir = *scenes;
   if (!std::filesystem::is_directory(options.scenes_dir)) {
     throw UsageError("no scene directory " + options.scenes_dir.string() + " (run from the repository root, or pass --scenes DIR)");

@@ -25,7 +25,7 @@ constexpr const char* kUsage =
     "      the scene's name in the current directory)\n"
     "  twinraster compare A.png B.png [--diff D.png] [--json]\n"
     "      count the pixels that differ between two images\n"
-    "  twinraster bench [--out DIR] [--runs N] [--only TEXT] [--scenes DIR] [--json]\n"
+    "  twinraster bench [--out DIR] [--runs N] [--only TEXT] [--methods A,B] [--scenes DIR] [--json]\n"
     "      time every way of computing the chain and both renderers on the scene suite, against the\n"
     "      double-precision ground truth; with --out, also write bench.csv, .svg, .json, .txt\n"
     "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device,\n"

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <string_view>
 #include <thread>
 
 namespace twinraster {
@@ -90,15 +91,31 @@ std::string MachineDescription(const std::string& device) {
 
 }  // namespace
 
+std::vector<std::string> BenchMethodNames() {
+  std::vector<std::string> names;
+  for (VertexMethod m : kAllMethods) names.emplace_back(MethodName(m));
+  names.emplace_back("cpu-twin");
+  names.emplace_back("lavapipe");
+  return names;
+}
+
 BenchResult RunBench(const BenchOptions& options) {
   Stopwatch total;
   BenchResult result;
   result.runs = options.runs;
+  const auto selected = [&](std::string_view name) {
+    return options.methods.empty() ||
+           std::find(options.methods.begin(), options.methods.end(), name) != options.methods.end();
+  };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::pair<unsigned, GpuRenderer>> lavapipes;
-  lavapipes.emplace_back(1, LavapipeWithThreads(1));
-  if (cores > 1) lavapipes.emplace_back(cores, LavapipeWithThreads(cores));
-  result.machine = MachineDescription(lavapipes.front().second.DeviceName());
+  // lavapipe is created only when its rows are asked for, so the rest runs without Vulkan.
+  std::vector<std::pair<unsigned, std::optional<GpuRenderer>>> lavapipes;
+  for (unsigned threads : {1u, cores}) {
+    if (!lavapipes.empty() && threads == lavapipes.front().first) break;
+    lavapipes.emplace_back(threads, std::nullopt);
+    if (selected("lavapipe")) lavapipes.back().second.emplace(LavapipeWithThreads(threads));
+  }
+  result.machine = MachineDescription(lavapipes.front().second ? lavapipes.front().second->DeviceName() : "not used");
 
   const std::vector<std::filesystem::path> files = SuiteScenes(options);
   if (files.empty()) throw UsageError("no scene in " + options.scenes_dir.string() + (options.only ? " matches --only " + *options.only : ""));
@@ -118,6 +135,7 @@ BenchResult RunBench(const BenchOptions& options) {
 
     // Each method: its vertex stage alone, then a whole frame on the CPU twin's rasterizer.
     for (VertexMethod method : kAllMethods) {
+      if (!selected(MethodName(method))) continue;
       BenchRow row = base;
       row.method = std::string(MethodName(method));
       row.threads = cores;
@@ -136,13 +154,14 @@ BenchResult RunBench(const BenchOptions& options) {
     // The two renderers as a user runs them, with one thread and with every core, back to back.
     for (auto& [threads, lavapipe] : lavapipes) {
       for (const char* renderer : {"cpu-twin", "lavapipe"}) {
+        if (!selected(renderer)) continue;
         BenchRow row = base;
         row.method = renderer;
         row.threads = threads;
         Image image;
         const bool twin = row.method == "cpu-twin";
         row.frame_ms = MedianMs(options.runs, [&] {
-          image = twin ? RenderOnCpu(list, CpuOptions{threads}) : lavapipe.Render(list);
+          image = twin ? RenderOnCpu(list, CpuOptions{threads}) : lavapipe->Render(list);
         });
         row.image_error_px = CompareImages(image, truth).differing_pixels;
         row.z_fighting_px = ZFighting(file, image, truth);

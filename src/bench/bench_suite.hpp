@@ -13,6 +13,8 @@ struct BenchOptions {
   std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
   int runs = 15;                                // timings are medians over this many runs
   std::optional<std::string> only;              // only scenes whose name contains this
+  // Which rows to run: the vertex methods' names and "cpu-twin", "lavapipe"; empty means all.
+  std::vector<std::string> methods;
 };
 
 struct BenchRow {
@@ -34,6 +36,9 @@ struct BenchResult {
   int runs = 0;
   double seconds = 0;
 };
+
+// Every name --methods accepts, in the order rows appear.
+std::vector<std::string> BenchMethodNames();
 
 BenchResult RunBench(const BenchOptions& options);
 

@@ -37,3 +37,21 @@ TEST_CASE("bench rejects bad options with exit code 2", "[bench][cli]") {
   REQUIRE(test::RunCli({"bench", "--scenes", "/nonexistent"}).exit_code == 2);
   REQUIRE(test::RunCli({"bench", "extra"}).exit_code == 2);
 }
+
+TEST_CASE("bench --methods runs only the named code paths, and without Vulkan when lavapipe is not one", "[bench][cli]") {
+  const test::CliResult r =
+      test::RunCli({"bench", "--runs", "1", "--only", "far-1e3", "--methods", "steps-f32,cpu-twin", "--scenes",
+                    test::SourcePath("scenes").string(), "--json"},
+                   {"VK_ICD_FILENAMES=/nonexistent/icd.json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
+  // steps-f32, then the twin with one thread and (on a machine with more) with every core.
+  REQUIRE(rows.size() >= 2);
+  REQUIRE(rows.size() <= 3);
+  REQUIRE(rows[0]["method"] == "steps-f32");
+  for (std::size_t i = 1; i < rows.size(); ++i) REQUIRE(rows[i]["method"] == "cpu-twin");
+  const test::CliResult bad = test::RunCli({"bench", "--methods", "compose-f16"});
+  REQUIRE(bad.exit_code == 2);
+  REQUIRE(bad.err.find("unknown method \"compose-f16\"") != std::string::npos);
+}
