@@ -5,6 +5,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset release >/dev/null
-cmake --build --preset release
+cmake --build --preset release --target twinraster
 mkdir -p out
 ./build/src/twinraster render scenes/cgfs-transforms.json -o out/cgfs-transforms.png "$@"
