@@ -54,6 +54,39 @@ Selection Select(const Scene& scene, const ExplainOptions& options) {
   return selection;
 }
 
+// Everything both formats print: the chain, and per selected instance its matrices and traces.
+struct InstanceExplanation {
+  std::size_t index = 0;
+  const Model* model = nullptr;
+  const Transform* transform = nullptr;
+  glm::dmat4 model_matrix{1.0};  // M_Model
+  glm::dmat4 f{1.0};             // F = M_Projection · M_Camera · M_Model
+  std::vector<std::pair<std::size_t, VertexTrace>> vertices;
+};
+
+struct Explanation {
+  Chain chain;
+  std::vector<InstanceExplanation> instances;
+};
+
+Explanation Explain(const Scene& scene, const ExplainOptions& options) {
+  const Selection selection = Select(scene, options);
+  Explanation e{SceneChain(scene), {}};
+  for (std::size_t i : selection.instances) {
+    InstanceExplanation x;
+    x.index = i;
+    x.model = &scene.models[scene.instances[i].model];
+    x.transform = &scene.instances[i].transform;
+    x.model_matrix = ModelMatrix(*x.transform);
+    x.f = e.chain.projection * e.chain.camera * x.model_matrix;
+    for (std::size_t v : selection.Vertices(*x.model)) {
+      x.vertices.emplace_back(v, TraceVertex(scene, e.chain, x.model_matrix, x.model->vertices[v]));
+    }
+    e.instances.push_back(std::move(x));
+  }
+  return e;
+}
+
 nlohmann::ordered_json Rows(const glm::dmat4& m) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
@@ -98,8 +131,8 @@ void PrintMatrix(std::ostream& out, const std::string& name, const glm::dmat4& m
 }  // namespace
 
 std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
-  const Selection selection = Select(scene, options);
-  const Chain chain = SceneChain(scene);
+  const Explanation e = Explain(scene, options);
+  const Chain& chain = e.chain;
   const Canvas& cv = scene.canvas;
   const Viewport& vp = scene.viewport;
   std::ostringstream out;
@@ -107,7 +140,7 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   out << "Scene \"" << scene.name << "\": canvas Cw x Ch = " << cv.width << " x " << cv.height
       << " px, viewport Vw x Vh = " << Num(vp.width) << " x " << Num(vp.height)
       << " at distance d = " << Num(vp.distance) << ", depth near = " << Num(scene.depth.near)
-      << ", far = " << Num(scene.depth.far) << "\n"
+      << ", far = " << Num(scene.depth.far) << (scene.depth.reversed ? " (reversed Z: near -> 1, far -> 0)" : "") << "\n"
       << "Column vectors on the right: V' = F · V, F = M_Projection · M_Camera · M_Model.\n\n";
 
   out << "M_Projection = CanvasToClip · ViewportToCanvas · P\n";
@@ -121,22 +154,16 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   PrintMatrix(out, "C_T⁻¹", Translation(-scene.camera.position));
   PrintMatrix(out, "M_Camera", chain.camera);
 
-  for (std::size_t i : selection.instances) {
-    const Instance& instance = scene.instances[i];
-    const Model& model = scene.models[instance.model];
-    const Transform& t = instance.transform;
-    const glm::dmat4 model_matrix = ModelMatrix(t);
-    const glm::dmat4 f = chain.projection * chain.camera * model_matrix;
-
-    out << "\nInstance " << i << " (model \"" << model.name << "\"): M_Model = I_T · I_R · I_S\n";
+  for (const InstanceExplanation& x : e.instances) {
+    const Transform& t = *x.transform;
+    out << "\nInstance " << x.index << " (model \"" << x.model->name << "\"): M_Model = I_T · I_R · I_S\n";
     PrintMatrix(out, "I_S", Scale(t.scale));
     PrintMatrix(out, "I_R", Rotation4(t.rotation));
     PrintMatrix(out, "I_T", Translation(t.translation));
-    PrintMatrix(out, "M_Model", model_matrix);
-    PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", f);
+    PrintMatrix(out, "M_Model", x.model_matrix);
+    PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", x.f);
 
-    for (std::size_t v : selection.Vertices(model)) {
-      const VertexTrace tr = TraceVertex(scene, chain, model_matrix, model.vertices[v]);
+    for (const auto& [v, tr] : x.vertices) {
       out << "  vertex " << v << (tr.inside ? "" : "  (outside the clip volume: clipped when drawn)") << "\n"
           << "    object       " << Tuple(tr.object) << "\n"
           << "    world        " << Tuple(tr.world) << "   = M_Model · V\n"
@@ -152,32 +179,28 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
 }
 
 nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options) {
-  const Selection selection = Select(scene, options);
-  const Chain chain = SceneChain(scene);
+  const Explanation e = Explain(scene, options);
+  const Chain& chain = e.chain;
   nlohmann::ordered_json out;
   out["scene"] = scene.name;
   out["canvas"] = {{"width", scene.canvas.width}, {"height", scene.canvas.height}};
   out["viewport"] = {{"width", scene.viewport.width}, {"height", scene.viewport.height},
                      {"distance", scene.viewport.distance}};
-  out["depth"] = {{"near", scene.depth.near}, {"far", scene.depth.far}};
+  out["depth"] = {{"near", scene.depth.near}, {"far", scene.depth.far}, {"reversed", scene.depth.reversed}};
   out["perspective_matrix"] = Rows(PerspectiveMatrix(scene.viewport, scene.depth));
   out["viewport_to_canvas"] = Rows(ViewportToCanvas(scene.viewport, scene.canvas));
   out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
   out["projection_matrix"] = Rows(chain.projection);
   out["camera_matrix"] = Rows(chain.camera);
   out["instances"] = nlohmann::ordered_json::array();
-  for (std::size_t i : selection.instances) {
-    const Instance& instance = scene.instances[i];
-    const Model& model = scene.models[instance.model];
-    const glm::dmat4 model_matrix = ModelMatrix(instance.transform);
+  for (const InstanceExplanation& x : e.instances) {
     nlohmann::ordered_json entry;
-    entry["index"] = i;
-    entry["model"] = model.name;
-    entry["model_matrix"] = Rows(model_matrix);
-    entry["mvp"] = Rows(chain.projection * chain.camera * model_matrix);
+    entry["index"] = x.index;
+    entry["model"] = x.model->name;
+    entry["model_matrix"] = Rows(x.model_matrix);
+    entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
     entry["vertices"] = nlohmann::ordered_json::array();
-    for (std::size_t v : selection.Vertices(model)) {
-      const VertexTrace tr = TraceVertex(scene, chain, model_matrix, model.vertices[v]);
+    for (const auto& [v, tr] : x.vertices) {
       entry["vertices"].push_back({{"index", v},
                                    {"object", Array(tr.object)},
                                    {"world", Array(tr.world)},
