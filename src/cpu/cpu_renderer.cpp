@@ -4,9 +4,9 @@
 #include "cpu/geometry.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
+#include "stopwatch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -14,11 +14,6 @@
 namespace twinraster {
 
 namespace {
-
-double MillisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 // The pipeline after validation; `clip` replaces the vertex stage when given.
 Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options,
@@ -29,15 +24,14 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
 
   // Setup: vertex stage, clipping, viewport transform, triangle setup.
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch clock;
   // Kept per thread from one render to the next (see GeometryScratch), up to 64 MiB.
   thread_local GeometryScratch scratch;
   ProcessGeometry(list, threads, scratch, clip);
   const TriangleChunks& triangles = scratch.triangles;
-  const double setup_ms = MillisecondsSince(start);
+  const double setup_ms = clock.Lap();
 
   // Draw: every part clears its own bands and rasterizes all triangles, in order, over them.
-  start = std::chrono::steady_clock::now();
   Framebuffer fb(list.width, list.height,
                  list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
   const std::uint32_t background = PackRgba(list.background);
@@ -49,12 +43,11 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
           ShadeSpan(fb, py, span, t.depth, t.colour);
         });
   });
-  const double draw_ms = MillisecondsSince(start);
+  const double draw_ms = clock.Lap();
 
   // Readback: the colour attachment already is the Image.
-  start = std::chrono::steady_clock::now();
   Image image = std::move(fb.colour);
-  const double readback_ms = MillisecondsSince(start);
+  const double readback_ms = clock.Lap();
 
   if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
   if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms, threads};

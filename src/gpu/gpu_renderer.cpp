@@ -4,20 +4,16 @@
 #include "gpu/offscreen_target.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/vulkan_context.hpp"
+#include "stopwatch.hpp"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstring>
 #include <limits>
 #include <string>
 
 namespace twinraster {
 namespace {
-
-double Milliseconds(std::chrono::steady_clock::duration duration) {
-  return std::chrono::duration<double, std::milli>(duration).count();
-}
 
 void CheckSize(std::uint32_t width, std::uint32_t height, const vk::PhysicalDeviceLimits& limits) {
   const std::uint32_t max_width = std::min(
@@ -92,8 +88,7 @@ GpuRenderer::Impl::Impl(const GpuOptions& options) : context(options), pipeline(
 }
 
 Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
+  Stopwatch clock;
 
   // Setup. Check and upload first: a malformed list then throws before anything is touched.
   CheckSize(list.width, list.height, context.limits());
@@ -116,7 +111,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
       },
       nullptr);
   Record(list, meshes);
-  const Clock::time_point recorded = Clock::now();
+  const double setup_ms = clock.Lap();
 
   // Draw: run the commands and wait for them.
   context.device().resetFences(*done);
@@ -127,17 +122,15 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
       vk::Result::eSuccess) {
     throw std::runtime_error("the Vulkan device did not finish the frame");
   }
-  const Clock::time_point drawn = Clock::now();
+  const double draw_ms = clock.Lap();
 
   // The readback buffer holds tightly packed RGBA rows, top row first: exactly Image's layout.
   Image image(list.width, list.height);
   std::memcpy(image.rgba.data(), target->readback().data(), image.rgba.size());
-  const Clock::time_point read = Clock::now();
+  const double readback_ms = clock.Lap();
 
   if (timings != nullptr) {
-    *timings = GpuTimings{.setup_ms = Milliseconds(recorded - start),
-                          .draw_ms = Milliseconds(drawn - recorded),
-                          .readback_ms = Milliseconds(read - drawn)};
+    *timings = GpuTimings{.setup_ms = setup_ms, .draw_ms = draw_ms, .readback_ms = readback_ms};
   }
   return image;
 }
