@@ -1,8 +1,26 @@
 #!/usr/bin/env bash
 # Sets up, builds, and runs the whole test suite (CTest + Catch2). Warnings are errors.
+# Fails if any CTest entry runs no test case (a CTest test checks that) or if the tests leave a
+# file in the source tree outside build/ and out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset release -DTWINRASTER_WERROR=ON >/dev/null
 cmake --build --preset release
+
+in_git=false
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then in_git=true; fi
+untracked() { git status --porcelain --ignored --untracked-files=all | grep -vE '^(\?\?|!!) "?(build[^/]*|out)/' || true; }
+if $in_git; then before=$(untracked); fi
+
 ctest --preset release
+
+if $in_git; then
+  after=$(untracked)
+  new=$(comm -13 <(printf '%s\n' "$before" | sort) <(printf '%s\n' "$after" | sort))
+  if [ -n "$new" ]; then
+    echo "test.sh: the tests left files in the source tree:" >&2
+    printf '%s\n' "$new" >&2
+    exit 1
+  fi
+fi

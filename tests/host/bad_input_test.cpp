@@ -74,7 +74,7 @@ std::vector<BadCase> Cases() {
 
 }  // namespace
 
-TEST_CASE("Bad scene files: one message naming file, place and problem; exit code 2", "[bad-input]") {
+TEST_CASE("Bad scene files: one message naming file, place and problem, exit code 2", "[bad-input]") {
   const test::TempDir dir;
   for (const BadCase& c : Cases()) {
     INFO(c.what);

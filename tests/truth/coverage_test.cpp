@@ -97,7 +97,7 @@ TEST_CASE("Truth coverage: a tiled region covers each centre exactly once", "[tr
     }
 }
 
-TEST_CASE("Truth coverage: zero area draws nothing; coverage stops at the framebuffer", "[truth][coverage]") {
+TEST_CASE("Truth coverage: zero area draws nothing, and coverage stops at the framebuffer", "[truth][coverage]") {
   // Collinear through centres, exactly.
   CHECK(CoveredBy(8, 8, Window(8, {0.5, 0.5}, {3.5, 3.5}, {6.5, 6.5})).empty());
   CHECK(CoveredBy(8, 8, Window(8, {2.5, 1.5}, {2.5, 1.5}, {5.5, 6.5})).empty());

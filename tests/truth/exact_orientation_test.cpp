@@ -41,7 +41,7 @@ TEST_CASE("Edge function: exact sign near a line where plain double arithmetic f
   CHECK(plain_wrong > 0);  // the case really needs exact arithmetic
 }
 
-TEST_CASE("Edge function: fast path and exact path agree; reversing the edge negates", "[truth][exact]") {
+TEST_CASE("Edge function: fast path and exact path agree, and reversing the edge negates", "[truth][exact]") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> coord(0.0, 600.0), tiny(-1e-12, 1e-12);
   for (int n = 0; n < 20000; ++n) {

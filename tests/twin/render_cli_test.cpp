@@ -100,7 +100,7 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(bad.err.find("not.png") != std::string::npos);
 }
 
-TEST_CASE("-o must name a file; an output that is a directory fails before anything is replaced", "[cli][render]") {
+TEST_CASE("render -o must name a file, and an output that is a directory fails before anything is replaced", "[cli][render]") {
   const test::TempDir dir;
   REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string(), "--backend", "cpu"}).exit_code == 2);
   REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string() + "/", "--backend", "cpu"}).exit_code == 2);
