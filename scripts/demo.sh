@@ -7,4 +7,4 @@ bash scripts/setup.sh
 cmake --preset release >/dev/null
 cmake --build --preset release --target twinraster
 mkdir -p out
-./build/src/twinraster render scenes/cgfs-transforms.json -o out/cgfs-transforms.png "$@"
+./build/bin/twinraster render scenes/cgfs-transforms.json -o out/cgfs-transforms.png "$@"

@@ -3,13 +3,13 @@
 #include "bench/error_metrics.hpp"
 #include "bench/vertex_methods.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "draw_list.hpp"
+#include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "image_compare.hpp"
-#include "scene_loader.hpp"
-#include "stopwatch.hpp"
+#include "image/image_compare.hpp"
+#include "scene/scene_loader.hpp"
+#include "base/stopwatch.hpp"
 #include "truth/truth_renderer.hpp"
-#include "usage_error.hpp"
+#include "base/usage_error.hpp"
 
 #include <algorithm>
 #include <cstdlib>

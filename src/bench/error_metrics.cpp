@@ -1,6 +1,6 @@
 #include "bench/error_metrics.hpp"
 
-#include "vertex_trace.hpp"
+#include "chain/vertex_trace.hpp"
 
 #include <glm/geometric.hpp>
 

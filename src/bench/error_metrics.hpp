@@ -3,7 +3,7 @@
 #pragma once
 
 #include "bench/vertex_methods.hpp"
-#include "image.hpp"
+#include "image/image.hpp"
 #include "truth/truth_renderer.hpp"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "bench/vertex_methods.hpp"
 
 #include "cpu/vertex_stage.hpp"
-#include "matrices.hpp"
+#include "chain/matrices.hpp"
 
 #include <glm/matrix.hpp>
 

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "cpu/cpu_renderer.hpp"  // ClipPositions
-#include "draw_list.hpp"
-#include "scene.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/vec4.hpp>
 

@@ -4,7 +4,7 @@
 // silhouette is covered once by a triangle of each winding.
 #pragma once
 
-#include "draw_list.hpp"
+#include "chain/draw_list.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #include "cpu/geometry.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
-#include "stopwatch.hpp"
+#include "base/stopwatch.hpp"
 
 #include <algorithm>
 #include <stdexcept>

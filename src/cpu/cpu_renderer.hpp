@@ -2,8 +2,8 @@
 // image equals the Vulkan/lavapipe image bit for bit.
 #pragma once
 
-#include "draw_list.hpp"
-#include "image.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image.hpp"
 
 #include <glm/vec4.hpp>
 

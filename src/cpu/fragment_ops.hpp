@@ -6,7 +6,7 @@
 
 #include "cpu/depth_plane.hpp"
 #include "cpu/rasterize.hpp"
-#include "image.hpp"
+#include "image/image.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -7,7 +7,7 @@
 #include "cpu/clipping.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "cpu/viewport_transform.hpp"
-#include "draw_list.hpp"
+#include "chain/draw_list.hpp"
 
 #include <array>
 #include <cstdint>

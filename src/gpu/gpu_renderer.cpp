@@ -4,7 +4,7 @@
 #include "gpu/offscreen_target.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/vulkan_context.hpp"
-#include "stopwatch.hpp"
+#include "base/stopwatch.hpp"
 
 #include <algorithm>
 #include <array>

@@ -2,8 +2,8 @@
 // pixels back.
 #pragma once
 
-#include "draw_list.hpp"
-#include "image.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image.hpp"
 
 #include <memory>
 #include <stdexcept>

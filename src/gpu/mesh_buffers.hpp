@@ -2,7 +2,7 @@
 // triangle colours in a storage buffer, and where each mesh starts in them.
 #pragma once
 
-#include "draw_list.hpp"
+#include "chain/draw_list.hpp"
 #include "gpu/host_buffer.hpp"
 #include "gpu/vulkan_context.hpp"
 

@@ -3,8 +3,8 @@
 // fragment operations (depth test, depth write, flat colour write).
 #pragma once
 
-#include "image.hpp"
-#include "scene.hpp"
+#include "image/image.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

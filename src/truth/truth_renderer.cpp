@@ -1,6 +1,6 @@
 #include "truth/truth_renderer.hpp"
 
-#include "matrices.hpp"
+#include "chain/matrices.hpp"
 #include "truth/truth_clipping.hpp"
 #include "truth/truth_raster.hpp"
 

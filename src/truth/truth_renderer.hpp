@@ -2,9 +2,9 @@
 // with no float rounding and no subpixel snapping, the reference that defines "error".
 #pragma once
 
-#include "draw_list.hpp"
-#include "image.hpp"
-#include "scene.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -1,9 +1,9 @@
 // The hard scenes against the double-precision ground truth: where depth precision runs out, and
 // how far the bit-exact twin (and so lavapipe) may stray from the truth on each, with the reason.
 #include "cpu/cpu_renderer.hpp"
-#include "draw_list.hpp"
-#include "image_compare.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image_compare.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
 

@@ -3,8 +3,8 @@
 #include "bench/error_metrics.hpp"
 #include "bench/vertex_methods.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "draw_list.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
 

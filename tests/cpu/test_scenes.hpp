@@ -2,9 +2,9 @@
 #pragma once
 
 #include "support/chapter_cube.hpp"
-#include "draw_list.hpp"
-#include "matrices.hpp"
-#include "scene.hpp"
+#include "chain/draw_list.hpp"
+#include "chain/matrices.hpp"
+#include "scene/scene.hpp"
 
 #include <cmath>
 #include <cstdint>

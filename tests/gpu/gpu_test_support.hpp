@@ -3,8 +3,8 @@
 #pragma once
 
 #include "support/chapter_cube.hpp"
-#include "draw_list.hpp"
-#include "image.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

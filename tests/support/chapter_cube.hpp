@@ -2,7 +2,7 @@
 // that build scenes in code rather than loading scenes/*.json.
 #pragma once
 
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
 namespace twinraster::test {
 

@@ -1,6 +1,6 @@
 // ExactFramebuffer and ExactClipSpace against hand-computed values.
-#include "draw_list.hpp"
-#include "matrices.hpp"
+#include "chain/draw_list.hpp"
+#include "chain/matrices.hpp"
 #include "truth/truth_renderer.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,8 @@
 // positions the viewport transform maps back exactly) and the pixels they cover.
 #pragma once
 
-#include "draw_list.hpp"
-#include "image.hpp"
+#include "chain/draw_list.hpp"
+#include "image/image.hpp"
 #include "truth/truth_renderer.hpp"
 
 #include <glm/vec4.hpp>

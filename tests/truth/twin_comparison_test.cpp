@@ -3,8 +3,8 @@
 // that close to an edge may differ. (The harder scenes under scenes/ differ on purpose, e.g. float
 // depth fighting, and are the benchmark's business, not this guard's.)
 #include "cpu/cpu_renderer.hpp"
-#include "draw_list.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
 

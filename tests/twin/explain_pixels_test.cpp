@@ -1,7 +1,7 @@
 // explain's framebuffer coordinates are where the renderers really draw: the pixel under the
 // centroid of a visible triangle, traced by `explain --json`, has that triangle's colour.
-#include "draw_list.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 

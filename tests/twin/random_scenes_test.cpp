@@ -1,8 +1,8 @@
 // The property at the heart of the project: for hundreds of random scenes from fixed seeds, the
 // CPU twin's image equals lavapipe's, 0 differing pixels. A failing scene is written out so it can
 // be replayed with `twinraster render`.
-#include "draw_list.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 #include "random_scene.hpp"

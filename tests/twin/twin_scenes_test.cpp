@@ -1,6 +1,6 @@
 // Every shipped scene renders identically on lavapipe and on the CPU twin: 0 differing pixels.
-#include "draw_list.hpp"
-#include "scene_loader.hpp"
+#include "chain/draw_list.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 

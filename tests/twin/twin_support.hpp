@@ -2,10 +2,10 @@
 // check that renders a draw list on both backends and explains any difference.
 #pragma once
 
-#include "draw_list.hpp"
+#include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "image.hpp"
-#include "image_compare.hpp"
+#include "image/image.hpp"
+#include "image/image_compare.hpp"
 
 #include <string>
 

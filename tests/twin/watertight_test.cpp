@@ -2,8 +2,8 @@
 // Each triangle is drawn alone and the covered pixels are counted, so a pixel claimed by two
 // neighbours (or by none) shows up as a count of 2 (or 0).
 #include "cpu/cpu_renderer.hpp"
-#include "draw_list.hpp"
-#include "matrices.hpp"
+#include "chain/draw_list.hpp"
+#include "chain/matrices.hpp"
 #include "twin_support.hpp"
 
 #include <catch2/catch.hpp>

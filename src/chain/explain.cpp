@@ -1,0 +1,219 @@
+#include "chain/explain.hpp"
+
+#include "chain/matrices.hpp"
+#include "base/usage_error.hpp"
+#include "chain/vertex_trace.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/mat4x4.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace twinraster {
+
+namespace {
+
+// The instances and vertex indices the options select, checked.
+struct Selection {
+  std::vector<std::size_t> instances;
+  std::vector<std::size_t> Vertices(const Model& model) const {
+    if (vertex) return {*vertex};
+    std::vector<std::size_t> all(model.vertices.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    return all;
+  }
+  std::optional<std::size_t> vertex;
+};
+
+Selection Select(const Scene& scene, const ExplainOptions& options) {
+  Selection selection;
+  if (options.instance) {
+    if (*options.instance >= scene.instances.size()) {
+      throw UsageError("--instance " + std::to_string(*options.instance) + ": the scene has " +
+                       std::to_string(scene.instances.size()) + " instance(s)");
+    }
+    selection.instances = {*options.instance};
+  } else {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) selection.instances.push_back(i);
+  }
+  if (options.vertex) {
+    for (std::size_t i : selection.instances) {
+      const Model& model = scene.models[scene.instances[i].model];
+      if (*options.vertex >= model.vertices.size()) {
+        throw UsageError("--vertex " + std::to_string(*options.vertex) + ": instance " + std::to_string(i) +
+                         " (model \"" + model.name + "\") has " + std::to_string(model.vertices.size()) +
+                         " vertices");
+      }
+    }
+    selection.vertex = options.vertex;
+  }
+  return selection;
+}
+
+// Everything both formats print: the chain, and per selected instance its matrices and traces.
+struct InstanceExplanation {
+  std::size_t index = 0;
+  const Model* model = nullptr;
+  const Transform* transform = nullptr;
+  glm::dmat4 model_matrix{1.0};  // M_Model
+  glm::dmat4 f{1.0};             // F = M_Projection · M_Camera · M_Model
+  std::vector<std::pair<std::size_t, VertexTrace>> vertices;
+};
+
+struct Explanation {
+  Chain chain;
+  std::vector<InstanceExplanation> instances;
+};
+
+Explanation Explain(const Scene& scene, const ExplainOptions& options) {
+  const Selection selection = Select(scene, options);
+  Explanation e{SceneChain(scene), {}};
+  for (std::size_t i : selection.instances) {
+    InstanceExplanation x;
+    x.index = i;
+    x.model = &scene.models[scene.instances[i].model];
+    x.transform = &scene.instances[i].transform;
+    x.model_matrix = ModelMatrix(*x.transform);
+    x.f = e.chain.projection * e.chain.camera * x.model_matrix;
+    for (std::size_t v : selection.Vertices(*x.model)) {
+      x.vertices.emplace_back(v, TraceVertex(scene, e.chain, x.model_matrix, x.model->vertices[v]));
+    }
+    e.instances.push_back(std::move(x));
+  }
+  return e;
+}
+
+nlohmann::ordered_json Rows(const glm::dmat4& m) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+  return rows;
+}
+
+template <typename Vec>
+nlohmann::ordered_json Array(const Vec& v) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (int i = 0; i < Vec::length(); ++i) a.push_back(v[i]);
+  return a;
+}
+
+// Six significant digits, and no "-0" that would puzzle a reader.
+std::string Num(double x) {
+  if (x == 0) x = 0;
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+template <typename Vec>
+std::string Tuple(const Vec& v) {
+  std::string s = "(";
+  for (int i = 0; i < Vec::length(); ++i) s += (i ? ", " : "") + Num(v[i]);
+  return s + ")";
+}
+
+void PrintMatrix(std::ostream& out, const std::string& name, const glm::dmat4& m) {
+  out << "  " << name << " =\n";
+  for (int r = 0; r < 4; ++r) {
+    out << "    [";
+    for (int c = 0; c < 4; ++c) {
+      char cell[32];
+      std::snprintf(cell, sizeof cell, " %12s", Num(m[c][r]).c_str());
+      out << cell;
+    }
+    out << " ]\n";
+  }
+}
+
+}  // namespace
+
+std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
+  const Explanation e = Explain(scene, options);
+  const Chain& chain = e.chain;
+  const Canvas& cv = scene.canvas;
+  const Viewport& vp = scene.viewport;
+  std::ostringstream out;
+
+  out << "Scene \"" << scene.name << "\": canvas Cw x Ch = " << cv.width << " x " << cv.height
+      << " px, viewport Vw x Vh = " << Num(vp.width) << " x " << Num(vp.height)
+      << " at distance d = " << Num(vp.distance) << ", depth near = " << Num(scene.depth.near)
+      << ", far = " << Num(scene.depth.far) << (scene.depth.reversed ? " (reversed Z: near -> 1, far -> 0)" : "") << "\n"
+      << "Column vectors on the right: V' = F · V, F = M_Projection · M_Camera · M_Model.\n\n";
+
+  out << "M_Projection = CanvasToClip · ViewportToCanvas · P\n";
+  PrintMatrix(out, "P (perspective: x·d, y·d, depth row, w = z)", PerspectiveMatrix(vp, scene.depth));
+  PrintMatrix(out, "ViewportToCanvas (Cw/Vw, Ch/Vh)", ViewportToCanvas(vp, cv));
+  PrintMatrix(out, "CanvasToClip (Vulkan: 2/Cw, -2/Ch)", CanvasToClip(cv));
+  PrintMatrix(out, "M_Projection", chain.projection);
+
+  out << "\nM_Camera = C_R⁻¹ · C_T⁻¹  (camera at " << Tuple(scene.camera.position) << ")\n";
+  PrintMatrix(out, "C_R⁻¹ (transpose of C_R)", Rotation4(glm::transpose(scene.camera.rotation)));
+  PrintMatrix(out, "C_T⁻¹", Translation(-scene.camera.position));
+  PrintMatrix(out, "M_Camera", chain.camera);
+
+  for (const InstanceExplanation& x : e.instances) {
+    const Transform& t = *x.transform;
+    out << "\nInstance " << x.index << " (model \"" << x.model->name << "\"): M_Model = I_T · I_R · I_S\n";
+    PrintMatrix(out, "I_S", Scale(t.scale));
+    PrintMatrix(out, "I_R", Rotation4(t.rotation));
+    PrintMatrix(out, "I_T", Translation(t.translation));
+    PrintMatrix(out, "M_Model", x.model_matrix);
+    PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", x.f);
+
+    for (const auto& [v, tr] : x.vertices) {
+      out << "  vertex " << v << (tr.inside ? "" : "  (outside the clip volume: clipped when drawn)") << "\n"
+          << "    object       " << Tuple(tr.object) << "\n"
+          << "    world        " << Tuple(tr.world) << "   = M_Model · V\n"
+          << "    camera       " << Tuple(tr.camera) << "   = M_Camera · world\n"
+          << "    clip         " << Tuple(tr.clip) << "   = M_Projection · camera\n"
+          << "    ndc          " << Tuple(tr.ndc) << "   = clip.xyz / clip.w\n"
+          << "    canvas       " << Tuple(tr.canvas) << "   = (x·d·Cw/(z·Vw), y·d·Ch/(z·Vh)), +y up\n"
+          << "    framebuffer  " << Tuple(glm::dvec2(tr.framebuffer)) << " depth " << Num(tr.framebuffer.z)
+          << "   Vulkan: +y down, pixel (i, j) has its centre at (i + 0.5, j + 0.5)\n";
+    }
+  }
+  return out.str();
+}
+
+nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options) {
+  const Explanation e = Explain(scene, options);
+  const Chain& chain = e.chain;
+  nlohmann::ordered_json out;
+  out["scene"] = scene.name;
+  out["canvas"] = {{"width", scene.canvas.width}, {"height", scene.canvas.height}};
+  out["viewport"] = {{"width", scene.viewport.width}, {"height", scene.viewport.height},
+                     {"distance", scene.viewport.distance}};
+  out["depth"] = {{"near", scene.depth.near}, {"far", scene.depth.far}, {"reversed", scene.depth.reversed}};
+  out["perspective_matrix"] = Rows(PerspectiveMatrix(scene.viewport, scene.depth));
+  out["viewport_to_canvas"] = Rows(ViewportToCanvas(scene.viewport, scene.canvas));
+  out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
+  out["projection_matrix"] = Rows(chain.projection);
+  out["camera_matrix"] = Rows(chain.camera);
+  out["instances"] = nlohmann::ordered_json::array();
+  for (const InstanceExplanation& x : e.instances) {
+    nlohmann::ordered_json entry;
+    entry["index"] = x.index;
+    entry["model"] = x.model->name;
+    entry["model_matrix"] = Rows(x.model_matrix);
+    entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
+    entry["vertices"] = nlohmann::ordered_json::array();
+    for (const auto& [v, tr] : x.vertices) {
+      entry["vertices"].push_back({{"index", v},
+                                   {"object", Array(tr.object)},
+                                   {"world", Array(tr.world)},
+                                   {"camera", Array(tr.camera)},
+                                   {"clip", Array(tr.clip)},
+                                   {"ndc", Array(tr.ndc)},
+                                   {"canvas", Array(tr.canvas)},
+                                   {"framebuffer", Array(tr.framebuffer)},
+                                   {"inside_clip_volume", tr.inside}});
+    }
+    out["instances"].push_back(std::move(entry));
+  }
+  return out;
+}
+
+}  // namespace twinraster

@@ -1,0 +1,24 @@
+// `twinraster explain`: the chapter's whole chain for a scene, every matrix by the chapter's name
+// and every chosen vertex traced object -> world -> camera -> clip -> NDC -> canvas -> framebuffer.
+#pragma once
+
+#include "scene/scene.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace twinraster {
+
+struct ExplainOptions {
+  std::optional<std::size_t> instance;  // only this instance
+  std::optional<std::size_t> vertex;    // only this vertex of each instance shown
+};
+
+// Both throw UsageError when the instance or vertex index does not exist.
+std::string ExplainText(const Scene& scene, const ExplainOptions& options);
+nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options);
+
+}  // namespace twinraster

@@ -1,0 +1,71 @@
+#include "chain/matrices.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace twinraster {
+
+glm::dmat4 FromRows(const double (&rows)[4][4]) {
+  glm::dmat4 m(0.0);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[c][r] = rows[r][c];
+  return m;
+}
+
+glm::dmat4 Translation(glm::dvec3 t) {
+  return FromRows({{1, 0, 0, t.x}, {0, 1, 0, t.y}, {0, 0, 1, t.z}, {0, 0, 0, 1}});
+}
+
+glm::dmat4 Rotation4(const glm::dmat3& r) {
+  return FromRows({{r[0][0], r[1][0], r[2][0], 0},
+                   {r[0][1], r[1][1], r[2][1], 0},
+                   {r[0][2], r[1][2], r[2][2], 0},
+                   {0, 0, 0, 1}});
+}
+
+glm::dmat4 Scale(glm::dvec3 s) {
+  return FromRows({{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}});
+}
+
+glm::dmat4 ModelMatrix(const Transform& t) {
+  return Translation(t.translation) * Rotation4(t.rotation) * Scale(t.scale);
+}
+
+glm::dmat4 CameraMatrix(const Camera& camera) {
+  return Rotation4(glm::transpose(camera.rotation)) * Translation(-camera.position);
+}
+
+glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth) {
+  const double d = viewport.distance, n = depth.near, f = depth.far;
+  // depth = A + B/z: 0 at near and 1 at far, or reversed, 1 at near and 0 at far.
+  const double a = depth.reversed ? -n / (f - n) : f / (f - n);
+  const double b = depth.reversed ? f * n / (f - n) : -f * n / (f - n);
+  return FromRows({{d, 0, 0, 0}, {0, d, 0, 0}, {0, 0, a, b}, {0, 0, 1, 0}});
+}
+
+glm::dmat4 ViewportToCanvas(const Viewport& viewport, const Canvas& canvas) {
+  const double sx = canvas.width / viewport.width, sy = canvas.height / viewport.height;
+  return FromRows({{sx, 0, 0, 0}, {0, sy, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}});
+}
+
+glm::dmat4 CanvasToClip(const Canvas& canvas) {
+  const double sx = 2.0 / canvas.width, sy = -2.0 / canvas.height;
+  return FromRows({{sx, 0, 0, 0}, {0, sy, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}});
+}
+
+glm::dmat4 ProjectionMatrix(const Viewport& viewport, const Canvas& canvas, const Depth& depth) {
+  return CanvasToClip(canvas) * ViewportToCanvas(viewport, canvas) * PerspectiveMatrix(viewport, depth);
+}
+
+Chain SceneChain(const Scene& scene) {
+  return Chain{ProjectionMatrix(scene.viewport, scene.canvas, scene.depth), CameraMatrix(scene.camera)};
+}
+
+glm::dmat4 InstanceMatrix(const Chain& chain, const Transform& instance) {
+  return chain.projection * chain.camera * ModelMatrix(instance);
+}
+
+}  // namespace twinraster

@@ -1,0 +1,24 @@
+// Compares two images pixel by pixel: how many pixels differ, by how much at most, and a diff
+// image that shows where.
+#pragma once
+
+#include "image/image.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace twinraster {
+
+struct Comparison {
+  bool same_size = true;
+  std::uint64_t differing_pixels = 0;
+  int max_channel_difference = 0;  // over R, G, B, A
+  bool Equal() const { return same_size && differing_pixels == 0; }
+};
+
+Comparison CompareImages(const Image& a, const Image& b);
+
+// Differing pixels in red over a faded grey copy of `a`; images must have the same size.
+Image DiffImage(const Image& a, const Image& b);
+
+}  // namespace twinraster

@@ -1,0 +1,87 @@
+// The scene as the chapter describes it: models, instances with transforms, a camera, the
+// viewport and canvas; plain data, already validated by the loader.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace twinraster {
+
+struct Rgb8 {
+  std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb8&, const Rgb8&) = default;
+};
+
+// The largest canvas side: lavapipe's maxImageDimension2D and maxViewportDimensions (both 16384).
+inline constexpr std::uint32_t kMaxCanvasSize = 16384;
+
+// The canvas is the image we draw into: Cw x Ch pixels.
+struct Canvas {
+  std::uint32_t width = 0;   // Cw
+  std::uint32_t height = 0;  // Ch
+  Rgb8 background{255, 255, 255};
+};
+
+// The viewport is the window into the world: Vw x Vh at distance d from the camera.
+struct Viewport {
+  double width = 1;     // Vw
+  double height = 1;    // Vh
+  double distance = 1;  // d
+};
+
+// The chapter keeps no depth; Vulkan needs it. Camera-space z in [near, far] maps to depth [0, 1]
+// (depth test LESS, cleared to 1), or with reversed Z to [1, 0] (test GREATER, cleared to 0), which
+// spends float precision where perspective squeezes distant depths together.
+struct Depth {
+  double near = 0.1;
+  double far = 100;
+  bool reversed = false;
+};
+
+struct Triangle {
+  std::array<std::uint32_t, 3> v{};  // indices into the model's vertices
+  Rgb8 colour;
+};
+
+struct Model {
+  std::string name;
+  std::vector<glm::dvec3> vertices;
+  std::vector<Triangle> triangles;
+};
+
+// An instance's transform, applied scale first, then rotation, then translation (M_Model).
+struct Transform {
+  glm::dvec3 scale{1, 1, 1};
+  // A 3x3 matrix in the chapter's convention (see matrices.hpp); the loader composes a list of
+  // axis rotations into one matrix.
+  glm::dmat3 rotation{1.0};
+  glm::dvec3 translation{0, 0, 0};
+};
+
+struct Instance {
+  std::size_t model = 0;  // index into Scene::models
+  Transform transform;
+};
+
+// The camera's own transform in the world (C_T, C_R); M_Camera is its inverse.
+struct Camera {
+  glm::dvec3 position{0, 0, 0};
+  glm::dmat3 rotation{1.0};
+};
+
+struct Scene {
+  std::string name;  // the file's stem, for default output names
+  Canvas canvas;
+  Viewport viewport;
+  Depth depth;
+  Camera camera;
+  std::vector<Model> models;
+  std::vector<Instance> instances;
+};
+
+}  // namespace twinraster

@@ -1,0 +1,294 @@
+#include "scene/scene_loader.hpp"
+
+#include "scene/json_reader.hpp"
+#include "scene/rotation.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace twinraster {
+
+namespace {
+
+
+const std::map<std::string, Rgb8, std::less<>>& NamedColours() {
+  // The chapter's six cube colours, plus the neutral ones a scene's background needs.
+  static const std::map<std::string, Rgb8, std::less<>> colours = {
+      {"red", {255, 0, 0}},       {"green", {0, 255, 0}},   {"blue", {0, 0, 255}},
+      {"yellow", {255, 255, 0}},  {"purple", {255, 0, 255}}, {"cyan", {0, 255, 255}},
+      {"white", {255, 255, 255}}, {"black", {0, 0, 0}},     {"gray", {128, 128, 128}},
+  };
+  return colours;
+}
+
+Rgb8 ReadColour(const JsonReader& r) {
+  if (r.IsString()) {
+    const std::string name = r.String();
+    const auto it = NamedColours().find(name);
+    if (it != NamedColours().end()) return it->second;
+    std::vector<std::string> names;
+    for (const auto& entry : NamedColours()) names.push_back(entry.first);
+    const std::string suggestion = ClosestMatch(name, names);
+    r.Fail("unknown colour \"" + name + "\"" +
+           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
+           "; use a name or [r, g, b] with 0..255");
+  }
+  if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + TypeName(r.json()));
+  r.ExpectArray(3);
+  const auto channel = [&](std::size_t i) { return static_cast<std::uint8_t>(r[i].Integer(0, 255)); };
+  return Rgb8{channel(0), channel(1), channel(2)};
+}
+
+glm::dvec3 ReadAxis(const JsonReader& r) {
+  if (r.IsString()) {
+    const std::string name = r.String();
+    if (name == "x") return {1, 0, 0};
+    if (name == "y") return {0, 1, 0};
+    if (name == "z") return {0, 0, 1};
+    r.Fail("unknown axis \"" + name + "\"; use \"x\", \"y\", \"z\" or a vector [x, y, z]");
+  }
+  const glm::dvec3 axis = r.Vec3();
+  const double length = glm::length(axis);
+  if (!(length > 1e-12)) r.Fail("rotation axis must not be the zero vector");
+  return axis / length;
+}
+
+// One {axis, degrees}, or a list of them applied in order (the first is applied first, so the
+// matrix is the product with the first rotation on the right).
+glm::dmat3 ReadRotation(const JsonReader& r) {
+  if (r.IsArray()) {
+    glm::dmat3 rotation(1.0);
+    const std::size_t n = r.ExpectArray();
+    for (std::size_t i = 0; i < n; ++i) rotation = ReadRotation(r[i]) * rotation;
+    return rotation;
+  }
+  if (!r.IsObject()) {
+    r.Fail("expected {\"axis\": ..., \"degrees\": ...} or a list of them, found " + TypeName(r.json()));
+  }
+  r.ExpectObject({"axis", "degrees", "steps", "reorthonormalize"});
+  const glm::dvec3 axis = ReadAxis(r.Required("axis"));
+  const double degrees = r.Required("degrees").Number();
+  const std::optional<JsonReader> steps = r.Find("steps");
+  const std::optional<JsonReader> reorthonormalize = r.Find("reorthonormalize");
+  if (!steps) {
+    if (reorthonormalize) reorthonormalize->Fail("only meaningful together with \"steps\"");
+    return Rotation(axis, degrees);
+  }
+  return AccumulatedRotation(axis, degrees, static_cast<int>(steps->Integer(1, 10'000'000)),
+                             reorthonormalize && reorthonormalize->Boolean());
+}
+
+glm::dvec3 ReadScale(const JsonReader& r) {
+  if (r.IsNumber()) {
+    const double s = r.Number();
+    return {s, s, s};
+  }
+  if (!r.IsArray()) r.Fail("expected a number or [sx, sy, sz], found " + TypeName(r.json()));
+  return r.Vec3();
+}
+
+Canvas ReadCanvas(const JsonReader& r) {
+  r.ExpectObject({"width", "height", "background"});
+  Canvas canvas;
+  canvas.width = static_cast<std::uint32_t>(r.Required("width").Integer(1, kMaxCanvasSize));
+  canvas.height = static_cast<std::uint32_t>(r.Required("height").Integer(1, kMaxCanvasSize));
+  if (auto background = r.Find("background")) canvas.background = ReadColour(*background);
+  return canvas;
+}
+
+Viewport ReadViewport(const JsonReader& r) {
+  r.ExpectObject({"width", "height", "distance"});
+  return Viewport{r.Required("width").Positive(), r.Required("height").Positive(),
+                  r.Required("distance").Positive()};
+}
+
+Depth ReadDepth(const JsonReader& r) {
+  r.ExpectObject({"near", "far", "reversed"});
+  Depth depth;
+  if (auto near = r.Find("near")) depth.near = near->Positive();
+  if (auto far = r.Find("far")) depth.far = far->Number();
+  if (auto reversed = r.Find("reversed")) depth.reversed = reversed->Boolean();
+  if (!(depth.far > depth.near)) {
+    std::ostringstream s;
+    s << "far (" << depth.far << ") must be greater than near (" << depth.near << ")";
+    r.Fail(s.str());
+  }
+  return depth;
+}
+
+Camera ReadCamera(const JsonReader& r) {
+  r.ExpectObject({"position", "rotation", "eye", "center", "up"});
+  const bool chapter_style = r.Find("position") || r.Find("rotation");
+  const bool lookat_style = r.Find("eye") || r.Find("center") || r.Find("up");
+  if (chapter_style && lookat_style) {
+    r.Fail("use either position + rotation (the chapter) or eye + center + up (lookat), not both");
+  }
+  if (!lookat_style) {
+    Camera camera;
+    camera.position = r.Required("position").Vec3();
+    if (auto rotation = r.Find("rotation")) camera.rotation = ReadRotation(*rotation);
+    return camera;
+  }
+  const glm::dvec3 eye = r.Required("eye").Vec3();
+  const JsonReader center_reader = r.Required("center");
+  const glm::dvec3 center = center_reader.Vec3();
+  glm::dvec3 up(0, 1, 0);
+  std::optional<JsonReader> up_reader = r.Find("up");
+  if (up_reader) up = up_reader->Vec3();
+  const glm::dvec3 view = center - eye;
+  if (glm::length(view) == 0) center_reader.Fail("center equals eye: the camera has no view direction");
+  // Closer than this (relative to where they are), the direction is mostly rounding noise.
+  if (glm::length(view) < 1e-9 * std::max(1.0, glm::length(eye))) {
+    center_reader.Fail("center is too close to eye (under 1e-9) to give a view direction");
+  }
+  if (glm::length(up) == 0) up_reader->Fail("up must not be the zero vector");
+  // Parallel when the sine of the angle between up and the view direction vanishes. The bound is
+  // tiny on purpose: 1e-7 away from parallel is a legitimate (hard) case, exact parallel is not.
+  const double sine = glm::length(glm::cross(glm::normalize(up), glm::normalize(view)));
+  if (sine < 1e-12) {
+    (up_reader ? *up_reader : r).Fail("up is parallel to the view direction (center - eye)");
+  }
+  return CameraLookingAt(eye, center, up);
+}
+
+Model ReadModel(const JsonReader& r, const std::string& name) {
+  r.ExpectObject({"vertices", "triangles"});
+  Model model;
+  model.name = name;
+  const JsonReader vertices = r.Required("vertices");
+  const std::size_t vertex_count = vertices.ExpectArray();
+  for (std::size_t i = 0; i < vertex_count; ++i) model.vertices.push_back(vertices[i].Vec3());
+
+  const JsonReader triangles = r.Required("triangles");
+  const std::size_t triangle_count = triangles.ExpectArray();
+  for (std::size_t i = 0; i < triangle_count; ++i) {
+    const JsonReader t = triangles[i];
+    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + TypeName(t.json()));
+    t.ExpectArray(4);
+    Triangle triangle;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const JsonReader index = t[k];
+      if (vertex_count == 0) index.Fail("the model has no vertices");
+      triangle.v[k] = static_cast<std::uint32_t>(index.Integer(0, static_cast<std::int64_t>(vertex_count) - 1));
+    }
+    triangle.colour = ReadColour(t[3]);
+    model.triangles.push_back(triangle);
+  }
+  return model;
+}
+
+Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models) {
+  r.ExpectObject({"model", "transform"});
+  Instance instance;
+  const JsonReader model = r.Required("model");
+  const std::string name = model.String();
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    names.push_back(models[i].name);
+    if (models[i].name == name) instance.model = i;
+  }
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    const std::string suggestion = ClosestMatch(name, names);
+    model.Fail("no model named \"" + name + "\"" +
+               (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
+  }
+  if (auto transform = r.Find("transform")) {
+    transform->ExpectObject({"scale", "rotation", "translation"});
+    if (auto scale = transform->Find("scale")) instance.transform.scale = ReadScale(*scale);
+    if (auto rotation = transform->Find("rotation")) instance.transform.rotation = ReadRotation(*rotation);
+    if (auto translation = transform->Find("translation")) instance.transform.translation = translation->Vec3();
+  }
+  return instance;
+}
+
+// nlohmann reports a byte offset; people want a line and a column.
+std::string LineAndColumn(std::string_view text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else ++column;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..." keeps
+// only what follows the position.
+std::string ParseProblem(const std::string& what) {
+  const std::size_t colon = what.find(": ");
+  return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+}  // namespace
+
+Scene ParseScene(std::string_view json_text, const std::string& file_name) {
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SceneError(file_name, LineAndColumn(json_text, e.byte == 0 ? 0 : e.byte - 1), ParseProblem(e.what()));
+  } catch (const nlohmann::json::exception& e) {
+    // Number overflow (1e999) has no position of its own: point at the literal.
+    std::string what = e.what();
+    const std::size_t quote = what.find('\'');
+    std::string where = "(number)";
+    if (quote != std::string::npos) {
+      const std::string literal = what.substr(quote + 1, what.rfind('\'') - quote - 1);
+      const std::size_t at = json_text.find(literal);
+      if (at != std::string_view::npos) where = LineAndColumn(json_text, at);
+    }
+    throw SceneError(file_name, where, "number is out of range: " + ParseProblem(what.substr(what.find(']') + 2)));
+  }
+
+  const JsonReader root(document, file_name, "");
+  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances"});
+  if (auto comment = root.Find("comment")) comment->String();
+
+  Scene scene;
+  scene.name = std::filesystem::path(file_name).stem().string();
+  scene.canvas = ReadCanvas(root.Required("canvas"));
+  scene.viewport = ReadViewport(root.Required("viewport"));
+  if (auto depth = root.Find("depth")) scene.depth = ReadDepth(*depth);
+  scene.camera = ReadCamera(root.Required("camera"));
+
+  const JsonReader models = root.Required("models");
+  models.ExpectObject();
+  for (const auto& [name, value] : models.json().items()) {
+    scene.models.push_back(ReadModel(*models.Find(name), name));
+  }
+
+  const JsonReader instances = root.Required("instances");
+  const std::size_t count = instances.ExpectArray();
+  for (std::size_t i = 0; i < count; ++i) scene.instances.push_back(ReadInstance(instances[i], scene.models));
+
+  return scene;
+}
+
+Scene LoadScene(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw SceneError(file.string(), "(file)", "is a directory, not a scene file");
+  if (!std::filesystem::exists(file, ec)) throw SceneError(file.string(), "(file)", "no such file");
+  if (!std::filesystem::is_regular_file(file, ec)) throw SceneError(file.string(), "(file)", "not a regular file");
+  // Far beyond any scene a person writes; refusing it keeps /dev/zero-like inputs from eating memory.
+  constexpr std::uintmax_t kMaxSceneBytes = 256u << 20;
+  if (std::filesystem::file_size(file, ec) > kMaxSceneBytes) {
+    throw SceneError(file.string(), "(file)", "larger than 256 MiB: not a scene file");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError(file.string(), "(file)", std::string("cannot open the file for reading: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(file.string(), "(file)", "read error");
+  return ParseScene(text.str(), file.string());
+}
+
+}  // namespace twinraster

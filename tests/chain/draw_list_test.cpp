@@ -1,0 +1,52 @@
+// The draw list both renderers consume: F rounded once from the double chain, and the checks
+// every renderer makes before drawing a list built elsewhere.
+#include "chain/draw_list.hpp"
+#include "chain/matrices.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace twinraster;
+
+TEST_CASE("BuildDrawList: one draw per instance, F rounded to float once from the double chain", "[draw-list]") {
+  const Scene scene = LoadScene(test::SourcePath("scenes/cgfs-transforms.json"));
+  const DrawList list = BuildDrawList(scene);
+  REQUIRE(list.width == 600);
+  REQUIRE(list.draws.size() == 2);
+  const Chain chain = SceneChain(scene);
+  for (std::size_t i = 0; i < list.draws.size(); ++i) {
+    const glm::dmat4 exact = InstanceMatrix(chain, scene.instances[i].transform);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) REQUIRE(list.draws[i].F[c][r] == static_cast<float>(exact[c][r]));
+  }
+  REQUIRE(list.meshes[0].colours.size() == list.meshes[0].triangles.size());
+  REQUIRE_NOTHROW(ValidateDrawList(list));
+}
+
+TEST_CASE("ValidateDrawList names what a renderer could not draw", "[draw-list]") {
+  const DrawList good = BuildDrawList(LoadScene(test::SourcePath("scenes/cgfs-scene.json")));
+  const auto message = [](const DrawList& list) {
+    try {
+      ValidateDrawList(list);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  DrawList list = good;
+  list.width = 0;
+  REQUIRE(message(list) == "image size 0x600 is outside 1..16384");
+  list = good;
+  list.height = kMaxCanvasSize + 1;
+  REQUIRE(message(list).find("outside 1..16384") != std::string::npos);
+  list = good;
+  list.draws[0].mesh = 3;
+  REQUIRE(message(list) == "draw 0 names mesh 3 of 1");
+  list = good;
+  list.meshes[0].triangles[5][1] = 8;
+  REQUIRE(message(list) == "mesh 0 triangle 5 uses vertex 8 of 8");
+  list = good;
+  list.meshes[0].colours.pop_back();
+  REQUIRE(message(list) == "mesh 0 has 12 triangles but 11 colours");
+}
