@@ -15,6 +15,9 @@ packages=(
   libstb-dev                     # stb_image_write (PNG out) and stb_image (PNG in, for compare)
   catch2                         # unit tests (Catch2 v2 on Debian 12)
   nlohmann-json3-dev             # scene files
+  libcli11-dev                   # the command line
+  clang libclang-rt-14-dev       # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
+  python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
 )
 
 missing=()

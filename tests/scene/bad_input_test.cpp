@@ -105,18 +105,3 @@ TEST_CASE("A missing file, a directory or a device is bad input too", "[bad-inpu
     REQUIRE(r.err.rfind("twinraster: " + path.string() + ": (file): " + problem, 0) == 0);
   }
 }
-
-TEST_CASE("Usage errors exit with 2 and say what is wrong", "[bad-input]") {
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{}, "missing command"},
-      {{"frobnicate"}, "unknown command \"frobnicate\""},
-      {{"explain"}, "missing SCENE"},
-      {{"explain", "a.json", "b.json"}, "unexpected argument b.json"},
-  };
-  for (const auto& [args, message] : cases) {
-    const test::CliResult r = test::RunCli(args);
-    INFO(r.err);
-    REQUIRE(r.exit_code == 2);
-    REQUIRE(r.err.rfind("twinraster: " + message, 0) == 0);
-  }
-}
