@@ -1,9 +1,9 @@
 # Guards the data path: each folder of src/ may include only itself and the stages before it.
 # Run as: cmake -DSOURCE_DIR=<repository> -P check_layers.cmake
 set(allowed_base "base")
-set(allowed_scene "scene")
+set(allowed_scene "scene;base")
 set(allowed_chain "chain;scene;base")
-set(allowed_image "image")
+set(allowed_image "image;base")
 set(allowed_cpu "cpu;chain;scene;image;base")
 set(allowed_gpu "gpu;chain;scene;image;base;shaders")
 set(allowed_truth "truth;chain;scene;image;base")

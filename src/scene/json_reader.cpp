@@ -12,33 +12,6 @@ namespace twinraster {
 
 namespace {
 
-std::size_t EditDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
-}
-
-template <typename Range>
-std::string Closest(std::string_view word, const Range& candidates) {
-  std::string best;
-  std::size_t best_distance = std::numeric_limits<std::size_t>::max();
-  for (const auto& candidate : candidates) {
-    const std::size_t d = EditDistance(word, candidate);
-    if (d < best_distance) best_distance = d, best = std::string(candidate);
-  }
-  // Only suggest what a typo could explain: at most a third of the word changed.
-  return best_distance <= std::max<std::size_t>(1, word.size() / 3 + 1) ? best : std::string();
-}
-
 std::string Quoted(std::string_view s) {
   std::string quoted(1, '"');
   quoted.append(s);
@@ -56,13 +29,6 @@ std::string JoinKey(const std::string& path, std::string_view key) {
 }
 
 }  // namespace
-
-std::string ClosestMatch(std::string_view word, std::initializer_list<std::string_view> candidates) {
-  return Closest(word, candidates);
-}
-std::string ClosestMatch(std::string_view word, const std::vector<std::string>& candidates) {
-  return Closest(word, candidates);
-}
 
 std::string TypeName(const nlohmann::json& value) {
   switch (value.type()) {

@@ -2,6 +2,7 @@
 // becomes a SceneError naming the file, the path and what was expected.
 #pragma once
 
+#include "base/closest_match.hpp"
 #include "scene/scene_error.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -65,9 +66,5 @@ class JsonReader {
 };
 
 std::string TypeName(const nlohmann::json& value);
-
-// The candidate closest to `word` by edit distance, or "" when none is reasonably close.
-std::string ClosestMatch(std::string_view word, std::initializer_list<std::string_view> candidates);
-std::string ClosestMatch(std::string_view word, const std::vector<std::string>& candidates);
 
 }  // namespace twinraster
