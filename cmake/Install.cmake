@@ -1,0 +1,1 @@
+# cmake --install: to be written (issue 7, item 6).
