@@ -1,5 +1,7 @@
 #include "scene/json_reader.hpp"
 
+#include "scene/json_document.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -17,15 +19,6 @@ std::string Quoted(std::string_view s) {
   quoted.append(s);
   quoted.push_back('"');
   return quoted;
-}
-
-// A key that reads as an identifier joins the path with a dot; anything else is bracketed.
-std::string JoinKey(const std::string& path, std::string_view key) {
-  const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-  });
-  if (path.empty()) return std::string(key);
-  return plain ? path + "." + std::string(key) : path + "[" + Quoted(key) + "]";
 }
 
 }  // namespace
@@ -72,7 +65,7 @@ std::optional<JsonReader> JsonReader::Find(std::string_view key) const {
   ExpectObject();
   const auto it = value_->find(key);
   if (it == value_->end()) return std::nullopt;
-  return JsonReader(*it, file_, JoinKey(path_, key));
+  return JsonReader(*it, file_, JsonPathKey(path_, key));
 }
 
 JsonReader JsonReader::Required(std::string_view key) const {
@@ -95,7 +88,7 @@ std::size_t JsonReader::ExpectArray(std::size_t size) const {
 }
 
 JsonReader JsonReader::operator[](std::size_t index) const {
-  return JsonReader((*value_)[index], file_, path_ + "[" + std::to_string(index) + "]");
+  return JsonReader((*value_)[index], file_, JsonPathIndex(path_, index));
 }
 
 std::string JsonReader::String() const {

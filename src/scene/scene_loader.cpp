@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/json_document.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/rotation.hpp"
 
@@ -211,44 +212,10 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models) {
   return instance;
 }
 
-// nlohmann reports a byte offset; people want a line and a column.
-std::string LineAndColumn(std::string_view text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-// "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..." keeps
-// only what follows the position.
-std::string ParseProblem(const std::string& what) {
-  const std::size_t colon = what.find(": ");
-  return colon == std::string::npos ? what : what.substr(colon + 2);
-}
-
 }  // namespace
 
 Scene ParseScene(std::string_view json_text, const std::string& file_name) {
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw SceneError(file_name, LineAndColumn(json_text, e.byte == 0 ? 0 : e.byte - 1), ParseProblem(e.what()));
-  } catch (const nlohmann::json::exception& e) {
-    // Number overflow (1e999) has no position of its own: point at the literal.
-    std::string what = e.what();
-    const std::size_t quote = what.find('\'');
-    std::string where = "(number)";
-    if (quote != std::string::npos) {
-      const std::string literal = what.substr(quote + 1, what.rfind('\'') - quote - 1);
-      const std::size_t at = json_text.find(literal);
-      if (at != std::string_view::npos) where = LineAndColumn(json_text, at);
-    }
-    throw SceneError(file_name, where, "number is out of range: " + ParseProblem(what.substr(what.find(']') + 2)));
-  }
-
+  const nlohmann::json document = ParseJsonDocument(json_text, file_name);
   const JsonReader root(document, file_name, "");
   root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances"});
   if (auto comment = root.Find("comment")) comment->String();

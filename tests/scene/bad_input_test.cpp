@@ -30,6 +30,18 @@ std::string With(const std::string& pointer, const nlohmann::json& value) {
   return scene.dump(2);
 }
 
+std::string Repeat(std::string text, const std::string& suffix, int times) {
+  for (int i = 0; i < times; ++i) text += suffix;
+  return text;
+}
+
+// `text` with its first `from` replaced by `to`.
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
 std::string LookAt(const nlohmann::json& eye, const nlohmann::json& center, const nlohmann::json& up) {
   return With("/camera", {{"eye", eye}, {"center", center}, {"up", up}});
 }
@@ -48,7 +60,15 @@ std::vector<BadCase> Cases() {
       {"triangle index out of range", With("/models/cube/triangles/3/2", 8), "models.cube.triangles[3][2]", "expected an integer in 0..7, found 8"},
       {"negative triangle index", With("/models/cube/triangles/0/0", -1), "models.cube.triangles[0][0]", "in 0..7"},
       {"unknown colour", With("/models/cube/triangles/0/3", "rde"), "models.cube.triangles[0][3]", "did you mean \"red\"?"},
-      {"non-finite number", "{\"canvas\": {\"width\": 1e999}}", "line 1, column 22", "out of range"},
+      {"number beyond double", "{\"canvas\": {\"width\": 1e999}}", "canvas.width", "number 1e999 is out of range for a double (line 1, column 22)"},
+      {"number beyond double, nested", Replace(Base(), "\"distance\": 1", "\"distance\": 1e400"), "viewport.distance", "number 1e400 is out of range"},
+      {"number beyond double in an array", "{\"instances\": [0, -1e999]}", "instances[1]", "number -1e999 is out of range"},
+      {"duplicate key", "{\n  \"canvas\": {\"width\": 600,\n             \"height\": 600,\n             \"width\": 800}\n}",
+       "canvas.width", "duplicate key \"width\", on line 2 and again on line 4"},
+      {"duplicate top-level key", Replace(Base(), "\"viewport\": {", "\"viewport\": {}, \"viewport\": {"), "viewport", "duplicate key \"viewport\", on line 8 and again on line 8"},
+      {"binary garbage (a PNG)", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), "line 1, column 1", "not JSON text: binary data (byte 0x89)"},
+      {"a NUL byte inside", std::string("{\n  \"canvas\"\0: 1}", 17), "line 2, column 11", "not JSON text: binary data (byte 0x00)"},
+      {"nested too deep", "{\"comment\": " + std::string(100, '[') + std::string(100, ']') + "}", Repeat("comment", "[0]", 63), "nested deeper than 64 levels"},
       {"absurd number", With("/instances/0/transform/translation/2", 1e300), "instances[0].transform.translation[2]", "absurd"},
       {"canvas of zero width", With("/canvas/width", 0), "canvas.width", "expected an integer in 1..16384, found 0"},
       {"canvas too tall", With("/canvas/height", 16385), "canvas.height", "in 1..16384"},

@@ -1,0 +1,24 @@
+// Parses JSON text into a document in one pass, locating every problem: a syntax error by line
+// and column, a number out of range or a duplicate key by its JSON path (and lines), and a file
+// that is not text at all as such. Any problem is a SceneError.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace twinraster {
+
+// Deeper nesting than any scene needs; refusing it bounds the work a hostile file can cause.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+// `file_name` is only used in error messages.
+nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name);
+
+// JSON paths as every scene error prints them: `models.cube.triangles[3][2]`; a key that is not
+// an identifier is bracketed and quoted (`models["my cube"]`).
+std::string JsonPathKey(const std::string& path, std::string_view key);
+std::string JsonPathIndex(const std::string& path, std::size_t index);
+
+}  // namespace twinraster
