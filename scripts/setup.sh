@@ -12,7 +12,8 @@ packages=(
   glslang-dev glslang-tools      # glslangValidator compiles shaders/ to SPIR-V at build time
   spirv-tools                    # spirv-val checks the SPIR-V the build embeds
   libglm-dev                     # matrix and vector types
-  libstb-dev                     # stb_image_write (PNG out) and stb_image (PNG in, for compare)
+  libstb-dev                     # stb_image (PNG in, for compare)
+  libdeflate-dev                 # PNG compression
   catch2                         # unit tests (Catch2 v2 on Debian 12)
   nlohmann-json3-dev             # scene files
   libcli11-dev                   # the command line
