@@ -1,5 +1,6 @@
 #include "gpu/gpu_renderer.hpp"
 
+#include "gpu/instance_buffers.hpp"
 #include "gpu/mesh_buffers.hpp"
 #include "gpu/offscreen_target.hpp"
 #include "gpu/pipeline.hpp"
@@ -10,6 +11,7 @@
 #include <array>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace twinraster {
@@ -40,8 +42,12 @@ vk::ClearValue ClearColour(Rgb8 background) {
 struct GpuRenderer::Impl {
   explicit Impl(const GpuOptions& options);
   Image Render(const DrawList& list, GpuTimings* timings);
-  void Record(const DrawList& list, const gpu::MeshBuffers& meshes) const;
+  // Returns the number of draw commands recorded.
+  std::size_t Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
+                     const gpu::InstanceBuffers& instances);
 
+  gpu::Instancing instancing;
+  std::uint32_t instances_per_buffer;
   // Members are destroyed in reverse order: everything below goes before the device in `context`.
   gpu::VulkanContext context;
   gpu::Pipeline pipeline;
@@ -53,7 +59,8 @@ struct GpuRenderer::Impl {
   std::unique_ptr<gpu::OffscreenTarget> target;  // kept while the image size stays the same
 };
 
-GpuRenderer::Impl::Impl(const GpuOptions& options) : context(options), pipeline(context.device()) {
+GpuRenderer::Impl::Impl(const GpuOptions& options)
+    : instancing(options.instancing), instances_per_buffer(options.instances_per_buffer), context(options), pipeline(context.device()) {
   const vk::raii::Device& device = context.device();
   const vk::DescriptorPoolSize pool_size{.type = vk::DescriptorType::eStorageBuffer,
                                          .descriptorCount = 1};
@@ -93,6 +100,8 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   // Setup. Check and upload first: a malformed list then throws before anything is touched.
   CheckSize(list.width, list.height, context.limits());
   const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
+  const gpu::DrawPlan plan = gpu::PlanDraws(list, instancing, instances_per_buffer);
+  const gpu::InstanceBuffers instances(context, list, plan);  // likewise
   if (!target || target->width() != list.width || target->height() != list.height) {
     target.reset();  // free the old images first: at 16384x16384 one target holds 3 GiB
     target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width,
@@ -110,7 +119,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
           .pBufferInfo = &colour_buffer,
       },
       nullptr);
-  Record(list, meshes);
+  const std::size_t draw_commands = Record(list, plan, meshes, instances);
   const double setup_ms = clock.Lap();
 
   // Draw: run the commands and wait for them.
@@ -130,12 +139,19 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   const double readback_ms = clock.Lap();
 
   if (timings != nullptr) {
-    *timings = GpuTimings{.setup_ms = setup_ms, .draw_ms = draw_ms, .readback_ms = readback_ms};
+    std::size_t instanced = 0;
+    for (const gpu::DrawBatch& batch : plan.batches) instanced += batch.instanced ? batch.count : 0;
+    *timings = GpuTimings{.setup_ms = setup_ms,
+                          .draw_ms = draw_ms,
+                          .readback_ms = readback_ms,
+                          .draw_commands = draw_commands,
+                          .instanced_draws = instanced};
   }
   return image;
 }
 
-void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& meshes) const {
+std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan,
+                                      const gpu::MeshBuffers& meshes, const gpu::InstanceBuffers& instances) {
   const vk::raii::CommandBuffer& cmd = commands;
   const vk::Extent2D extent{list.width, list.height};
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
@@ -155,7 +171,6 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
           .pClearValues = clear_values.data(),
       },
       vk::SubpassContents::eInline);
-  cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(list.reversed_z));
   cmd.setViewport(0, vk::Viewport{.x = 0.0f,
                                   .y = 0.0f,
                                   .width = static_cast<float>(list.width),
@@ -168,15 +183,38 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipeline.layout(), 0, *colour_set,
                          nullptr);
   // In list order: the depth test is strict (LESS, or GREATER with reversed Z), so the earlier of
-  // two equally deep fragments stays.
-  for (const DrawCall& draw : list.draws) {
-    const gpu::MeshRange& range = meshes.range(draw.mesh);
+  // two equally deep fragments stays. An instanced draw keeps that order too: its instances are
+  // rasterized in instance order, and gl_PrimitiveID restarts at 0 for each instance.
+  constexpr auto kStages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
+  std::optional<gpu::FSource> bound;
+  std::optional<std::uint32_t> bound_buffer;
+  std::size_t draw_commands = 0;
+  for (const gpu::DrawBatch& batch : plan.batches) {
+    const gpu::MeshRange& range = meshes.range(batch.mesh);
     if (range.index_count == 0) continue;  // a mesh without triangles draws nothing
-    const gpu::PushConstants push{.F = draw.F, .first_colour = range.first_colour};
-    cmd.pushConstants<gpu::PushConstants>(
-        *pipeline.layout(), vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
-        0, push);
-    cmd.drawIndexed(range.index_count, 1, range.first_index, range.first_vertex, 0);
+    const gpu::FSource source = batch.instanced ? gpu::FSource::kInstanceAttribute : gpu::FSource::kPushConstant;
+    if (bound != source) {
+      // Both pipelines share one layout, so the push constants and descriptor set stay bound.
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(source, list.reversed_z));
+      bound = source;
+    }
+    if (batch.instanced) {
+      if (bound_buffer != batch.buffer) {
+        cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
+        bound_buffer = batch.buffer;
+      }
+      cmd.pushConstants<std::uint32_t>(*pipeline.layout(), kStages, offsetof(gpu::PushConstants, first_colour),
+                                       range.first_colour);
+      cmd.drawIndexed(range.index_count, batch.count, range.first_index, range.first_vertex, batch.first_instance);
+      ++draw_commands;
+      continue;
+    }
+    for (std::uint32_t i = 0; i < batch.count; ++i) {
+      const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F, .first_colour = range.first_colour};
+      cmd.pushConstants<gpu::PushConstants>(*pipeline.layout(), kStages, 0, push);
+      cmd.drawIndexed(range.index_count, 1, range.first_index, range.first_vertex, 0);
+      ++draw_commands;
+    }
   }
   cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing
 
@@ -207,6 +245,7 @@ void GpuRenderer::Impl::Record(const DrawList& list, const gpu::MeshBuffers& mes
                       },
                       nullptr);
   cmd.end();
+  return draw_commands;
 }
 
 GpuRenderer::GpuRenderer(const GpuOptions& options) : impl_(std::make_unique<Impl>(options)) {}

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "chain/draw_list.hpp"
+#include "gpu/draw_batches.hpp"
 #include "image/image.hpp"
 
 #include <memory>
@@ -18,12 +19,19 @@ struct GpuOptions {
   std::string device;
   // Enable VK_LAYER_KHRONOS_validation with synchronization validation; collect every message.
   bool validation = false;
+  // How F reaches the vertex shader (gpu/draw_batches.hpp): per draw, per instance, or chosen
+  // per run of instances. Every choice gives the same pixels.
+  gpu::Instancing instancing = gpu::Instancing::kAuto;
+  // F matrices per instance buffer; smaller values only serve tests of the splitting.
+  std::uint32_t instances_per_buffer = gpu::kInstancesPerBuffer;
 };
 
 // Per Render(): setup = buffers/upload/command recording, draw = submit+wait, readback = map+copy
 // into Image.
 struct GpuTimings {
   double setup_ms = 0, draw_ms = 0, readback_ms = 0;
+  std::size_t draw_commands = 0;    // vkCmdDrawIndexed calls recorded
+  std::size_t instanced_draws = 0;  // draws of the list that were drawn instanced
 };
 
 // No usable Vulkan device, or the validation layer is missing; the message says what to install.

@@ -2,6 +2,7 @@
 
 #include "shaders/triangle.frag.h"
 #include "shaders/triangle.vert.h"
+#include "shaders/triangle_instanced.vert.h"
 
 #include <array>
 
@@ -88,7 +89,7 @@ vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device,
 
 }  // namespace
 
-Pipeline::Pipeline(const vk::raii::Device& device) {
+Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   render_pass_ = CreateRenderPass(device);
 
   const vk::DescriptorSetLayoutBinding colour_binding{
@@ -100,7 +101,8 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
   colour_set_layout_ = vk::raii::DescriptorSetLayout(
       device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = 1, .pBindings = &colour_binding});
 
-  // One range for both stages: the vertex shader reads F, the fragment shader first_colour.
+  // One range for both stages: the vertex shader reads F (per-draw path), the fragment shader
+  // first_colour.
   const vk::PushConstantRange push_range{
       .stageFlags = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
       .offset = 0,
@@ -113,9 +115,20 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
                                                  .pushConstantRangeCount = 1,
                                                  .pPushConstantRanges = &push_range,
                                              });
+}
 
+const vk::raii::Pipeline& Pipeline::pipeline(FSource source, bool reversed_z) {
+  vk::raii::Pipeline& slot = pipelines_[source == FSource::kInstanceAttribute ? 1 : 0][reversed_z ? 1 : 0];
+  if (!*slot) slot = Create(source, reversed_z);
+  return slot;
+}
+
+vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z) const {
+  const vk::raii::Device& device = *device_;
+  const bool instanced = source == FSource::kInstanceAttribute;
   const vk::raii::ShaderModule vertex =
-      CreateShaderModule(device, triangle_vert_spv, sizeof(triangle_vert_spv));
+      instanced ? CreateShaderModule(device, triangle_instanced_vert_spv, sizeof(triangle_instanced_vert_spv))
+                : CreateShaderModule(device, triangle_vert_spv, sizeof(triangle_vert_spv));
   const vk::raii::ShaderModule fragment =
       CreateShaderModule(device, triangle_frag_spv, sizeof(triangle_frag_spv));
   const std::array stages = {
@@ -125,17 +138,28 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
 
-  // One attribute: the vec3 position. Colours come per triangle from the storage buffer instead,
-  // so vertices shared by triangles of different colours are not duplicated.
-  const vk::VertexInputBindingDescription binding{
-      .binding = 0, .stride = 3 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex};
-  const vk::VertexInputAttributeDescription position{
-      .location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0};
+  // Binding 0: the vec3 position, the only per-vertex attribute. Colours come per triangle from
+  // the storage buffer instead, so vertices shared by triangles of different colours are not
+  // duplicated. Binding 1, instanced only: F, one mat4 per instance, a column per location.
+  const std::array bindings = {
+      vk::VertexInputBindingDescription{
+          .binding = 0, .stride = 3 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex},
+      vk::VertexInputBindingDescription{
+          .binding = 1, .stride = sizeof(glm::mat4), .inputRate = vk::VertexInputRate::eInstance},
+  };
+  std::array<vk::VertexInputAttributeDescription, 5> attributes{};
+  attributes[0] = {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0};
+  for (std::uint32_t column = 0; column < 4; ++column) {
+    attributes[1 + column] = {.location = 1 + column,
+                              .binding = 1,
+                              .format = vk::Format::eR32G32B32A32Sfloat,
+                              .offset = column * static_cast<std::uint32_t>(sizeof(glm::vec4))};
+  }
   const vk::PipelineVertexInputStateCreateInfo vertex_input{
-      .vertexBindingDescriptionCount = 1,
-      .pVertexBindingDescriptions = &binding,
-      .vertexAttributeDescriptionCount = 1,
-      .pVertexAttributeDescriptions = &position,
+      .vertexBindingDescriptionCount = instanced ? 2u : 1u,
+      .pVertexBindingDescriptions = bindings.data(),
+      .vertexAttributeDescriptionCount = instanced ? 5u : 1u,
+      .pVertexAttributeDescriptions = attributes.data(),
   };
   const vk::PipelineInputAssemblyStateCreateInfo input_assembly{
       .topology = vk::PrimitiveTopology::eTriangleList};
@@ -165,31 +189,27 @@ Pipeline::Pipeline(const vk::raii::Device& device) {
 
   // The compare op is strict either way (LESS, or GREATER for reversed Z), so of two fragments
   // at equal depth the earlier draw stays, and a fragment exactly at the clear value is hidden.
-  const auto create = [&](vk::CompareOp depth_compare) {
-    const vk::PipelineDepthStencilStateCreateInfo depth_stencil{
-        .depthTestEnable = VK_TRUE,
-        .depthWriteEnable = VK_TRUE,
-        .depthCompareOp = depth_compare,
-    };
-    return vk::raii::Pipeline(device, nullptr,
-                              vk::GraphicsPipelineCreateInfo{
-                                  .stageCount = stages.size(),
-                                  .pStages = stages.data(),
-                                  .pVertexInputState = &vertex_input,
-                                  .pInputAssemblyState = &input_assembly,
-                                  .pViewportState = &viewport,
-                                  .pRasterizationState = &rasterization,
-                                  .pMultisampleState = &multisample,
-                                  .pDepthStencilState = &depth_stencil,
-                                  .pColorBlendState = &colour_blend,
-                                  .pDynamicState = &dynamic,
-                                  .layout = *layout_,
-                                  .renderPass = *render_pass_,
-                                  .subpass = 0,
-                              });
+  const vk::PipelineDepthStencilStateCreateInfo depth_stencil{
+      .depthTestEnable = VK_TRUE,
+      .depthWriteEnable = VK_TRUE,
+      .depthCompareOp = reversed_z ? vk::CompareOp::eGreater : vk::CompareOp::eLess,
   };
-  standard_pipeline_ = create(vk::CompareOp::eLess);
-  reversed_z_pipeline_ = create(vk::CompareOp::eGreater);
+  return vk::raii::Pipeline(device, nullptr,
+                            vk::GraphicsPipelineCreateInfo{
+                                .stageCount = stages.size(),
+                                .pStages = stages.data(),
+                                .pVertexInputState = &vertex_input,
+                                .pInputAssemblyState = &input_assembly,
+                                .pViewportState = &viewport,
+                                .pRasterizationState = &rasterization,
+                                .pMultisampleState = &multisample,
+                                .pDepthStencilState = &depth_stencil,
+                                .pColorBlendState = &colour_blend,
+                                .pDynamicState = &dynamic,
+                                .layout = *layout_,
+                                .renderPass = *render_pass_,
+                                .subpass = 0,
+                            });
 }
 
 }  // namespace twinraster::gpu

@@ -1,5 +1,6 @@
 // The render pass and the graphics pipelines (shaders, fixed-function state, layout) every draw
-// uses; none of it depends on the image size, so it is built once per GpuRenderer.
+// uses; none of it depends on the image size, so it is built once per GpuRenderer, and each
+// pipeline only when a draw list first needs it (lavapipe compiles shaders at pipeline creation).
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -21,25 +22,31 @@ struct PushConstants {
 };
 static_assert(sizeof(PushConstants) == 68 && offsetof(PushConstants, first_colour) == 64);
 
+// Where the vertex shader reads F: a push constant per draw (one draw per instance, the
+// chapter's Listing 10-5), or a per-instance vertex attribute (one draw for a run of instances).
+enum class FSource { kPushConstant, kInstanceAttribute };
+
 class Pipeline {
  public:
-  explicit Pipeline(const vk::raii::Device& device);
+  explicit Pipeline(const vk::raii::Device& device);  // keeps a reference to `device`
 
   const vk::raii::RenderPass& render_pass() const { return render_pass_; }
   const vk::raii::DescriptorSetLayout& colour_set_layout() const { return colour_set_layout_; }
   const vk::raii::PipelineLayout& layout() const { return layout_; }
-  // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z).
-  const vk::raii::Pipeline& pipeline(bool reversed_z) const {
-    return reversed_z ? reversed_z_pipeline_ : standard_pipeline_;
-  }
+  // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z). Created
+  // on first use.
+  const vk::raii::Pipeline& pipeline(FSource source, bool reversed_z);
 
  private:
+  vk::raii::Pipeline Create(FSource source, bool reversed_z) const;
+
+  const vk::raii::Device* device_;
   vk::raii::RenderPass render_pass_ = nullptr;
   vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;  // binding 0: the triangle colours
   vk::raii::PipelineLayout layout_ = nullptr;
-  // Identical but for the depth compare op, which is baked into a Vulkan 1.0 pipeline.
-  vk::raii::Pipeline standard_pipeline_ = nullptr;
-  vk::raii::Pipeline reversed_z_pipeline_ = nullptr;
+  // [F source][reversed Z]: identical but for the vertex input and the depth compare op, which
+  // are baked into a Vulkan 1.0 pipeline.
+  vk::raii::Pipeline pipelines_[2][2] = {{nullptr, nullptr}, {nullptr, nullptr}};
 };
 
 }  // namespace twinraster::gpu

@@ -14,7 +14,7 @@ TEST_CASE("Every shipped scene: GPU image == CPU image, bit for bit", "[twin]") 
     const Scene scene = LoadScene(file);
     const test::TwinResult r = test::RenderTwins(BuildDrawList(scene));
     INFO(r.Describe());
-    REQUIRE(r.comparison.Equal());
+    REQUIRE(r.Equal());
     // Not a blank image: the scene drew something besides the background.
     std::size_t drawn = 0;
     for (std::uint32_t y = 0; y < r.cpu.height; ++y)

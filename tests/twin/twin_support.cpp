@@ -5,30 +5,36 @@
 #include <catch2/catch.hpp>
 
 #include <sstream>
+#include <stdexcept>
 
 namespace twinraster::test {
 
 namespace {
-std::size_t g_messages_seen = 0;
+std::size_t g_messages_seen[2] = {0, 0};  // per shared renderer
 }
 
-GpuRenderer& SharedGpu() {
-  static GpuRenderer renderer(GpuOptions{"", true});
-  return renderer;
+GpuRenderer& SharedGpu(gpu::Instancing instancing) {
+  static GpuRenderer per_draw(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kNever});
+  static GpuRenderer instanced(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways});
+  if (instancing == gpu::Instancing::kAuto) throw std::logic_error("SharedGpu: choose a path");
+  return instancing == gpu::Instancing::kAlways ? instanced : per_draw;
 }
 
 TwinResult RenderTwins(const DrawList& list) {
   TwinResult r;
-  r.gpu = SharedGpu().Render(list);
+  r.gpu = SharedGpu(gpu::Instancing::kNever).Render(list);
+  r.gpu_instanced = SharedGpu(gpu::Instancing::kAlways).Render(list);
   r.cpu = RenderOnCpu(list);
   r.comparison = CompareImages(r.gpu, r.cpu);
+  r.instanced_comparison = CompareImages(r.gpu_instanced, r.cpu);
   return r;
 }
 
-std::string TwinResult::Describe() const {
-  std::ostringstream s;
-  s << gpu.width << " x " << gpu.height << ": " << comparison.differing_pixels << " differing pixels, max channel difference "
-    << comparison.max_channel_difference;
+namespace {
+void DescribeDifference(std::ostringstream& s, const char* name, const Image& gpu, const Image& cpu,
+                        const Comparison& comparison) {
+  s << name << " " << gpu.width << " x " << gpu.height << ": " << comparison.differing_pixels
+    << " differing pixels, max channel difference " << comparison.max_channel_difference;
   int shown = 0;
   for (std::uint32_t y = 0; y < gpu.height && shown < 8; ++y)
     for (std::uint32_t x = 0; x < gpu.width && shown < 8; ++x) {
@@ -38,14 +44,25 @@ std::string TwinResult::Describe() const {
         << "  cpu " << int(c[0]) << "," << int(c[1]) << "," << int(c[2]);
       ++shown;
     }
+  s << "\n";
+}
+}  // namespace
+
+std::string TwinResult::Describe() const {
+  std::ostringstream s;
+  DescribeDifference(s, "per-draw F:", gpu, cpu, comparison);
+  DescribeDifference(s, "instanced F:", gpu_instanced, cpu, instanced_comparison);
   return s.str();
 }
 
 void RequireNoValidationMessages() {
-  const auto& messages = SharedGpu().ValidationMessages();
   std::string text;
-  for (std::size_t i = g_messages_seen; i < messages.size(); ++i) text += messages[i] + "\n";
-  g_messages_seen = messages.size();
+  for (const gpu::Instancing path : {gpu::Instancing::kNever, gpu::Instancing::kAlways}) {
+    const auto& messages = SharedGpu(path).ValidationMessages();
+    std::size_t& seen = g_messages_seen[path == gpu::Instancing::kAlways ? 1 : 0];
+    for (std::size_t i = seen; i < messages.size(); ++i) text += messages[i] + "\n";
+    seen = messages.size();
+  }
   INFO(text);
   REQUIRE(text.empty());
 }

@@ -11,12 +11,17 @@
 
 namespace twinraster::test {
 
-// Created on first use with the validation layer and synchronization validation on.
-GpuRenderer& SharedGpu();
+// Created on first use with the validation layer and synchronization validation on; one per
+// way of feeding F to the vertex shader.
+GpuRenderer& SharedGpu(gpu::Instancing instancing = gpu::Instancing::kNever);
 
+// The list drawn three ways: on the GPU one push constant per draw, on the GPU with every run of
+// instances drawn instanced, and on the CPU twin. All three must agree.
 struct TwinResult {
-  Image gpu, cpu;
-  Comparison comparison;
+  Image gpu, gpu_instanced, cpu;
+  Comparison comparison;            // gpu against cpu
+  Comparison instanced_comparison;  // gpu_instanced against cpu
+  bool Equal() const { return comparison.Equal() && instanced_comparison.Equal(); }
   std::string Describe() const;  // size, differing pixels, and the first few that differ
 };
 
