@@ -15,40 +15,55 @@ namespace twinraster {
 
 namespace {
 
-// The pipeline after validation; `clip` replaces the vertex stage when given.
+// The pipeline after validation; `clip` replaces the vertex stage when given. The list streams
+// through in chunks (geometry.hpp): each chunk is set up by all threads, then rasterized by all
+// threads, each over its own bands, before the next chunk is set up, so memory stays bounded.
+// Every band sees every triangle in list order whatever the chunking and the thread count.
 Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options,
              CpuTimings* timings) {
   using namespace cpu;
   // More parts than bands would leave threads idle; the image does not depend on this number.
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
   const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
-
-  // Setup: vertex stage, clipping, viewport transform, triangle setup.
-  Stopwatch clock;
-  // Kept per thread from one render to the next (see GeometryScratch), up to 64 MiB.
+  // Kept per calling thread from one render to the next (see GeometryScratch).
   thread_local GeometryScratch scratch;
-  ProcessGeometry(list, threads, scratch, clip);
-  const TriangleChunks& triangles = scratch.triangles;
-  const double setup_ms = clock.Lap();
+  ChunkBudget budget;
+  if (options.chunk_triangles != 0) budget = ChunkBudget{options.chunk_triangles, options.chunk_triangles};
+  const std::vector<GeometryChunk> chunks = PlanChunks(list, budget);
 
-  // Draw: every part clears its own bands and rasterizes all triangles, in order, over them.
+  Stopwatch clock;
+  double setup_ms = 0, draw_ms = 0;
   Framebuffer fb(list.width, list.height,
                  list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
   const std::uint32_t background = PackRgba(list.background);
+  const TriangleChunks none;
   ParallelParts(threads, [&](unsigned part) {
     RasterizeBands(
-        triangles, RowShare{threads, part}, static_cast<int>(list.height),
+        none, RowShare{threads, part}, static_cast<int>(list.height),
         [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); },
-        [&](const TriangleSetup& t, int py, Span span) {
-          ShadeSpan(fb, py, span, t.depth, t.colour);
-        });
+        [](const TriangleSetup&, int, Span) {});
   });
-  const double draw_ms = clock.Lap();
+  draw_ms += clock.Lap();
+
+  for (const GeometryChunk& chunk : chunks) {
+    // Setup: vertex stage, clipping, viewport transform, triangle setup.
+    ProcessGeometry(list, chunk, threads, scratch, clip);
+    setup_ms += clock.Lap();
+    // Draw: every part rasterizes the chunk's triangles, in order, over its own bands.
+    const TriangleChunks& triangles = scratch.triangles;
+    ParallelParts(threads, [&](unsigned part) {
+      RasterizeBands(
+          triangles, RowShare{threads, part}, static_cast<int>(list.height), [](int, int) {},
+          [&](const TriangleSetup& t, int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
+    });
+    draw_ms += clock.Lap();
+  }
 
   // Readback: the colour attachment already is the Image.
   Image image = std::move(fb.colour);
   const double readback_ms = clock.Lap();
 
+  // A sliced giant mesh may have grown the scratch; don't keep that much between renders.
   if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
   if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms, threads};
   return image;

@@ -14,6 +14,9 @@ namespace twinraster {
 // threads: 0 = std::thread::hardware_concurrency(). The image is identical for any thread count.
 struct CpuOptions {
   unsigned threads = 0;
+  // Triangles (and vertices) set up per chunk; 0: the default (geometry.hpp's ChunkBudget). The
+  // image is identical for any value; tests use small ones to exercise the streaming.
+  std::size_t chunk_triangles = 0;
 };
 
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,

@@ -54,30 +54,68 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
 }
 
 std::size_t GeometryScratch::bytes() const {
-  std::size_t total = vertices.capacity() * sizeof(ShadedVertex);
-  for (const auto& chunk : triangles) total += chunk.capacity() * sizeof(TriangleSetup);
+  std::size_t total = vertices.capacity() * sizeof(ShadedVertex) + vertex_start.capacity() * sizeof(std::size_t);
+  for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
   return total;
+}
+
+std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& budget) {
+  std::vector<GeometryChunk> chunks;
+  const std::size_t n = list.draws.size();
+  const auto triangles_of = [&](std::size_t d) { return list.meshes[list.draws[d].mesh].triangles.size(); };
+  const auto vertices_of = [&](std::size_t d) { return list.meshes[list.draws[d].mesh].positions.size(); };
+  for (std::size_t d = 0; d < n;) {
+    const std::size_t t = triangles_of(d);
+    if (t > budget.triangles) {
+      for (std::size_t begin = 0; begin < t; begin += budget.triangles) {
+        chunks.push_back(GeometryChunk{.draw_begin = d,
+                                       .draw_end = d + 1,
+                                       .slice = true,
+                                       .triangle_begin = begin,
+                                       .triangle_end = std::min(t, begin + budget.triangles),
+                                       .shade_vertices = begin == 0});
+      }
+      ++d;
+      continue;
+    }
+    // Whole draws while both budgets hold; the first draw always fits.
+    const std::size_t begin = d;
+    std::size_t triangles = 0, vertices = 0;
+    while (d < n && triangles_of(d) <= budget.triangles &&
+           (d == begin || (triangles + triangles_of(d) <= budget.triangles &&
+                           vertices + vertices_of(d) <= budget.vertices))) {
+      triangles += triangles_of(d);
+      vertices += vertices_of(d);
+      ++d;
+    }
+    chunks.push_back(GeometryChunk{.draw_begin = begin, .draw_end = d});
+  }
+  return chunks;
 }
 
 TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads) {
   GeometryScratch scratch;
-  ProcessGeometry(list, threads, scratch);
+  ProcessGeometry(list, GeometryChunk{.draw_begin = 0, .draw_end = list.draws.size()}, threads, scratch);
   return std::move(scratch.triangles);
 }
 
-void ProcessGeometry(const DrawList& list, unsigned threads, GeometryScratch& scratch,
-                     const std::vector<std::vector<glm::vec4>>* clip) {
+void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
+                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip) {
   const ViewportState vp = MakeViewport(list.width, list.height);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
 
-  // Global numbering of every draw's vertices and triangles, so both loops split evenly.
-  const std::size_t draw_count = list.draws.size();
-  std::vector<std::size_t> vertex_start(draw_count + 1, 0), triangle_start(draw_count + 1, 0);
-  for (std::size_t d = 0; d < draw_count; ++d) {
-    const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
-    vertex_start[d + 1] = vertex_start[d] + mesh.positions.size();
-    triangle_start[d + 1] = triangle_start[d] + mesh.triangles.size();
+  // Numbering of the chunk's draws' vertices and triangles, so both loops split evenly. Index i
+  // stands for draw chunk.draw_begin + i.
+  const std::size_t draw_count = chunk.draw_end - chunk.draw_begin;
+  const auto mesh_of = [&](std::size_t i) -> const DrawMesh& {
+    return list.meshes[list.draws[chunk.draw_begin + i].mesh];
+  };
+  std::vector<std::size_t> triangle_start(draw_count + 1, 0);
+  for (std::size_t i = 0; i < draw_count; ++i) {
+    const std::size_t triangles = chunk.slice ? chunk.triangle_end - chunk.triangle_begin : mesh_of(i).triangles.size();
+    triangle_start[i + 1] = triangle_start[i] + triangles;
   }
+  const std::size_t first_triangle = chunk.slice ? chunk.triangle_begin : 0;
   const auto draw_of = [](const std::vector<std::size_t>& start, std::size_t global) {
     return static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), global) -
                                     start.begin()) -
@@ -89,22 +127,29 @@ void ProcessGeometry(const DrawList& list, unsigned threads, GeometryScratch& sc
     return static_cast<unsigned>(std::min<std::size_t>(threads, 1 + items / per_part));
   };
 
-  // Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices.
+  // Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices;
+  // a later slice of one draw reuses what its first slice shaded.
   std::vector<ShadedVertex>& vertices = scratch.vertices;
-  vertices.resize(vertex_start[draw_count]);
-  ParallelFor(parts_for(vertices.size(), 8192), vertices.size(),
-              [&](std::size_t begin, std::size_t end, unsigned) {
-                for (std::size_t g = begin; g < end;) {
-                  const std::size_t d = draw_of(vertex_start, g);
-                  const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
-                  const std::size_t stop = std::min(end, vertex_start[d + 1]);
-                  for (; g < stop; ++g) {
-                    const std::size_t i = g - vertex_start[d];
-                    vertices[g] = clip ? ShadeClipVertex((*clip)[d][i], vp)
-                                       : ShadeVertex(list.draws[d].F, mesh.positions[i], vp);
+  std::vector<std::size_t>& vertex_start = scratch.vertex_start;
+  if (chunk.shade_vertices) {
+    vertex_start.assign(draw_count + 1, 0);
+    for (std::size_t i = 0; i < draw_count; ++i) vertex_start[i + 1] = vertex_start[i] + mesh_of(i).positions.size();
+    vertices.resize(vertex_start[draw_count]);
+    ParallelFor(parts_for(vertices.size(), 8192), vertices.size(),
+                [&](std::size_t begin, std::size_t end, unsigned) {
+                  for (std::size_t g = begin; g < end;) {
+                    const std::size_t i = draw_of(vertex_start, g);
+                    const std::size_t d = chunk.draw_begin + i;
+                    const DrawMesh& mesh = mesh_of(i);
+                    const std::size_t stop = std::min(end, vertex_start[i + 1]);
+                    for (; g < stop; ++g) {
+                      const std::size_t v = g - vertex_start[i];
+                      vertices[g] = clip ? ShadeClipVertex((*clip)[d][v], vp)
+                                         : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
+                    }
                   }
-                }
-              });
+                });
+  }
 
   // Primitive assembly, clipping and setup; each part keeps its slice in order.
   const std::size_t triangle_count = triangle_start[draw_count];
@@ -123,12 +168,12 @@ void ProcessGeometry(const DrawList& list, unsigned threads, GeometryScratch& sc
               [&](std::size_t begin, std::size_t end, unsigned part) {
                 std::vector<TriangleSetup>& out = parts[part];
                 for (std::size_t g = begin; g < end;) {
-                  const std::size_t d = draw_of(triangle_start, g);
-                  const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
-                  const ShadedVertex* base = vertices.data() + vertex_start[d];
-                  const std::size_t stop = std::min(end, triangle_start[d + 1]);
+                  const std::size_t i = draw_of(triangle_start, g);
+                  const DrawMesh& mesh = mesh_of(i);
+                  const ShadedVertex* base = vertices.data() + vertex_start[i];
+                  const std::size_t stop = std::min(end, triangle_start[i + 1]);
                   for (; g < stop; ++g) {
-                    const std::size_t t = g - triangle_start[d];
+                    const std::size_t t = first_triangle + g - triangle_start[i];
                     const auto& tri = mesh.triangles[t];
                     AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]},
                                      PackRgba(mesh.colours[t]), vp, region, out);

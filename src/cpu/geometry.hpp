@@ -1,7 +1,8 @@
-// Stages 1 to 5 for a whole draw list, done once before rasterization: vertex stage, clipping,
-// viewport transform and triangle setup. The result lists the triangles in the order lavapipe
-// rasterizes them: draws in list order, triangles in index order, a clipped triangle's fan in
-// fan order. Parallel over vertices and over triangles; the result stays in ordered chunks.
+// Stages 1 to 5, vertex stage, clipping, viewport transform and triangle setup, for one chunk of
+// a draw list at a time, so that memory stays bounded however large the scene. The result lists
+// the chunk's triangles in the order lavapipe rasterizes them: draws in list order, triangles in
+// index order, a clipped triangle's fan in fan order. Parallel over vertices and over triangles;
+// the result stays in ordered parts.
 #pragma once
 
 #include "cpu/clipping.hpp"
@@ -31,21 +32,41 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
                       const ViewportState& vp, const PixelRect& region,
                       std::vector<TriangleSetup>& out);
 
-// The triangles in draw order, as consecutive chunks (one per setup thread: no merge copy).
+// The triangles in draw order, as consecutive parts (one per setup thread: no merge copy).
 using TriangleChunks = std::vector<std::vector<TriangleSetup>>;
 
-TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads);
+// A piece of the draw list set up at once: whole draws [draw_begin, draw_end), or, for a draw with
+// more triangles than a chunk holds, its triangles [triangle_begin, triangle_end) alone.
+struct GeometryChunk {
+  std::size_t draw_begin = 0, draw_end = 0;
+  bool slice = false;  // one draw's triangles [triangle_begin, triangle_end)
+  std::size_t triangle_begin = 0, triangle_end = 0;
+  bool shade_vertices = true;  // false: a later slice of the draw the previous chunk shaded
+};
 
-// The same, with memory that can be kept from one render to the next: fresh memory costs a page
-// fault per 4 KiB, which for small scenes is much of the work. The result is scratch.triangles.
+// About this many triangles and vertices per chunk (a chunk of whole draws may hold fewer; one
+// draw larger than this is sliced, its vertices shaded once for all its slices).
+struct ChunkBudget {
+  std::size_t triangles = std::size_t{1} << 16;
+  std::size_t vertices = std::size_t{1} << 16;
+};
+std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& budget = {});
+
+// Memory kept from one chunk, and one render, to the next: fresh memory costs a page fault per
+// 4 KiB, which for small scenes is much of the work.
 struct GeometryScratch {
   std::vector<ShadedVertex> vertices;
-  TriangleChunks triangles;
+  std::vector<std::size_t> vertex_start;  // per draw of the shaded chunk, into `vertices`
+  TriangleChunks triangles;               // the result
   std::size_t bytes() const;
 };
-// `clip`: when given, the positions another vertex stage computed (one vector per draw) replace
-// this one's F · (p, 1).
-void ProcessGeometry(const DrawList& list, unsigned threads, GeometryScratch& scratch,
-                     const std::vector<std::vector<glm::vec4>>* clip = nullptr);
+
+// Sets up one chunk into scratch.triangles. `clip`: when given, the positions another vertex
+// stage computed (one vector per draw) replace this one's F · (p, 1).
+void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
+                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip = nullptr);
+
+// The whole list as one chunk, for tests that want every triangle at once.
+TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads);
 
 }  // namespace twinraster::cpu

@@ -1,12 +1,13 @@
-// A minimal fork-join helper: runs fn(begin, end, part) on `parts` threads over contiguous slices
-// of [0, n), the calling thread taking part 0. Each part writes only its own outputs, so results
-// never depend on scheduling.
+// Fork-join over the process's thread pool (thread_pool.hpp): fn(part) for each part, or
+// fn(begin, end, part) over contiguous slices of [0, n). Each part writes only its own outputs,
+// so results never depend on scheduling.
 #pragma once
+
+#include "cpu/thread_pool.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <thread>
-#include <vector>
 
 namespace twinraster::cpu {
 
@@ -18,11 +19,7 @@ inline unsigned ResolveThreadCount(unsigned requested) {
 
 template <class Fn>
 void ParallelParts(unsigned parts, Fn&& fn) {
-  std::vector<std::thread> workers;
-  workers.reserve(parts > 0 ? parts - 1 : 0);
-  for (unsigned part = 1; part < parts; ++part) workers.emplace_back([&fn, part] { fn(part); });
-  fn(0u);
-  for (std::thread& t : workers) t.join();
+  RunParts(parts, [&fn](unsigned part) { fn(part); });
 }
 
 template <class Fn>

@@ -235,6 +235,47 @@ TEST_CASE("the image is the same for any thread count", "[cpu][render][threads]"
   CHECK(RenderOnCpu(cubes, CpuOptions{3}).rgba == cubes_one.rgba);
 }
 
+TEST_CASE("the image is the same for any chunking of the geometry, big draws sliced", "[cpu][render][chunks]") {
+  // Two draws of ~340 triangles each, and the cube scene's many small draws.
+  const DrawList list = RandomTriangles(173, 131, 300, 11u);
+  const Image whole = RenderPixelByPixel(list);
+  const DrawList cubes = CubeScene(200, 150, {{{-1.5, 0, 7}}, {{1.25, 2, 7.5}}, {{0, -1, 6}}, {{0.5, 0.5, 9}}});
+  const Image cubes_whole = RenderOnCpu(cubes, CpuOptions{1, 1u << 20});
+  for (const std::size_t chunk : {1u, 5u, 12u, 13u, 100u, 299u, 1000u}) {
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      INFO("chunk " << chunk << ", threads " << threads);
+      CHECK(RenderOnCpu(list, CpuOptions{threads, chunk}).rgba == whole.rgba);
+      CHECK(RenderOnCpu(cubes, CpuOptions{threads, chunk}).rgba == cubes_whole.rgba);
+    }
+  }
+}
+
+TEST_CASE("PlanChunks: whole draws within the budgets, bigger draws sliced, vertices shaded once", "[cpu][chunks]") {
+  DrawList list;
+  DrawMesh small, big;
+  small.positions.assign(4, glm::vec3(0.0f));
+  small.triangles.assign(3, {0, 1, 2});
+  big.positions.assign(30, glm::vec3(0.0f));
+  big.triangles.assign(25, {0, 1, 2});
+  list.meshes = {small, big};
+  for (const std::uint32_t mesh : {0u, 0u, 0u, 1u, 0u}) list.draws.push_back(DrawCall{mesh, glm::mat4(1.0f)});
+  // Budget 10 triangles and 10 vertices: two small draws (6 triangles, 8 vertices) fit, a third
+  // would break the vertex budget; the big draw is sliced 10 + 10 + 5.
+  const std::vector<cpu::GeometryChunk> chunks = cpu::PlanChunks(list, cpu::ChunkBudget{10, 10});
+  REQUIRE(chunks.size() == 6);
+  REQUIRE((chunks[0].draw_begin == 0 && chunks[0].draw_end == 2 && !chunks[0].slice));
+  REQUIRE((chunks[1].draw_begin == 2 && chunks[1].draw_end == 3 && !chunks[1].slice));
+  for (int i = 0; i < 3; ++i) {
+    const cpu::GeometryChunk& c = chunks[static_cast<std::size_t>(2 + i)];
+    INFO("slice " << i);
+    REQUIRE((c.slice && c.draw_begin == 3 && c.draw_end == 4));
+    REQUIRE(c.triangle_begin == static_cast<std::size_t>(10 * i));
+    REQUIRE(c.triangle_end == std::min<std::size_t>(25, static_cast<std::size_t>(10 * i + 10)));
+    REQUIRE(c.shade_vertices == (i == 0));
+  }
+  REQUIRE((chunks[5].draw_begin == 4 && chunks[5].draw_end == 5 && chunks[5].shade_vertices));
+}
+
 TEST_CASE("spans, bands and threads give what pixel-by-pixel evaluation gives", "[cpu][render]") {
   for (unsigned seed : {1u, 2u, 3u}) {
     const DrawList list = RandomTriangles(120, 90, 200, seed);
