@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <utility>
@@ -288,6 +289,31 @@ TEST_CASE("spans, bands and threads give what pixel-by-pixel evaluation gives", 
     CHECK(timings.setup_ms >= 0.0);
     CHECK(timings.draw_ms > 0.0);
   }
+}
+
+TEST_CASE("narrow triangles, scanned pixel by pixel, give what the span walker's rule gives", "[cpu][render]") {
+  // Thousands of triangles a few pixels wide at sub-pixel positions, many exactly on pixel
+  // centres' rows and columns, some degenerate.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> centre(-1.1f, 1.1f), size(0.0f, 0.2f), depth(0.1f, 0.9f);
+  DrawList list;
+  list.width = 64;
+  list.height = 48;
+  DrawMesh mesh;
+  for (int t = 0; t < 4000; ++t) {
+    const float cx = centre(rng), cy = centre(rng), z = depth(rng);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (int k = 0; k < 3; ++k) {
+      float x = cx + size(rng), y = cy + size(rng);
+      if (t % 5 == 0) x = std::round(x * 32.0f) / 32.0f;  // on a pixel boundary's column
+      mesh.positions.push_back({x, y, z});
+    }
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.colours.push_back({static_cast<std::uint8_t>(t), static_cast<std::uint8_t>(t >> 8), 7});
+  }
+  list.meshes = {mesh};
+  list.draws = {DrawCall{0, glm::mat4(1.0f)}};
+  CHECK(RenderOnCpu(list, CpuOptions{2}).rgba == RenderPixelByPixel(list).rgba);
 }
 
 TEST_CASE("malformed draw lists are refused", "[cpu][render]") {
