@@ -15,7 +15,8 @@ packages=(
   libstb-dev                     # stb_image (PNG in, for compare)
   libdeflate-dev                 # PNG compression
   catch2                         # unit tests (Catch2 v2 on Debian 12)
-  nlohmann-json3-dev             # scene files
+  nlohmann-json3-dev             # scene files: the locating parser behind every error message
+  libsimdjson-dev                # scene files: the fast parser
   libcli11-dev                   # the command line
   clang libclang-rt-14-dev       # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/

@@ -80,30 +80,6 @@ std::string ProblemOf(const std::string& what) {
   return bracket == std::string::npos ? what : what.substr(bracket + 2);
 }
 
-// A JSON text is UTF-8 without NUL bytes, starting (after white space and an optional byte-order
-// mark) with a printable character. Anything else, a PNG or an executable handed over by mistake,
-// is reported as what it is instead of as a puzzling syntax error deep inside it.
-void RejectBinary(std::string_view text, const std::string& file_name) {
-  std::size_t first = 0;
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") first = 3;
-  while (first < text.size() && (text[first] == ' ' || text[first] == '\t' || text[first] == '\n' || text[first] == '\r'))
-    ++first;
-  std::optional<std::size_t> bad;
-  if (first < text.size()) {
-    const auto c = static_cast<unsigned char>(text[first]);
-    if (c < 0x20 || c >= 0x7F) bad = first;
-  }
-  if (!bad) {
-    const std::size_t nul = text.find('\0');
-    if (nul != std::string_view::npos) bad = nul;
-  }
-  if (!bad) return;
-  char byte[8];
-  std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(text[*bad])));
-  throw SceneError(file_name, LineAndColumnAt(text, *bad),
-                   std::string("not JSON text: binary data (byte ") + byte + ")");
-}
-
 // Builds the document as nlohmann's own DOM parser would, and also knows the JSON path of the
 // value being read and the line of every key of the objects still open.
 class LocatingBuilder {
@@ -224,6 +200,30 @@ class LocatingBuilder {
 
 }  // namespace
 
+// A JSON text is UTF-8 without NUL bytes, starting (after white space and an optional byte-order
+// mark) with a printable character. Anything else, a PNG or an executable handed over by mistake,
+// is reported as what it is instead of as a puzzling syntax error deep inside it.
+void RejectBinaryText(std::string_view text, const std::string& file_name) {
+  std::size_t first = 0;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") first = 3;
+  while (first < text.size() && (text[first] == ' ' || text[first] == '\t' || text[first] == '\n' || text[first] == '\r'))
+    ++first;
+  std::optional<std::size_t> bad;
+  if (first < text.size()) {
+    const auto c = static_cast<unsigned char>(text[first]);
+    if (c < 0x20 || c >= 0x7F) bad = first;
+  }
+  if (!bad) {
+    const std::size_t nul = text.find('\0');
+    if (nul != std::string_view::npos) bad = nul;
+  }
+  if (!bad) return;
+  char byte[8];
+  std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(text[*bad])));
+  throw SceneError(file_name, LineAndColumnAt(text, *bad),
+                   std::string("not JSON text: binary data (byte ") + byte + ")");
+}
+
 std::string JsonPathKey(const std::string& path, std::string_view key) {
   const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
@@ -238,7 +238,7 @@ std::string JsonPathIndex(const std::string& path, std::size_t index) {
 }
 
 nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name) {
-  RejectBinary(text, file_name);
+  RejectBinaryText(text, file_name);
   ReadPosition position;
   LocatingBuilder builder(file_name, position);
   const CountingIterator begin(text.data(), &position), end(text.data() + text.size(), nullptr);
@@ -247,6 +247,10 @@ nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_
   if (builder.error()) throw *builder.error();
   const std::size_t byte = builder.syntax_error_byte();
   throw SceneError(file_name, LineAndColumnAt(text, byte == 0 ? 0 : byte - 1), builder.syntax_problem());
+}
+
+void LocateJsonProblem(std::string_view text, const std::string& file_name) {
+  (void)ParseJsonDocument(text, file_name);
 }
 
 }  // namespace twinraster

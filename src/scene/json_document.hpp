@@ -13,8 +13,16 @@ namespace twinraster {
 // Deeper nesting than any scene needs; refusing it bounds the work a hostile file can cause.
 inline constexpr std::size_t kMaxJsonDepth = 64;
 
+// Refuses text that is not JSON text at all (NUL bytes, or binary data where JSON must start),
+// naming the first offending byte.
+void RejectBinaryText(std::string_view text, const std::string& file_name);
+
 // `file_name` is only used in error messages.
 nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name);
+
+// The same, for text another parser found fault with: throws the located SceneError for any
+// problem this parser knows, and returns if it finds none.
+void LocateJsonProblem(std::string_view text, const std::string& file_name);
 
 // JSON paths as every scene error prints them: `models.cube.triangles[3][2]`; a key that is not
 // an identifier is bracketed and quoted (`models["my cube"]`).

@@ -2,12 +2,8 @@
 
 #include "scene/json_document.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace twinraster {
@@ -23,33 +19,41 @@ std::string Quoted(std::string_view s) {
 
 }  // namespace
 
-std::string TypeName(const nlohmann::json& value) {
-  switch (value.type()) {
-    case nlohmann::json::value_t::object: return "an object";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::string: return "a string";
-    case nlohmann::json::value_t::boolean: return "a boolean";
-    case nlohmann::json::value_t::null: return "null";
+std::string JsonReader::path() const {
+  if (parent_ == nullptr) return "";
+  const std::string above = parent_->path();
+  return index_ == kNotAnElement ? JsonPathKey(above, key_) : JsonPathIndex(above, index_);
+}
+
+void JsonReader::Fail(const std::string& problem) const {
+  const std::string where = path();
+  throw SceneError(*file_, where.empty() ? "(top level)" : where, problem);
+}
+
+bool JsonReader::IsObject() const { return value_.is_object(); }
+bool JsonReader::IsArray() const { return value_.is_array(); }
+bool JsonReader::IsString() const { return value_.is_string(); }
+bool JsonReader::IsNumber() const { return value_.is_number(); }
+
+std::string JsonReader::TypeName() const {
+  switch (value_.type()) {
+    case simdjson::dom::element_type::OBJECT: return "an object";
+    case simdjson::dom::element_type::ARRAY: return "an array";
+    case simdjson::dom::element_type::STRING: return "a string";
+    case simdjson::dom::element_type::BOOL: return "a boolean";
+    case simdjson::dom::element_type::NULL_VALUE: return "null";
     default: return "a number";
   }
 }
 
-void JsonReader::Fail(const std::string& problem) const {
-  throw SceneError(file_, path_.empty() ? "(top level)" : path_, problem);
-}
-
-bool JsonReader::IsObject() const { return value_->is_object(); }
-bool JsonReader::IsArray() const { return value_->is_array(); }
-bool JsonReader::IsString() const { return value_->is_string(); }
-bool JsonReader::IsNumber() const { return value_->is_number(); }
-
 void JsonReader::ExpectObject() const {
-  if (!value_->is_object()) Fail("expected an object, found " + TypeName(*value_));
+  if (!value_.is_object()) Fail("expected an object, found " + TypeName());
 }
 
 void JsonReader::ExpectObject(std::initializer_list<std::string_view> allowed) const {
   ExpectObject();
-  for (const auto& [key, unused] : value_->items()) {
+  for (const auto field : Object()) {
+    const std::string_view key = field.key;
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string problem = "unknown key " + Quoted(key);
     const std::string suggestion = ClosestMatch(key, allowed);
@@ -61,22 +65,32 @@ void JsonReader::ExpectObject(std::initializer_list<std::string_view> allowed) c
   }
 }
 
-std::optional<JsonReader> JsonReader::Find(std::string_view key) const {
+std::vector<std::string_view> JsonReader::Keys() const {
   ExpectObject();
-  const auto it = value_->find(key);
-  if (it == value_->end()) return std::nullopt;
-  return JsonReader(*it, file_, JsonPathKey(path_, key));
+  std::vector<std::string_view> keys;
+  for (const auto field : Object()) keys.push_back(field.key);
+  std::sort(keys.begin(), keys.end());
+  return keys;
 }
 
-JsonReader JsonReader::Required(std::string_view key) const {
+std::optional<JsonReader> JsonReader::Find(std::string_view key) const& {
+  ExpectObject();
+  // The key as stored in the document, so that it outlives this call.
+  for (const auto field : Object()) {
+    if (field.key == key) return JsonReader(field.value, *this, field.key);
+  }
+  return std::nullopt;
+}
+
+JsonReader JsonReader::Required(std::string_view key) const& {
   std::optional<JsonReader> found = Find(key);
   if (!found) Fail("missing required key " + Quoted(key));
   return *found;
 }
 
 std::size_t JsonReader::ExpectArray() const {
-  if (!value_->is_array()) Fail("expected an array, found " + TypeName(*value_));
-  return value_->size();
+  if (!value_.is_array()) Fail(std::string("expected an array, found ") + TypeName());
+  return Array().size();
 }
 
 std::size_t JsonReader::ExpectArray(std::size_t size) const {
@@ -87,23 +101,23 @@ std::size_t JsonReader::ExpectArray(std::size_t size) const {
   return n;
 }
 
-JsonReader JsonReader::operator[](std::size_t index) const {
-  return JsonReader((*value_)[index], file_, JsonPathIndex(path_, index));
+JsonReader JsonReader::operator[](std::size_t index) const& {
+  return JsonReader(Array().at(index).value_unsafe(), *this, index);
 }
 
 std::string JsonReader::String() const {
-  if (!value_->is_string()) Fail("expected a string, found " + TypeName(*value_));
-  return value_->get<std::string>();
+  if (!value_.is_string()) Fail(std::string("expected a string, found ") + TypeName());
+  return std::string(value_.get_string().value_unsafe());
 }
 
 bool JsonReader::Boolean() const {
-  if (!value_->is_boolean()) Fail("expected true or false, found " + TypeName(*value_));
-  return value_->get<bool>();
+  if (!value_.is_bool()) Fail(std::string("expected true or false, found ") + TypeName());
+  return value_.get_bool().value_unsafe();
 }
 
 double JsonReader::Number() const {
-  if (!value_->is_number()) Fail("expected a number, found " + TypeName(*value_));
-  const double x = value_->get<double>();
+  if (!value_.is_number()) Fail(std::string("expected a number, found ") + TypeName());
+  const double x = value_.get_double().value_unsafe();
   if (!std::isfinite(x)) Fail("number is not finite");
   if (std::abs(x) > kMaxMagnitude) {
     std::ostringstream s;
@@ -129,20 +143,20 @@ double JsonReader::Positive() const {
 }
 
 std::int64_t JsonReader::Integer(std::int64_t min, std::int64_t max) const {
-  const std::string range = " in " + std::to_string(min) + ".." + std::to_string(max);
-  if (!value_->is_number()) Fail("expected an integer" + range + ", found " + TypeName(*value_));
-  const double x = value_->get<double>();
+  const auto range = [&] { return " in " + std::to_string(min) + ".." + std::to_string(max); };
+  if (!value_.is_number()) Fail("expected an integer" + range() + ", found " + TypeName());
+  const double x = value_.get_double().value_unsafe();
   const bool integral = std::isfinite(x) && x == std::floor(x);
   if (!integral || x < static_cast<double>(min) || x > static_cast<double>(max)) {
     std::ostringstream s;
-    s << "expected an integer" << range << ", found " << x;
+    s << "expected an integer" << range() << ", found " << x;
     Fail(s.str());
   }
   return static_cast<std::int64_t>(x);
 }
 
 glm::dvec3 JsonReader::Vec3() const {
-  if (!value_->is_array()) Fail("expected [x, y, z], found " + TypeName(*value_));
+  if (!value_.is_array()) Fail(std::string("expected [x, y, z], found ") + TypeName());
   ExpectArray(3);
   return glm::dvec3((*this)[0].Number(), (*this)[1].Number(), (*this)[2].Number());
 }

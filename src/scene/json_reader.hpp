@@ -1,11 +1,12 @@
-// Checked reading of a parsed JSON document: every accessor knows its JSON path, so any problem
-// becomes a SceneError naming the file, the path and what was expected.
+// Checked reading of a parsed JSON document (simdjson's DOM): every accessor knows its JSON path,
+// so any problem becomes a SceneError naming the file, the path and what was expected. Paths are
+// built only when something fails: a reader refers to the reader it came from.
 #pragma once
 
 #include "base/closest_match.hpp"
 #include "scene/scene_error.hpp"
 
-#include <nlohmann/json_fwd.hpp>
+#include <simdjson.h>
 
 #include <glm/vec3.hpp>
 
@@ -28,11 +29,10 @@ inline constexpr double kMinPositive = 1e-9;
 
 class JsonReader {
  public:
-  JsonReader(const nlohmann::json& value, std::string file, std::string path)
-      : value_(&value), file_(std::move(file)), path_(std::move(path)) {}
+  // The document's root; `file` must outlive every reader made from this one.
+  JsonReader(simdjson::dom::element value, const std::string& file) : value_(value), file_(&file) {}
 
-  const std::string& path() const { return path_; }
-  const nlohmann::json& json() const { return *value_; }
+  std::string path() const;  // e.g. "instances[1].transform.scale"; "" at the root
 
   [[noreturn]] void Fail(const std::string& problem) const;
 
@@ -40,17 +40,34 @@ class JsonReader {
   bool IsArray() const;
   bool IsString() const;
   bool IsNumber() const;
+  std::string TypeName() const;  // "an object", "a string", ... for messages
 
   // An object whose keys must all be among `allowed`; an unknown key is an error that names the
   // closest allowed key.
   void ExpectObject(std::initializer_list<std::string_view> allowed) const;
   void ExpectObject() const;  // any keys
-  std::optional<JsonReader> Find(std::string_view key) const;
-  JsonReader Required(std::string_view key) const;
+  std::vector<std::string_view> Keys() const;  // an object's keys, sorted
+
+  // A child refers to its parent, so children of temporaries are not allowed.
+  std::optional<JsonReader> Find(std::string_view key) const&;
+  std::optional<JsonReader> Find(std::string_view key) const&& = delete;
+  JsonReader Required(std::string_view key) const&;
+  JsonReader Required(std::string_view key) const&& = delete;
 
   std::size_t ExpectArray() const;  // returns the size
   std::size_t ExpectArray(std::size_t size) const;
-  JsonReader operator[](std::size_t index) const;
+  JsonReader operator[](std::size_t index) const&;  // walks the array from its start: for short arrays
+  JsonReader operator[](std::size_t index) const&& = delete;
+  // fn(const JsonReader& element) for each element in order, for arrays of any length.
+  template <class Fn>
+  void ForEachElement(Fn&& fn) const {
+    ExpectArray();
+    std::size_t index = 0;
+    for (const simdjson::dom::element element : Array()) {
+      const JsonReader child(element, *this, index++);
+      fn(child);
+    }
+  }
 
   std::string String() const;
   bool Boolean() const;
@@ -60,11 +77,21 @@ class JsonReader {
   glm::dvec3 Vec3() const;
 
  private:
-  const nlohmann::json* value_;
-  std::string file_;
-  std::string path_;
-};
+  // Copies: iterating a temporary simdjson_result's value would dangle. Callers checked the type.
+  simdjson::dom::object Object() const { return value_.get_object().value_unsafe(); }
+  simdjson::dom::array Array() const { return value_.get_array().value_unsafe(); }
 
-std::string TypeName(const nlohmann::json& value);
+  JsonReader(simdjson::dom::element value, const JsonReader& parent, std::string_view key)
+      : value_(value), file_(parent.file_), parent_(&parent), key_(key) {}
+  JsonReader(simdjson::dom::element value, const JsonReader& parent, std::size_t index)
+      : value_(value), file_(parent.file_), parent_(&parent), index_(index) {}
+
+  simdjson::dom::element value_;
+  const std::string* file_;
+  const JsonReader* parent_ = nullptr;
+  std::string_view key_;              // this value's key in its parent object, or
+  std::size_t index_ = kNotAnElement;  // its index in its parent array
+  static constexpr std::size_t kNotAnElement = static_cast<std::size_t>(-1);
+};
 
 }  // namespace twinraster

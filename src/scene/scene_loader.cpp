@@ -4,7 +4,7 @@
 #include "scene/json_reader.hpp"
 #include "scene/rotation.hpp"
 
-#include <nlohmann/json.hpp>
+#include <simdjson.h>
 
 #include <glm/geometric.hpp>
 
@@ -44,7 +44,7 @@ Rgb8 ReadColour(const JsonReader& r) {
            (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
            "; use a name or [r, g, b] with 0..255");
   }
-  if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + TypeName(r.json()));
+  if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + r.TypeName());
   r.ExpectArray(3);
   const auto channel = [&](std::size_t i) { return static_cast<std::uint8_t>(r[i].Integer(0, 255)); };
   return Rgb8{channel(0), channel(1), channel(2)};
@@ -74,7 +74,7 @@ glm::dmat3 ReadRotation(const JsonReader& r) {
     return rotation;
   }
   if (!r.IsObject()) {
-    r.Fail("expected {\"axis\": ..., \"degrees\": ...} or a list of them, found " + TypeName(r.json()));
+    r.Fail("expected {\"axis\": ..., \"degrees\": ...} or a list of them, found " + r.TypeName());
   }
   r.ExpectObject({"axis", "degrees", "steps", "reorthonormalize"});
   const glm::dvec3 axis = ReadAxis(r.Required("axis"));
@@ -94,7 +94,7 @@ glm::dvec3 ReadScale(const JsonReader& r) {
     const double s = r.Number();
     return {s, s, s};
   }
-  if (!r.IsArray()) r.Fail("expected a number or [sx, sy, sz], found " + TypeName(r.json()));
+  if (!r.IsArray()) r.Fail("expected a number or [sx, sy, sz], found " + r.TypeName());
   return r.Vec3();
 }
 
@@ -168,13 +168,13 @@ Model ReadModel(const JsonReader& r, const std::string& name) {
   model.name = name;
   const JsonReader vertices = r.Required("vertices");
   const std::size_t vertex_count = vertices.ExpectArray();
-  for (std::size_t i = 0; i < vertex_count; ++i) model.vertices.push_back(vertices[i].Vec3());
+  model.vertices.reserve(vertex_count);
+  vertices.ForEachElement([&](const JsonReader& v) { model.vertices.push_back(v.Vec3()); });
 
   const JsonReader triangles = r.Required("triangles");
-  const std::size_t triangle_count = triangles.ExpectArray();
-  for (std::size_t i = 0; i < triangle_count; ++i) {
-    const JsonReader t = triangles[i];
-    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + TypeName(t.json()));
+  model.triangles.reserve(triangles.ExpectArray());
+  triangles.ForEachElement([&](const JsonReader& t) {
+    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + t.TypeName());
     t.ExpectArray(4);
     Triangle triangle;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -184,25 +184,27 @@ Model ReadModel(const JsonReader& r, const std::string& name) {
     }
     triangle.colour = ReadColour(t[3]);
     model.triangles.push_back(triangle);
-  }
+  });
   return model;
 }
 
-Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models) {
+// Model names to indices, looked up once per instance.
+using ModelIndex = std::map<std::string, std::size_t, std::less<>>;
+
+Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, const ModelIndex& index) {
   r.ExpectObject({"model", "transform"});
   Instance instance;
   const JsonReader model = r.Required("model");
   const std::string name = model.String();
-  std::vector<std::string> names;
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    names.push_back(models[i].name);
-    if (models[i].name == name) instance.model = i;
-  }
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
+  const auto found = index.find(name);
+  if (found == index.end()) {
+    std::vector<std::string> names;
+    for (const Model& m : models) names.push_back(m.name);
     const std::string suggestion = ClosestMatch(name, names);
     model.Fail("no model named \"" + name + "\"" +
                (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
   }
+  instance.model = found->second;
   if (auto transform = r.Find("transform")) {
     transform->ExpectObject({"scale", "rotation", "translation"});
     if (auto scale = transform->Find("scale")) instance.transform.scale = ReadScale(*scale);
@@ -212,11 +214,53 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models) {
   return instance;
 }
 
-}  // namespace
+// simdjson reads a well-formed scene fast but says little about where a problem is. Whatever it
+// rejects, and what it does not look for (duplicate keys, nesting deeper than kMaxJsonDepth), is
+// parsed again by json_document's locating parser, whose message names the line or the path.
+[[noreturn]] void ExplainBadJson(std::string_view text, const std::string& file_name, const std::string& problem) {
+  LocateJsonProblem(text, file_name);  // throws for every problem it knows
+  throw SceneError(file_name, "(file)", problem);
+}
 
-Scene ParseScene(std::string_view json_text, const std::string& file_name) {
-  const nlohmann::json document = ParseJsonDocument(json_text, file_name);
-  const JsonReader root(document, file_name, "");
+// True when some object repeats a key or the nesting is deep enough that the locating parser
+// should look (it refuses kMaxJsonDepth levels; this errs on the side of looking).
+bool NeedsLocatingParser(simdjson::dom::element root) {
+  std::vector<std::pair<simdjson::dom::element, std::size_t>> stack{{root, 1}};
+  std::vector<std::string_view> keys;
+  while (!stack.empty()) {
+    const auto [element, depth] = stack.back();
+    stack.pop_back();
+    if (depth + 2 >= kMaxJsonDepth && (element.is_object() || element.is_array())) return true;
+    if (element.is_array()) {
+      const simdjson::dom::array array = element.get_array().value_unsafe();
+      for (const simdjson::dom::element child : array) {
+        if (child.is_object() || child.is_array()) stack.emplace_back(child, depth + 1);
+      }
+    } else if (element.is_object()) {
+      keys.clear();
+      const simdjson::dom::object object = element.get_object().value_unsafe();
+      for (const auto field : object) {
+        keys.push_back(field.key);
+        if (field.value.is_object() || field.value.is_array()) stack.emplace_back(field.value, depth + 1);
+      }
+      std::sort(keys.begin(), keys.end());
+      if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return true;
+    }
+  }
+  return false;
+}
+
+Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name) {
+  const std::string_view view(text.data(), text.size());
+  RejectBinaryText(view, file_name);
+  simdjson::dom::parser parser;
+  simdjson::dom::element document;
+  if (const simdjson::error_code error = parser.parse(text).get(document); error != simdjson::SUCCESS) {
+    ExplainBadJson(view, file_name, simdjson::error_message(error));
+  }
+  if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem
+
+  const JsonReader root(document, file_name);
   root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances"});
   if (auto comment = root.Find("comment")) comment->String();
 
@@ -228,16 +272,24 @@ Scene ParseScene(std::string_view json_text, const std::string& file_name) {
   scene.camera = ReadCamera(root.Required("camera"));
 
   const JsonReader models = root.Required("models");
-  models.ExpectObject();
-  for (const auto& [name, value] : models.json().items()) {
-    scene.models.push_back(ReadModel(*models.Find(name), name));
+  ModelIndex index;
+  for (const std::string_view name : models.Keys()) {
+    index.emplace(std::string(name), scene.models.size());
+    scene.models.push_back(ReadModel(*models.Find(name), std::string(name)));
   }
 
   const JsonReader instances = root.Required("instances");
-  const std::size_t count = instances.ExpectArray();
-  for (std::size_t i = 0; i < count; ++i) scene.instances.push_back(ReadInstance(instances[i], scene.models));
-
+  scene.instances.reserve(instances.ExpectArray());
+  instances.ForEachElement([&](const JsonReader& instance) {
+    scene.instances.push_back(ReadInstance(instance, scene.models, index));
+  });
   return scene;
+}
+
+}  // namespace
+
+Scene ParseScene(std::string_view json_text, const std::string& file_name) {
+  return ReadScene(simdjson::padded_string(json_text), file_name);
 }
 
 Scene LoadScene(const std::filesystem::path& file) {
@@ -250,12 +302,11 @@ Scene LoadScene(const std::filesystem::path& file) {
   if (std::filesystem::file_size(file, ec) > kMaxSceneBytes) {
     throw SceneError(file.string(), "(file)", "larger than 256 MiB: not a scene file");
   }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string(), "(file)", std::string("cannot open the file for reading: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(file.string(), "(file)", "read error");
-  return ParseScene(text.str(), file.string());
+  simdjson::padded_string text;
+  if (const simdjson::error_code error = simdjson::padded_string::load(file.string()).get(text); error != simdjson::SUCCESS) {
+    throw SceneError(file.string(), "(file)", std::string("cannot read the file: ") + simdjson::error_message(error));
+  }
+  return ReadScene(text, file.string());
 }
 
 }  // namespace twinraster
