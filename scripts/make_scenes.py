@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the generated scene files: scenes/hard/*.json (the cases that break naive renderers) and
-scenes/bench/*.json (the benchmark's large scene). Run from the repository root; the output is
+"""Writes the generated scene files: scenes/hard/*.json (the cases that break naive renderers),
+scenes/bench/*.json (the benchmark's large scene) and the grid scenes (scenes/one-million-cubes.json,
+scenes/catlike-grid.json). Run from the repository root; the output is
 committed, so this only needs to run again when a case changes."""
 import json
 import math
@@ -222,6 +223,33 @@ def bench_scene():
         f.write("\n")
 
 
+def grid_scenes():
+    # The chapter's question, "What if we wanted to render one million cubes?", as one instance
+    # with a 100 x 100 x 100 grid: cubes 0.6 wide, 1 apart, seen whole from above a corner.
+    s = hd("One million cubes (the chapter's question, section 'Models and Instances'): one instance of the "
+           "chapter's cube with a 100 x 100 x 100 grid, cubes 0.6 wide and 1 apart, 12 million triangles.")
+    s["depth"] = {"near": 1, "far": 400}
+    s["camera"] = {"eye": [90, 70, -160], "center": [0, 0, 0], "up": [0, 1, 0]}
+    s["models"] = {"cube": cube()}
+    s["instances"] = [{"model": "cube", "transform": {"scale": 0.3},
+                       "grid": {"count": [100, 100, 100], "spacing": [1, 1, 1]}}]
+    write("scenes/one-million-cubes.json", s)
+
+    # Catlike Coding's transformation grid (Rendering 1): 10 x 10 x 10 points 1 apart, centred on
+    # the origin, seen by a camera on the -z side with a 60-degree vertical field of view (Unity's
+    # default): Vh = 2 tan 30 at d = 1.
+    s = small("Catlike Coding, 'Rendering 1: Matrices': the 10 x 10 x 10 transformation grid, points 1 apart "
+              "centred on the origin (GetCoordinates), as cubes 0.5 wide; camera at (0, 1, -16), 60-degree field of view.",
+              800, 600)
+    vh = 2 * math.tan(math.radians(30))
+    s["viewport"] = {"width": vh * 800 / 600, "height": vh, "distance": 1}
+    s["camera"] = {"position": [0, 1, -16]}
+    s["models"] = {"cube": cube()}
+    s["instances"] = [{"model": "cube", "transform": {"scale": 0.25},
+                       "grid": {"count": [10, 10, 10], "spacing": [1, 1, 1]}}]
+    write("scenes/catlike-grid.json", s)
+
+
 if __name__ == "__main__":
     far_scenes()
     near_plane_scenes()
@@ -229,3 +257,4 @@ if __name__ == "__main__":
     degenerate_scene()
     transform_scenes()
     bench_scene()
+    grid_scenes()

@@ -68,6 +68,24 @@ struct Instance {
   Transform transform;
 };
 
+// The chapter's answer to "What if we wanted to render one million cubes?" is instances; a grid
+// writes many of them at once (Catlike's centred grid). An instance written with
+// "grid": {"count": [nx, ny, nz], "spacing": [sx, sy, sz]} stands for nx·ny·nz copies: copy
+// (i, j, k) is moved by ((i - (nx-1)/2)·sx, (j - (ny-1)/2)·sy, (k - (nz-1)/2)·sz) in world space
+// on top of the instance's own translation, keeping its scale and rotation. The loader writes the
+// copies out as Scene::instances [first, first + nx·ny·nz), i fastest, and keeps this record.
+struct InstanceGrid {
+  std::size_t written = 0;  // the instance's index among the file's "instances"
+  std::size_t first = 0;    // its first copy in Scene::instances
+  std::array<std::uint32_t, 3> count{1, 1, 1};
+  glm::dvec3 spacing{0, 0, 0};
+  std::size_t copies() const { return std::size_t{count[0]} * count[1] * count[2]; }
+};
+
+// At most this many instances in a scene, grids' copies included: 2^24, far more than a
+// 2-core machine draws in a second, and F for each still fits comfortably in memory (1 GiB).
+inline constexpr std::size_t kMaxInstances = std::size_t{1} << 24;
+
 // The camera's own transform in the world (C_T, C_R); M_Camera is its inverse.
 struct Camera {
   glm::dvec3 position{0, 0, 0};
@@ -81,7 +99,8 @@ struct Scene {
   Depth depth;
   Camera camera;
   std::vector<Model> models;
-  std::vector<Instance> instances;
+  std::vector<Instance> instances;  // every copy of every grid written out
+  std::vector<InstanceGrid> grids;  // which instances came from a grid, in order
 };
 
 }  // namespace twinraster

@@ -192,7 +192,7 @@ Model ReadModel(const JsonReader& r, const std::string& name) {
 using ModelIndex = std::map<std::string, std::size_t, std::less<>>;
 
 Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, const ModelIndex& index) {
-  r.ExpectObject({"model", "transform"});
+  r.ExpectObject({"model", "transform", "grid"});
   Instance instance;
   const JsonReader model = r.Required("model");
   const std::string name = model.String();
@@ -212,6 +212,40 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
     if (auto translation = transform->Find("translation")) instance.transform.translation = translation->Vec3();
   }
   return instance;
+}
+
+// "grid": {"count": [nx, ny, nz], "spacing": [sx, sy, sz]}; `room` is how many more instances the
+// scene may still have.
+InstanceGrid ReadGrid(const JsonReader& r, std::size_t room) {
+  r.ExpectObject({"count", "spacing"});
+  InstanceGrid grid;
+  const JsonReader count = r.Required("count");
+  count.ExpectArray(3);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    grid.count[axis] = static_cast<std::uint32_t>(count[axis].Integer(1, static_cast<std::int64_t>(kMaxInstances)));
+  }
+  if (grid.copies() > room) {
+    count.Fail("the scene would have more than " + std::to_string(kMaxInstances) + " instances (this grid alone is " +
+               std::to_string(grid.copies()) + ")");
+  }
+  grid.spacing = r.Required("spacing").Vec3();
+  return grid;
+}
+
+// The grid's copies of `instance`, appended in i-fastest order.
+void AppendGridCopies(const Instance& instance, const InstanceGrid& grid, std::vector<Instance>& out) {
+  const auto offset = [&](std::size_t axis, std::uint32_t n) {
+    return (static_cast<double>(n) - (static_cast<double>(grid.count[axis]) - 1.0) / 2.0) * grid.spacing[static_cast<glm::length_t>(axis)];
+  };
+  for (std::uint32_t k = 0; k < grid.count[2]; ++k) {
+    for (std::uint32_t j = 0; j < grid.count[1]; ++j) {
+      for (std::uint32_t i = 0; i < grid.count[0]; ++i) {
+        Instance copy = instance;
+        copy.transform.translation += glm::dvec3(offset(0, i), offset(1, j), offset(2, k));
+        out.push_back(copy);
+      }
+    }
+  }
 }
 
 // simdjson reads a well-formed scene fast but says little about where a problem is. Whatever it
@@ -279,9 +313,29 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   }
 
   const JsonReader instances = root.Required("instances");
-  scene.instances.reserve(instances.ExpectArray());
-  instances.ForEachElement([&](const JsonReader& instance) {
-    scene.instances.push_back(ReadInstance(instance, scene.models, index));
+  const std::size_t written = instances.ExpectArray();
+  if (written > kMaxInstances) {
+    instances.Fail("more than " + std::to_string(kMaxInstances) + " instances (" + std::to_string(written) + ")");
+  }
+  scene.instances.reserve(written);
+  std::size_t at = 0;
+  instances.ForEachElement([&](const JsonReader& r) {
+    const Instance instance = ReadInstance(r, scene.models, index);
+    if (auto grid_reader = r.Find("grid")) {
+      // Room for this grid, and one instance for each written instance still to come.
+      const std::size_t later = written - at - 1;
+      const std::size_t used = scene.instances.size() + later;
+      InstanceGrid grid = ReadGrid(*grid_reader, used < kMaxInstances ? kMaxInstances - used : 0);
+      grid.written = at;
+      grid.first = scene.instances.size();
+      const std::size_t needed = scene.instances.size() + grid.copies() + later;
+      if (needed > scene.instances.capacity()) scene.instances.reserve(std::max(needed, 2 * scene.instances.capacity()));
+      AppendGridCopies(instance, grid, scene.instances);
+      scene.grids.push_back(grid);
+    } else {
+      scene.instances.push_back(instance);
+    }
+    ++at;
   });
   return scene;
 }

@@ -88,6 +88,13 @@ std::vector<BadCase> Cases() {
       {"absurdly small viewport", With("/viewport/width", 1e-300), "viewport.width", "absurdly small"},
       {"absurdly small near", With("/depth", {{"near", 1e-300}, {"far", 10}}), "depth.near", "absurdly small"},
       {"reversed is not a boolean", With("/depth", {{"reversed", 1}}), "depth.reversed", "expected true or false"},
+      {"grid count zero", With("/instances/0/grid", {{"count", {2, 0, 2}}, {"spacing", {1, 1, 1}}}), "instances[0].grid.count[1]", "expected an integer in 1..16777216, found 0"},
+      {"grid count negative", With("/instances/0/grid", {{"count", {-3, 1, 1}}, {"spacing", {1, 1, 1}}}), "instances[0].grid.count[0]", "found -3"},
+      {"grid too large", With("/instances/0/grid", {{"count", {1000, 1000, 17}}, {"spacing", {1, 1, 1}}}), "instances[0].grid.count", "more than 16777216 instances (this grid alone is 17000000)"},
+      {"grid spacing not a number", With("/instances/0/grid", {{"count", {2, 2, 2}}, {"spacing", {1, "a", 1}}}), "instances[0].grid.spacing[1]", "expected a number, found a string"},
+      {"grid spacing beyond double", Replace(With("/instances/0/grid", {{"count", {2, 2, 2}}, {"spacing", {1, 1, 3.125}}}), "3.125", "3.125e999"), "instances[0].grid.spacing[2]", "out of range"},
+      {"grid with an unknown key", With("/instances/0/grid", {{"count", {2, 2, 2}}, {"spacing", {1, 1, 1}}, {"spcing", 1}}), "instances[0].grid", "did you mean \"spacing\"?"},
+      {"grid not an object", With("/instances/0/grid", 5), "instances[0].grid", "expected an object, found a number"},
       {"steps out of range", With("/camera/rotation/steps", 0), "camera.rotation.steps", "in 1..10000000"},
   };
 }

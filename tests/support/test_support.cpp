@@ -50,28 +50,70 @@ std::filesystem::path SourcePath(const std::string& relative) {
   return std::filesystem::path(TWINRASTER_SOURCE_DIR) / relative;
 }
 
-std::vector<std::filesystem::path> ShippedScenes() {
+namespace {
+// Scenes too large to run through every per-scene test (a million instances); each has tests of
+// its own, at a smaller canvas where rendering is involved.
+const char* const kLargeScenes[] = {"scenes/one-million-cubes.json"};
+
+bool IsLarge(const std::filesystem::path& file) {
+  return std::any_of(std::begin(kLargeScenes), std::end(kLargeScenes),
+                     [&](const char* large) { return file == SourcePath(large); });
+}
+
+std::vector<std::filesystem::path> SceneFiles(bool large) {
   std::vector<std::filesystem::path> scenes;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(SourcePath("scenes"))) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") scenes.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".json" && IsLarge(entry.path()) == large) {
+      scenes.push_back(entry.path());
+    }
   }
   std::sort(scenes.begin(), scenes.end());
   return scenes;
 }
+}  // namespace
 
-CliResult RunCli(const std::vector<std::string>& args, const std::vector<std::string>& environment) {
-  const TempDir dir;
+std::vector<std::filesystem::path> ShippedScenes() { return SceneFiles(false); }
+std::vector<std::filesystem::path> LargeShippedScenes() { return SceneFiles(true); }
+
+namespace {
+
+std::string CliCommand(const std::vector<std::string>& args, const std::vector<std::string>& environment) {
   std::string command = "env";
   for (const std::string& e : environment) command += " " + ShellQuote(e);
   command += " " + ShellQuote(TWINRASTER_EXE);
   for (const std::string& a : args) command += " " + ShellQuote(a);
-  command += " >" + ShellQuote((dir / "out").string()) + " 2>" + ShellQuote((dir / "err").string()) + " </dev/null";
-  const int status = std::system(command.c_str());
+  return command;
+}
+
+// Runs a shell command with its output and errors captured and `input` (a file) as its input.
+CliResult RunShell(const std::string& command, const std::filesystem::path& input) {
+  const TempDir dir;
+  const std::string line = command + " >" + ShellQuote((dir / "out").string()) + " 2>" +
+                           ShellQuote((dir / "err").string()) + " <" + ShellQuote(input.string());
+  const int status = std::system(line.c_str());
   CliResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   result.out = ReadFile(dir / "out");
   result.err = ReadFile(dir / "err");
   return result;
+}
+
+}  // namespace
+
+CliResult RunCli(const std::vector<std::string>& args, const std::vector<std::string>& environment) {
+  return RunShell(CliCommand(args, environment), "/dev/null");
+}
+
+CliResult RunCliWithInput(const std::vector<std::string>& args, const std::string& input,
+                          const std::vector<std::string>& environment) {
+  const TempDir dir;
+  WriteFile(dir / "input", input);
+  return RunShell(CliCommand(args, environment), dir / "input");
+}
+
+CliResult RunCliInTerminal(const std::vector<std::string>& args) {
+  // -q: no "Script started" lines; -e: script exits with the command's exit code.
+  return RunShell("script -qec " + ShellQuote(CliCommand(args, {})) + " /dev/null", "/dev/null");
 }
 
 }  // namespace twinraster::test

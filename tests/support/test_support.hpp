@@ -13,8 +13,14 @@ struct CliResult {
   std::string out, err;
 };
 
-// `environment`: extra VAR=value settings for this run only.
+// `environment`: extra VAR=value settings for this run only. Standard input is /dev/null.
 CliResult RunCli(const std::vector<std::string>& args, const std::vector<std::string>& environment = {});
+// The same with `input` on standard input.
+CliResult RunCliWithInput(const std::vector<std::string>& args, const std::string& input,
+                          const std::vector<std::string>& environment = {});
+// The CLI on a terminal: script(1) gives it a pseudo-terminal as standard input, output and error.
+// `out` is everything it wrote there, standard output and error interleaved; `err` is script's own.
+CliResult RunCliInTerminal(const std::vector<std::string>& args);
 
 // A fresh empty directory under the system temp dir, removed when the object dies.
 class TempDir {
@@ -33,6 +39,7 @@ class TempDir {
 std::string ReadFile(const std::filesystem::path& file);
 void WriteFile(const std::filesystem::path& file, const std::string& text);
 std::filesystem::path SourcePath(const std::string& relative);  // inside the source tree
-std::vector<std::filesystem::path> ShippedScenes();             // scenes/**/*.json, sorted
+std::vector<std::filesystem::path> ShippedScenes();       // scenes/**/*.json but the large ones, sorted
+std::vector<std::filesystem::path> LargeShippedScenes();  // the million-instance scenes, sorted
 
 }  // namespace twinraster::test

@@ -1,5 +1,8 @@
 // Every shipped scene renders identically on lavapipe and on the CPU twin: 0 differing pixels.
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "gpu/gpu_renderer.hpp"
+#include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
@@ -26,4 +29,25 @@ TEST_CASE("Every shipped scene: GPU image == CPU image, bit for bit", "[twin]") 
     REQUIRE(drawn > 100);
   }
   test::RequireNoValidationMessages();
+}
+
+TEST_CASE("The million-instance scenes at 480x270: GPU (instanced) == CPU", "[twin][large]") {
+  for (const auto& file : test::LargeShippedScenes()) {
+    INFO(file.string());
+    Scene scene = LoadScene(file);
+    REQUIRE(scene.instances.size() >= 1'000'000);
+    // A smaller canvas with the same field of view: the same geometry, a sixteenth of the pixels.
+    scene.canvas.width = 480;
+    scene.canvas.height = 270;
+    const DrawList list = BuildDrawList(scene);
+    GpuRenderer gpu(GpuOptions{.device = "", .validation = true});  // kAuto: the path a user gets
+    GpuTimings timings;
+    const Image gpu_image = gpu.Render(list, &timings);
+    REQUIRE(timings.instanced_draws == list.draws.size());
+    const Image cpu_image = RenderOnCpu(list);
+    const Comparison c = CompareImages(gpu_image, cpu_image);
+    INFO(c.differing_pixels << " differing pixels");
+    REQUIRE(c.Equal());
+    REQUIRE(gpu.ValidationMessages().empty());
+  }
 }
