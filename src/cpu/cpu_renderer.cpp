@@ -25,8 +25,10 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   // More parts than bands would leave threads idle; the image does not depend on this number.
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
   const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
-  // Kept per calling thread from one render to the next (see GeometryScratch).
-  thread_local GeometryScratch scratch;
+  // Kept per calling thread from one render to the next (see GeometryScratch). Used through a
+  // reference: in a lambda run by a pool worker, the name itself would mean the worker's own.
+  thread_local GeometryScratch per_thread_scratch;
+  GeometryScratch& scratch = per_thread_scratch;
   ChunkBudget budget;
   if (options.chunk_triangles != 0) budget = ChunkBudget{options.chunk_triangles, options.chunk_triangles};
   const std::vector<GeometryChunk> chunks = PlanChunks(list, budget);
@@ -47,13 +49,17 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
   for (const GeometryChunk& chunk : chunks) {
     // Setup: vertex stage, clipping, viewport transform, triangle setup.
-    ProcessGeometry(list, chunk, threads, scratch, clip);
+    ProcessGeometry(list, chunk, threads, scratch, clip, threads);
     setup_ms += clock.Lap();
-    // Draw: every part rasterizes the chunk's triangles, in order, over its own bands.
+    // Draw: every part rasterizes, in order, the chunk's triangles that touch its own bands.
     const TriangleChunks& triangles = scratch.triangles;
     ParallelParts(threads, [&](unsigned part) {
-      RasterizeBands(
-          triangles, RowShare{threads, part}, static_cast<int>(list.height), [](int, int) {},
+      RasterizeOwnedBands(
+          [&](auto&& fn) {
+            for (std::size_t p = 0; p < triangles.size(); ++p)
+              for (const std::uint32_t i : scratch.owners[p][part]) fn(triangles[p][i]);
+          },
+          RowShare{threads, part}, static_cast<int>(list.height), [](int, int) {},
           [&](const TriangleSetup& t, int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
     });
     draw_ms += clock.Lap();

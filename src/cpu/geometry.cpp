@@ -1,6 +1,7 @@
 #include "cpu/geometry.hpp"
 
 #include "cpu/parallel.hpp"
+#include "cpu/rasterize.hpp"
 #include "cpu/vertex_stage.hpp"
 
 #include <algorithm>
@@ -56,6 +57,8 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
 std::size_t GeometryScratch::bytes() const {
   std::size_t total = vertices.capacity() * sizeof(ShadedVertex) + vertex_start.capacity() * sizeof(std::size_t);
   for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
+  for (const auto& part : owners)
+    for (const auto& owned : part) total += owned.capacity() * sizeof(std::uint32_t);
   return total;
 }
 
@@ -100,7 +103,8 @@ TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads) {
 }
 
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
-                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip) {
+                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip,
+                     unsigned raster_parts) {
   const ViewportState vp = MakeViewport(list.width, list.height);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
 
@@ -158,7 +162,10 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
   // 4 KiB on every render); with a reused scratch there is usually nothing to allocate.
   TriangleChunks& parts = scratch.triangles;
   parts.resize(triangle_parts);
+  scratch.owners.resize(triangle_parts);
   for (unsigned part = 0; part < triangle_parts; ++part) {
+    scratch.owners[part].resize(raster_parts);
+    for (auto& owned : scratch.owners[part]) owned.clear();
     parts[part].clear();
     const std::size_t share =
         triangle_count * (part + 1) / triangle_parts - triangle_count * part / triangle_parts;
@@ -177,6 +184,16 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                     const auto& tri = mesh.triangles[t];
                     AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]},
                                      PackRgba(mesh.colours[t]), vp, region, out);
+                  }
+                }
+                if (raster_parts == 0) return;
+                // Bin while the triangles are still in cache: most touch one band, so one owner.
+                std::vector<std::vector<std::uint32_t>>& owners = scratch.owners[part];
+                for (std::size_t i = 0; i < out.size(); ++i) {
+                  const int first_band = out[i].bounds.y0 / kBandRows, last_band = out[i].bounds.y1 / kBandRows;
+                  const int last = std::min(last_band, first_band + static_cast<int>(raster_parts) - 1);
+                  for (int band = first_band; band <= last; ++band) {
+                    owners[static_cast<unsigned>(band) % raster_parts].push_back(static_cast<std::uint32_t>(i));
                   }
                 }
               });

@@ -108,14 +108,18 @@ struct RowShare {
   unsigned part = 0;
 };
 
+// Which part owns the band of row y: bands are dealt out round-robin.
+inline unsigned BandOwner(int y, unsigned parts) { return static_cast<unsigned>(y / kBandRows) % parts; }
+
 // Rasterizes the bands `share` owns one after the other, so that a band's depth and colour rows
 // stay in cache: for each owned band, top down, on_band(row_begin, row_end) first, then
 // on_span(triangle, py, span) for each covered span in the band of every triangle overlapping it,
-// triangles in order (chunk after chunk). Each pixel sees the same triangles in the same order as
+// triangles in order. `for_each_candidate(fn)` calls fn(triangle) for every triangle that may
+// touch the part's bands, in list order. Each pixel sees the same triangles in the same order as
 // drawing one whole triangle after the other would give.
-template <class BandFn, class SpanFn>
-void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share,
-                    int height, BandFn&& on_band, SpanFn&& on_span) {
+template <class CandidatesFn, class BandFn, class SpanFn>
+void RasterizeOwnedBands(CandidatesFn&& for_each_candidate, const RowShare& share, int height, BandFn&& on_band,
+                         SpanFn&& on_span) {
   const int parts = static_cast<int>(share.parts);
   const int part = static_cast<int>(share.part);
   const int band_count = (height + kBandRows - 1) / kBandRows;
@@ -124,15 +128,13 @@ void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, co
 
   // Bins: which triangles touch each owned band (band = part + k * parts), in list order.
   std::vector<std::vector<const TriangleSetup*>> bins(static_cast<std::size_t>(owned));
-  for (const std::vector<TriangleSetup>& chunk : triangles) {
-    for (const TriangleSetup& t : chunk) {
-      const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
-      int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
-      for (; band <= last_band; band += parts) {
-        bins[static_cast<std::size_t>((band - part) / parts)].push_back(&t);
-      }
+  for_each_candidate([&](const TriangleSetup& t) {
+    const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
+    int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
+    for (; band <= last_band; band += parts) {
+      bins[static_cast<std::size_t>((band - part) / parts)].push_back(&t);
     }
-  }
+  });
 
   for (int k = 0; k < owned; ++k) {
     const int band = part + k * parts;
@@ -153,6 +155,18 @@ void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, co
       }
     }
   }
+}
+
+// The same over all triangles (chunk after chunk): every part looks at every triangle.
+template <class BandFn, class SpanFn>
+void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share,
+                    int height, BandFn&& on_band, SpanFn&& on_span) {
+  RasterizeOwnedBands(
+      [&](auto&& fn) {
+        for (const std::vector<TriangleSetup>& chunk : triangles)
+          for (const TriangleSetup& t : chunk) fn(t);
+      },
+      share, height, on_band, on_span);
 }
 
 }  // namespace twinraster::cpu
