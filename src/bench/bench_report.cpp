@@ -80,29 +80,41 @@ std::vector<unsigned> ThreadCounts(const BenchResult& result) {
 }  // namespace
 
 nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
-  nlohmann::ordered_json j;
+  using Json = nlohmann::ordered_json;
+  const auto number_or_null = [](std::optional<double> x) { return x ? Json(*x) : Json(nullptr); };
+  // Every key is present whatever was run (docs/json-output.md): null stands for "not measured".
+  Json j;
+  Json& far = j["far_1e7_vertex_error_px"] = Json::object();
   for (VertexMethod m : kAllMethods) {
     const std::string method(MethodName(m));
-    if (const BenchRow* far = Find(result, "hard/far-1e7", method)) j["far_1e7_vertex_error_px"][method] = far->vertex_error_px;
+    const BenchRow* r = Find(result, "hard/far-1e7", method);
+    far[method] = number_or_null(r && r->vertex_error_px >= 0 ? std::optional(r->vertex_error_px) : std::nullopt);
   }
   for (const bool reversed : {false, true}) {
-    const ZFightOnset onset = Onset(result, reversed);
-    j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] =
-        onset.ratio ? nlohmann::ordered_json(*onset.ratio) : nlohmann::ordered_json(nullptr);
+    j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] = number_or_null(Onset(result, reversed).ratio);
   }
-  if (const BenchRow* largest = Largest(result)) {
-    j["vertex_ms_per_million_vertices"]["scene"] = largest->scene;
-    for (VertexMethod m : kAllMethods) {
-      const std::string method(MethodName(m));
-      if (const BenchRow* r = Find(result, largest->scene, method))
-        j["vertex_ms_per_million_vertices"][method] = r->vertex_ms * 1e6 / double(r->vertices);
-    }
+  const BenchRow* largest = Largest(result);
+  Json& per_million = j["vertex_ms_per_million_vertices"] = Json::object();
+  per_million["scene"] = largest ? Json(largest->scene) : Json(nullptr);
+  for (VertexMethod m : kAllMethods) {
+    const std::string method(MethodName(m));
+    const BenchRow* r = largest ? Find(result, largest->scene, method) : nullptr;
+    per_million[method] = number_or_null(r && r->vertex_ms >= 0 && r->vertices > 0
+                                             ? std::optional(r->vertex_ms * 1e6 / double(r->vertices))
+                                             : std::nullopt);
   }
+  // A list rather than an object keyed by scene and thread count, so that its keys never vary.
+  Json& ratios = j["cpu_twin_over_lavapipe"] = Json::array();
   for (const std::string& scene : Scenes(result)) {
     for (unsigned threads : ThreadCounts(result)) {
       const BenchRow* twin = Find(result, scene, "cpu-twin", threads);
       const BenchRow* gpu = Find(result, scene, "lavapipe", threads);
-      if (twin && gpu) j["cpu_twin_over_lavapipe"][scene][std::to_string(threads) + "_threads"] = twin->frame_ms / gpu->frame_ms;
+      if (!twin || !gpu) continue;
+      ratios.push_back({{"scene", scene},
+                        {"threads", threads},
+                        {"cpu_twin_ms", twin->frame_ms},
+                        {"lavapipe_ms", gpu->frame_ms},
+                        {"ratio", twin->frame_ms / gpu->frame_ms}});
     }
   }
   return j;
@@ -185,6 +197,7 @@ std::string BenchCsv(const BenchResult& result) {
 
 nlohmann::ordered_json BenchJson(const BenchResult& result) {
   nlohmann::ordered_json j;
+  j["format"] = kBenchJsonFormat;
   j["machine"] = result.machine;
   j["runs"] = result.runs;
   j["seconds"] = result.seconds;

@@ -119,6 +119,16 @@ BenchResult RunBench(const BenchOptions& options) {
 
   const std::vector<std::filesystem::path> files = SuiteScenes(options);
   if (files.empty()) throw UsageError("no scene in " + options.scenes_dir.string() + (options.only ? " matches --only " + *options.only : ""));
+
+  // Known before the first row is measured, so that progress can say "row 3 of 56".
+  std::size_t rows_per_scene = 0;
+  for (VertexMethod method : kAllMethods) rows_per_scene += selected(MethodName(method)) ? 1 : 0;
+  for (const char* renderer : {"cpu-twin", "lavapipe"}) rows_per_scene += selected(renderer) ? lavapipes.size() : 0;
+  const std::size_t total_rows = rows_per_scene * files.size();
+  const auto add_row = [&](const BenchRow& row) {
+    result.rows.push_back(row);
+    if (options.on_row) options.on_row(result.rows.back(), result.rows.size(), total_rows);
+  };
   for (const std::filesystem::path& file : files) {
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
@@ -148,11 +158,14 @@ BenchResult RunBench(const BenchOptions& options) {
       });
       row.image_error_px = CompareImages(image, truth).differing_pixels;
       row.z_fighting_px = ZFighting(file, image, truth);
-      result.rows.push_back(row);
+      add_row(row);
     }
 
     // The two renderers as a user runs them, with one thread and with every core, back to back.
-    for (auto& [threads, lavapipe] : lavapipes) {
+    for (auto& entry : lavapipes) {
+      // Named copies, not structured bindings: clang 14 cannot capture those in the lambda below.
+      const unsigned threads = entry.first;
+      std::optional<GpuRenderer>& lavapipe = entry.second;
       for (const char* renderer : {"cpu-twin", "lavapipe"}) {
         if (!selected(renderer)) continue;
         BenchRow row = base;
@@ -165,7 +178,7 @@ BenchResult RunBench(const BenchOptions& options) {
         });
         row.image_error_px = CompareImages(image, truth).differing_pixels;
         row.z_fighting_px = ZFighting(file, image, truth);
-        result.rows.push_back(row);
+        add_row(row);
       }
     }
   }

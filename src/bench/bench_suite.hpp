@@ -2,20 +2,15 @@
 // both renderers, timing each (medians) and measuring its error against the ground truth.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace twinraster {
-
-struct BenchOptions {
-  std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
-  int runs = 15;                                // timings are medians over this many runs
-  std::optional<std::string> only;              // only scenes whose name contains this
-  // Which rows to run: the vertex methods' names and "cpu-twin", "lavapipe"; empty means all.
-  std::vector<std::string> methods;
-};
 
 struct BenchRow {
   std::string scene;
@@ -28,6 +23,17 @@ struct BenchRow {
   double vertex_error_px = -1;  // max distance from the truth's framebuffer positions (-1: not measured)
   std::uint64_t image_error_px = 0;   // pixels that differ from the truth image
   std::optional<std::uint64_t> z_fighting_px;  // depth scenes: far plate showing where the near one should
+};
+
+struct BenchOptions {
+  std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
+  int runs = 15;                                // timings are medians over this many runs
+  std::optional<std::string> only;              // only scenes whose name contains this
+  // Which rows to run: the vertex methods' names and "cpu-twin", "lavapipe"; empty means all.
+  std::vector<std::string> methods;
+  // Called as each row is measured, in the order of BenchResult::rows: row number `done` (from 1)
+  // of `total`. A whole run takes seconds to minutes, so a user can watch the rows come in.
+  std::function<void(const BenchRow& row, std::size_t done, std::size_t total)> on_row;
 };
 
 struct BenchResult {

@@ -182,6 +182,7 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
   const Explanation e = Explain(scene, options);
   const Chain& chain = e.chain;
   nlohmann::ordered_json out;
+  out["format"] = kExplainJsonFormat;
   out["scene"] = scene.name;
   out["canvas"] = {{"width", scene.canvas.width}, {"height", scene.canvas.height}};
   out["viewport"] = {{"width", scene.viewport.width}, {"height", scene.viewport.height},

@@ -17,6 +17,10 @@ struct ExplainOptions {
   std::optional<std::size_t> vertex;    // only this vertex of each instance shown
 };
 
+// ExplainJson's "format": any change to its keys or their meaning gets a new number
+// (docs/json-output.md, docs/schemas/explain.schema.json).
+inline constexpr const char* kExplainJsonFormat = "twinraster.explain/1";
+
 // Both throw UsageError when the instance or vertex index does not exist.
 std::string ExplainText(const Scene& scene, const ExplainOptions& options);
 nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options);

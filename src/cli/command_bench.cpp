@@ -1,57 +1,58 @@
 // `twinraster bench`: runs the suite, prints the table and summary, and with --out writes
 // bench.csv, bench.svg, bench.json and bench.txt (all staged, so all or none are replaced).
+#include "base/usage_error.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
-#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/parser_setup.hpp"
+#include "cli/progress.hpp"
 #include "image/staged_file.hpp"
-#include "base/usage_error.hpp"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <iostream>
+#include <memory>
 
 namespace twinraster {
 
-int BenchCommand(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--json"}, {"--out", "--runs", "--only", "--scenes", "--methods"});
-  cl.ExpectPositional({});
+namespace {
+
+struct BenchArguments {
+  std::optional<std::string> out;
+  int runs = 15;
+  std::optional<std::string> only;
+  std::vector<std::string> methods;
+  std::string scenes = "scenes";
+  bool json = false;
+  bool quiet = false;
+};
+
+int Bench(const BenchArguments& a) {
   BenchOptions options;
-  if (auto runs = cl.Index("--runs")) {
-    if (*runs < 1 || *runs > 1000) throw UsageError("--runs must be 1..1000");
-    options.runs = static_cast<int>(*runs);
-  }
-  options.only = cl.Option("--only");
-  if (auto methods = cl.Option("--methods")) {
-    const std::vector<std::string> known = BenchMethodNames();
-    std::string rest = *methods;
-    while (!rest.empty()) {
-      const std::size_t comma = rest.find(',');
-      const std::string name = rest.substr(0, comma);
-      rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-      if (std::find(known.begin(), known.end(), name) == known.end()) {
-        std::string all;
-        for (const std::string& k : known) all += (all.empty() ? "" : ", ") + k;
-        throw UsageError("--methods: unknown method \"" + name + "\"; known: " + all);
-      }
-      options.methods.push_back(name);
-    }
-  }
-  if (auto scenes = cl.Option("--scenes")) options.scenes_dir = *scenes;
+  options.runs = a.runs;
+  options.only = a.only;
+  options.methods = a.methods;
+  options.scenes_dir = a.scenes;
   if (!std::filesystem::is_directory(options.scenes_dir)) {
-    throw UsageError("no scene directory " + options.scenes_dir.string() + " (run from the repository root, or pass --scenes DIR)");
+    throw UsageError("no scene directory " + options.scenes_dir.string() +
+                     " (run from the repository root, or pass --scenes DIR)");
   }
-  const std::optional<std::string> out = cl.Option("--out");
-  if (out && !std::filesystem::is_directory(*out)) {
+  if (a.out && !std::filesystem::is_directory(*a.out)) {
     std::error_code error;
-    std::filesystem::create_directories(*out, error);
-    if (error) throw FileError(*out + ": cannot create the directory: " + error.message());
+    std::filesystem::create_directories(*a.out, error);
+    if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
   }
 
+  Progress progress = Progress::OnStandardError(a.quiet);
+  if (progress.active()) {
+    options.on_row = [&progress](const BenchRow& row, std::size_t done, std::size_t total) {
+      progress.Line(BenchProgressLine(row, done, total));
+    };
+  }
   const BenchResult result = RunBench(options);
-  if (out) {
-    const std::filesystem::path dir = *out;
+  if (a.out) {
+    const std::filesystem::path dir = *a.out;
     // Staged together: either every output is replaced or none is.
     std::vector<StagedFile> staged;
     staged.emplace_back(dir / "bench.csv", BenchCsv(result));
@@ -60,12 +61,41 @@ int BenchCommand(const std::vector<std::string>& args) {
     staged.emplace_back(dir / "bench.txt", BenchTable(result));
     for (StagedFile& file : staged) file.Commit();
   }
-  if (cl.Flag("--json")) {
+  if (a.json) {
     std::cout << BenchJson(result).dump(2) << "\n";
   } else {
     std::cout << BenchTable(result);
   }
   return kExitOk;
+}
+
+}  // namespace
+
+CommandRun AddBenchCommand(CLI::App& app) {
+  auto a = std::make_shared<BenchArguments>();
+  CLI::App* command = AddSubcommand(
+      app, "bench",
+      "time each way of computing the chain, and its error against the truth",
+      "The suite is SCENES/*.json, SCENES/hard/*.json and SCENES/bench/*.json. On a terminal, each\n"
+      "row shows on standard error as it finishes.\n"
+      "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe out of\n"
+      "--methods to need none), 4 internal error.");
+  command->add_option("--out", a->out, "also write bench.csv, bench.svg, bench.json and bench.txt into DIR")
+      ->type_name("DIR");
+  ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1, 1000);
+  command->add_option("--only", a->only, "only the scenes whose path contains TEXT")->type_name("TEXT");
+  std::vector<std::string> methods = BenchMethodNames();
+  std::string method_list;
+  for (const std::string& m : methods) method_list += (method_list.empty() ? "" : ", ") + m;
+  ExpectOneOf(command->add_option("--methods", a->methods, "only these rows, comma-separated (default: all):\n" + method_list)
+                  ->option_text("A,B")
+                  ->delimiter(',')
+                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll),
+              "method", methods);
+  command->add_option("--scenes", a->scenes, "the suite's directory (default: scenes)")->type_name("DIR");
+  command->add_flag("--json", a->json, "print the results as JSON (twinraster.bench/1, docs/json-output.md)");
+  command->add_flag("-q,--quiet", a->quiet, "no progress on standard error");
+  return [a] { return Bench(*a); };
 }
 
 }  // namespace twinraster

@@ -1,39 +1,62 @@
 // `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image.
-#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/comparison_report.hpp"
+#include "cli/io_arguments.hpp"
+#include "cli/parser_setup.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
+#include <memory>
 
 namespace twinraster {
 
-int CompareCommand(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--json"}, {"--diff"});
-  cl.ExpectPositional({"A.png", "B.png"});
-  const Image a = ReadPng(cl.Positional()[0]);
-  const Image b = ReadPng(cl.Positional()[1]);
+namespace {
+
+struct CompareArguments {
+  std::string a, b;
+  std::optional<std::string> diff;
+  bool json = false;
+};
+
+int Compare(const CompareArguments& args) {
+  if (args.diff) ExpectPngName("--diff", *args.diff);
+  const Image a = ReadPng(args.a);
+  const Image b = ReadPng(args.b);
   const Comparison comparison = CompareImages(a, b);
-  const std::optional<std::string> diff = cl.Option("--diff");
-  const bool wrote_diff = diff && comparison.same_size && !comparison.Equal();
-  if (wrote_diff) WritePng(*diff, DiffImage(a, b));
+  const bool wrote_diff = args.diff && comparison.same_size && !comparison.Equal();
+  if (wrote_diff) WritePng(*args.diff, DiffImage(a, b));
   // A diff left by an earlier run would now describe images that no longer differ.
   std::error_code ignored;
-  if (diff && comparison.Equal() && std::filesystem::is_regular_file(*diff, ignored)) {
-    std::filesystem::remove(*diff, ignored);
+  if (args.diff && comparison.Equal() && std::filesystem::is_regular_file(*args.diff, ignored)) {
+    std::filesystem::remove(*args.diff, ignored);
   }
 
-  if (cl.Flag("--json")) {
-    nlohmann::ordered_json out = ComparisonJson(a, b, comparison);
-    out["diff"] = wrote_diff ? nlohmann::ordered_json(*diff) : nlohmann::ordered_json(nullptr);
-    std::cout << out.dump(2) << "\n";
+  if (args.json) {
+    std::cout << CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
+              << "\n";
   } else {
-    std::cout << ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + *diff : "") << "\n";
+    std::cout << ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + *args.diff : "") << "\n";
   }
   return comparison.Equal() ? kExitOk : kExitImagesDiffer;
+}
+
+}  // namespace
+
+CommandRun AddCompareCommand(CLI::App& app) {
+  auto a = std::make_shared<CompareArguments>();
+  CLI::App* command = AddSubcommand(app, "compare", "count the pixels that differ between two PNGs",
+                                    "Exit codes: 0 identical, 1 the images differ (or their sizes do), 2 bad input or\n"
+                                    "usage, 4 internal error.");
+  command->add_option("A.png", a->a, "the first image")->required();
+  command->add_option("B.png", a->b, "the second image")->required();
+  command->add_option("--diff", a->diff, "when they differ, write D.png: differing pixels in red over a faded A")
+      ->type_name("D.png");
+  command->add_flag("--json", a->json, "print one JSON object (twinraster.compare/1, docs/json-output.md)");
+  return [a] { return Compare(*a); };
 }
 
 }  // namespace twinraster

@@ -1,9 +1,12 @@
-// The subcommands of the twinraster executable; each returns the process exit code and throws
-// SceneError, FileError or UsageError for the caller to report.
+// The subcommands of the twinraster executable: each declares its arguments on the parser and
+// returns what runs it once the command line is parsed.
 #pragma once
 
-#include <string>
-#include <vector>
+#include <functional>
+
+namespace CLI {
+class App;  // CLI11 itself is included only by the .cpp files: it is a large header
+}
 
 namespace twinraster {
 
@@ -16,9 +19,13 @@ enum ExitCode : int {
   kExitInternalError = 4,
 };
 
-int ExplainCommand(const std::vector<std::string>& args);
-int RenderCommand(const std::vector<std::string>& args);
-int CompareCommand(const std::vector<std::string>& args);
-int BenchCommand(const std::vector<std::string>& args);
+// Runs a parsed command and returns the exit code; throws SceneError, FileError, UsageError or
+// GpuUnavailable for main() to report.
+using CommandRun = std::function<int()>;
+
+CommandRun AddExplainCommand(CLI::App& app);
+CommandRun AddRenderCommand(CLI::App& app);
+CommandRun AddCompareCommand(CLI::App& app);
+CommandRun AddBenchCommand(CLI::App& app);
 
 }  // namespace twinraster

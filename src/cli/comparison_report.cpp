@@ -4,18 +4,20 @@
 
 namespace twinraster {
 
-nlohmann::ordered_json ComparisonJson(const Image& a, const Image& b, const Comparison& c) {
-  nlohmann::ordered_json out;
-  out["width"] = a.width;
-  out["height"] = a.height;
-  if (!c.same_size) {
-    out["other_width"] = b.width;
-    out["other_height"] = b.height;
+nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
+                                   const std::optional<std::string>& diff) {
+  using Json = nlohmann::ordered_json;
+  Json out;
+  out["format"] = kCompareJsonFormat;
+  for (const NamedImage* image : {&a, &b}) {
+    out[image == &a ? "a" : "b"] = {{"file", image->file}, {"width", image->image.width}, {"height", image->image.height}};
   }
   out["same_size"] = c.same_size;
-  out["differing_pixels"] = c.same_size ? nlohmann::ordered_json(c.differing_pixels) : nullptr;
-  out["max_channel_difference"] = c.same_size ? nlohmann::ordered_json(c.max_channel_difference) : nullptr;
+  // Pixels are compared only between images of one size.
+  out["differing_pixels"] = c.same_size ? Json(c.differing_pixels) : Json(nullptr);
+  out["max_channel_difference"] = c.same_size ? Json(c.max_channel_difference) : Json(nullptr);
   out["identical"] = c.Equal();
+  out["diff"] = diff ? Json(*diff) : Json(nullptr);
   return out;
 }
 

@@ -1,4 +1,5 @@
-// How `render --backend both` and `compare` report a comparison, as text or JSON.
+// How `render --backend both` and `compare` report a comparison, as text or JSON, and the format
+// names their --json outputs carry.
 #pragma once
 
 #include "image/image.hpp"
@@ -6,11 +7,24 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 
 namespace twinraster {
 
-nlohmann::ordered_json ComparisonJson(const Image& a, const Image& b, const Comparison& c);
+// Each --json output's "format"; any change to its keys or their meaning gets a new number
+// (docs/json-output.md, docs/schemas/).
+inline constexpr const char* kRenderJsonFormat = "twinraster.render/1";
+inline constexpr const char* kCompareJsonFormat = "twinraster.compare/1";
+
+struct NamedImage {
+  std::string file;
+  const Image& image;
+};
+
+// The whole `compare --json` object; `diff` is the diff image written, if one was.
+nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
+                                   const std::optional<std::string>& diff);
 std::string ComparisonText(const Image& a, const Image& b, const Comparison& c);
 
 }  // namespace twinraster

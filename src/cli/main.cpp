@@ -1,56 +1,112 @@
 // twinraster's command line: explain a scene's transform chain, render it on Vulkan and on the
-// CPU twin, compare images. Every error becomes one message and an exit code.
-#include "cli/commands.hpp"
-#include "gpu/gpu_renderer.hpp"
-#include "image/png_file.hpp"
-#include "scene/scene_error.hpp"
+// CPU twin, compare images, bench. CLI11 parses it; every error becomes one message and an exit
+// code.
+#include "base/closest_match.hpp"
 #include "base/usage_error.hpp"
+#include "cli/commands.hpp"
+#include "cli/parser_setup.hpp"
+#include "cli/usage_problems.hpp"
+#include "cli/version.hpp"
+#include "gpu/gpu_renderer.hpp"
+#include "image/staged_file.hpp"
+#include "scene/scene_error.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <string>
-#include <vector>
 
 namespace {
 
 using namespace twinraster;
 
-constexpr const char* kUsage =
-    "usage:\n"
-    "  twinraster explain SCENE [--instance I] [--vertex V] [--json]\n"
-    "      print the chapter's matrix chain for SCENE and trace its vertices to the framebuffer\n"
-    "  twinraster render SCENE [-o OUT.png] [--backend gpu|cpu|both] [--json] [--device NAME] [--threads N]\n"
-    "      draw SCENE on Vulkan (gpu), on the CPU twin (cpu), or both and compare them (default;\n"
-    "      writes OUT-gpu.png, OUT-cpu.png, and OUT-diff.png when they differ; OUT defaults to\n"
-    "      the scene's name in the current directory)\n"
-    "  twinraster compare A.png B.png [--diff D.png] [--json]\n"
-    "      count the pixels that differ between two images\n"
-    "  twinraster bench [--out DIR] [--runs N] [--only TEXT] [--methods A,B] [--scenes DIR] [--json]\n"
-    "      time every way of computing the chain and both renderers on the scene suite, against the\n"
-    "      double-precision ground truth; with --out, also write bench.csv, .svg, .json, .txt\n"
-    "exit codes: 0 done (images equal), 1 images differ, 2 bad input or usage, 3 no Vulkan device,\n"
-    "  4 internal error\n";
+// A mistake on the command line: one line saying what, and where to read how.
+int ReportUsageError(const CLI::App* command, const std::string& problem) {
+  const std::string name = command ? "twinraster " + command->get_name() : "twinraster";
+  std::cerr << name << ": " << problem << "\nsee '" << name << " --help'\n";
+  return kExitBadInput;
+}
 
-int Run(const std::vector<std::string>& args) {
-  if (args.empty()) throw UsageError("missing command");
-  const std::string& command = args[0];
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (command == "explain") return ExplainCommand(rest);
-  if (command == "render") return RenderCommand(rest);
-  if (command == "compare") return CompareCommand(rest);
-  if (command == "bench") return BenchCommand(rest);
-  if (command == "help" || command == "--help" || command == "-h") {
-    std::cout << kUsage;
+CLI::App* SelectedCommand(const CLI::App& app) {
+  const std::vector<CLI::App*> selected = app.get_subcommands();
+  return selected.empty() ? nullptr : selected.front();
+}
+
+// `twinraster help [COMMAND]`: the same text as --help.
+CommandRun AddHelpCommand(CLI::App& app) {
+  auto topic = std::make_shared<std::string>();
+  CLI::App* command = AddSubcommand(app, "help", "print the usage of twinraster or of COMMAND", "");
+  command->add_option("COMMAND", *topic, "the command to describe");
+  return [&app, topic] {
+    if (topic->empty()) {
+      std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+      return int{kExitOk};
+    }
+    std::vector<std::string> names;
+    for (const CLI::App* other : app.get_subcommands({})) {
+      if (other->get_name() == *topic) {
+        std::cout << other->help(app.get_name());
+        return int{kExitOk};
+      }
+      names.push_back(other->get_name());
+    }
+    const std::string suggestion = ClosestMatch(*topic, names);
+    throw UsageError("unknown command \"" + *topic + "\"" +
+                     (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
+  };
+}
+
+int Run(int argc, char** argv) {
+  CLI::App app("twinraster: the transform chain of Computer Graphics from Scratch, chapter 10, drawn on\n"
+               "Vulkan (lavapipe) and on a bit-exact CPU twin.",
+               "twinraster");
+  SetUpParser(app);
+  app.set_version_flag("--version", VersionText(), "print the version and exit");
+  app.footer("Run 'twinraster COMMAND --help' for a command's arguments.\n"
+             "Exit codes: 0 done (images identical), 1 images differ, 2 bad input or usage,\n"
+             "3 no usable Vulkan device, 4 internal error.");
+  const std::map<std::string, CommandRun> commands = {
+      {"explain", AddExplainCommand(app)}, {"render", AddRenderCommand(app)}, {"compare", AddCompareCommand(app)},
+      {"bench", AddBenchCommand(app)},     {"help", AddHelpCommand(app)},
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();  // the selected command's help, if there is one
     return kExitOk;
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << version.what() << "\n";
+    return kExitOk;
+  } catch (const CLI::ParseError& error) {
+    // A stray argument explains most errors best (it is often why a value went missing).
+    CLI::App* command = SelectedCommand(app);
+    if (std::string p = LeftoverProblem(app); !p.empty()) return ReportUsageError(nullptr, p);
+    if (command) {
+      if (std::string p = LeftoverProblem(*command); !p.empty()) return ReportUsageError(command, p);
+      if (std::string p = MissingArgumentProblem(*command); !p.empty()) return ReportUsageError(command, p);
+    }
+    return ReportUsageError(command, ParseErrorProblem(error));
   }
-  throw UsageError("unknown command \"" + command + "\"");
+  CLI::App* command = SelectedCommand(app);
+  if (std::string p = LeftoverProblem(app); !p.empty()) return ReportUsageError(nullptr, p);
+  if (!command) return ReportUsageError(nullptr, "missing command");
+  if (std::string p = LeftoverProblem(*command); !p.empty()) return ReportUsageError(command, p);
+  try {
+    return commands.at(command->get_name())();
+  } catch (const UsageError& e) {
+    return ReportUsageError(command, e.what());
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
-    return Run(std::vector<std::string>(argv + 1, argv + argc));
+    return Run(argc, argv);
   } catch (const SceneError& e) {
     std::cerr << "twinraster: " << e.what() << "\n";
     return kExitBadInput;
@@ -61,9 +117,6 @@ int main(int argc, char** argv) {
     std::cerr << "twinraster: no usable Vulkan device: " << e.what()
               << "\n  (render --backend cpu works without one)\n";
     return kExitNoVulkan;
-  } catch (const UsageError& e) {
-    std::cerr << "twinraster: " << e.what() << "\n" << kUsage;
-    return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "twinraster: internal error: " << e.what() << "\n";
     return kExitInternalError;

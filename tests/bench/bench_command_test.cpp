@@ -1,10 +1,13 @@
 // `twinraster bench` as a user runs it: the table, the files it writes, and its errors.
+#include "bench/bench_suite.hpp"
 #include "support/test_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstddef>
+#include <vector>
 
 using namespace twinraster;
 
@@ -15,6 +18,7 @@ TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen sce
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["format"] == "twinraster.bench/1");
   // Four methods, then the CPU twin and lavapipe with one thread and with every core.
   REQUIRE(j["rows"].size() >= 6);
   REQUIRE(j["rows"][0]["scene"] == "hard/far-1e7");
@@ -29,7 +33,57 @@ TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen sce
   const std::string svg = test::ReadFile(dir / "bench.svg");
   REQUIRE(svg.rfind("<svg", 0) == 0);
   REQUIRE(svg.find("<circle") != std::string::npos);
-  REQUIRE(nlohmann::json::parse(test::ReadFile(dir / "bench.json"))["rows"].size() == j["rows"].size());
+  const auto file = nlohmann::json::parse(test::ReadFile(dir / "bench.json"));
+  REQUIRE(file["format"] == "twinraster.bench/1");
+  REQUIRE(file["rows"].size() == j["rows"].size());
+}
+
+TEST_CASE("bench --json keeps every summary key whatever ran: null where nothing was measured", "[bench][cli]") {
+  const test::CliResult r = test::RunCli({"bench", "--runs", "1", "--only", "cgfs-scene", "--methods", "steps-f32",
+                                          "--scenes", test::SourcePath("scenes").string(), "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto summary = nlohmann::json::parse(r.out)["summary"];
+  for (const char* method : {"compose-f64", "compose-f32", "steps-f32", "camera-relative"}) {
+    INFO(method);
+    REQUIRE(summary["far_1e7_vertex_error_px"].contains(method));
+    REQUIRE(summary["far_1e7_vertex_error_px"][method].is_null());  // hard/far-1e7 did not run
+    REQUIRE(summary["vertex_ms_per_million_vertices"].contains(method));
+  }
+  REQUIRE(summary["vertex_ms_per_million_vertices"]["scene"] == "cgfs-scene");
+  REQUIRE(summary["vertex_ms_per_million_vertices"]["steps-f32"].get<double>() > 0);
+  REQUIRE(summary["vertex_ms_per_million_vertices"]["compose-f64"].is_null());
+  REQUIRE(summary["z_fighting_onset_near_over_far"]["standard"].is_null());
+  REQUIRE(summary["z_fighting_onset_near_over_far"]["reversed"].is_null());
+  REQUIRE(summary["cpu_twin_over_lavapipe"] == nlohmann::json::array());
+}
+
+TEST_CASE("RunBench reports each row through on_row as it is measured, in order, numbered of the total", "[bench]") {
+  BenchOptions options;
+  options.scenes_dir = test::SourcePath("scenes");
+  options.runs = 1;
+  options.only = "cgfs-";
+  options.methods = {"compose-f64", "camera-relative", "cpu-twin"};
+  std::vector<BenchRow> seen;
+  std::vector<std::size_t> numbers, totals;
+  options.on_row = [&](const BenchRow& row, std::size_t done, std::size_t total) {
+    seen.push_back(row);
+    numbers.push_back(done);
+    totals.push_back(total);
+  };
+  const BenchResult result = RunBench(options);
+  // Three cgfs-* scenes, each with two vertex methods and the twin with 1 thread (and with every core).
+  REQUIRE(result.rows.size() >= 9);
+  REQUIRE(seen.size() == result.rows.size());
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    INFO(i);
+    REQUIRE(numbers[i] == i + 1);
+    REQUIRE(totals[i] == result.rows.size());
+    REQUIRE(seen[i].scene == result.rows[i].scene);
+    REQUIRE(seen[i].method == result.rows[i].method);
+    REQUIRE(seen[i].threads == result.rows[i].threads);
+    REQUIRE(seen[i].frame_ms == result.rows[i].frame_ms);
+  }
 }
 
 TEST_CASE("bench rejects bad options with exit code 2", "[bench][cli]") {

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 using namespace twinraster;
 
 TEST_CASE("explain prints the chain with the chapter's names", "[explain]") {
@@ -25,6 +27,7 @@ TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw), framebuffer is the ca
     const test::CliResult r = test::RunCli({"explain", file.string(), "--json"});
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(r.out);
+    REQUIRE(j.at("format") == "twinraster.explain/1");
     REQUIRE(j.at("projection_matrix").size() == 4);
     REQUIRE(j.at("camera_matrix").at(3).size() == 4);
     const double cw = j["canvas"]["width"], ch = j["canvas"]["height"];
@@ -67,5 +70,22 @@ TEST_CASE("explain --instance and --vertex select one trace, and reject indices 
   REQUIRE(not_a_number.exit_code == 2);
   const test::CliResult unknown_option = test::RunCli({"explain", scene, "--verbose"});
   REQUIRE(unknown_option.exit_code == 2);
-  REQUIRE(unknown_option.err.find("unknown option --verbose") != std::string::npos);
+  REQUIRE(unknown_option.err.rfind("twinraster explain: unknown option --verbose", 0) == 0);
+}
+
+TEST_CASE("explain - reads the scene from standard input, named <stdin>", "[explain]") {
+  const std::string text = test::ReadFile(test::SourcePath("scenes/cgfs-transforms.json"));
+  const test::CliResult from_file = test::RunCli({"explain", test::SourcePath("scenes/cgfs-transforms.json").string(), "--json"});
+  const test::CliResult from_stdin = test::RunCliWithInput({"explain", "-", "--json"}, text);
+  INFO(from_stdin.err);
+  REQUIRE(from_stdin.exit_code == 0);
+  auto a = nlohmann::json::parse(from_file.out), b = nlohmann::json::parse(from_stdin.out);
+  REQUIRE(b["scene"] == "<stdin>");
+  a.erase("scene"), b.erase("scene");
+  REQUIRE(a == b);  // everything else is the same chain
+
+  const test::CliResult bad = test::RunCliWithInput({"explain", "-"}, "{\"canvs\": {}}");
+  REQUIRE(bad.exit_code == 2);
+  REQUIRE(bad.err.rfind("twinraster: <stdin>: ", 0) == 0);
+  REQUIRE(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
 }

@@ -7,7 +7,10 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 using namespace twinraster;
 
@@ -24,10 +27,13 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["format"] == "twinraster.render/1");
+  REQUIRE(j["scene"] == kScene);
   REQUIRE(j["width"] == 600);
   REQUIRE(j["height"] == 600);
   REQUIRE(j["differing_pixels"] == 0);
   REQUIRE(j["max_channel_difference"] == 0);
+  REQUIRE(j["diff"].is_null());
   for (const char* backend : {"gpu", "cpu"}) {
     const auto& b = j["backends"][backend];
     for (const char* stage : {"setup", "draw", "readback", "png"}) REQUIRE(b["timings_ms"][stage].get<double>() >= 0);
@@ -89,8 +95,15 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
       {"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.png").string(), "--json"});
   REQUIRE(r.exit_code == 1);
   const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["format"] == "twinraster.compare/1");
+  REQUIRE(j["a"]["file"] == (dir / "a.png").string());
+  REQUIRE(j["b"]["width"] == 4);
+  REQUIRE(j["b"]["height"] == 3);
+  REQUIRE(j["same_size"] == true);
+  REQUIRE(j["identical"] == false);
   REQUIRE(j["differing_pixels"] == 1);
   REQUIRE(j["max_channel_difference"] == 9);
+  REQUIRE(j["diff"] == (dir / "d.png").string());
   const Image diff = ReadPng(dir / "d.png");
   REQUIRE(diff.pixel(2, 1)[0] == 255);
   REQUIRE(diff.pixel(2, 1)[1] == 0);
@@ -98,6 +111,18 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   const test::CliResult bad = test::RunCli({"compare", (dir / "a.png").string(), (dir / "not.png").string()});
   REQUIRE(bad.exit_code == 2);
   REQUIRE(bad.err.find("not.png") != std::string::npos);
+
+  // Sizes that differ: no pixel counts (null, not missing), no diff, exit 1.
+  WritePng(dir / "small.png", Image(2, 2));
+  const test::CliResult sizes = test::RunCli({"compare", (dir / "a.png").string(), (dir / "small.png").string(), "--json"});
+  REQUIRE(sizes.exit_code == 1);
+  const auto s = nlohmann::json::parse(sizes.out);
+  REQUIRE(s["same_size"] == false);
+  REQUIRE(s["identical"] == false);
+  REQUIRE(s.contains("differing_pixels"));
+  REQUIRE(s["differing_pixels"].is_null());
+  REQUIRE(s["max_channel_difference"].is_null());
+  REQUIRE(s["diff"].is_null());
 }
 
 TEST_CASE("render -o must name a file, and an output that is a directory fails before anything is replaced", "[cli][render]") {
@@ -123,4 +148,156 @@ TEST_CASE("Without a Vulkan device, bench exits 3 too", "[cli][bench]") {
                                           test::SourcePath("scenes").string()}, {kNoVulkan});
   REQUIRE(r.exit_code == 3);
   REQUIRE(r.err.find("mesa-vulkan-drivers") != std::string::npos);
+}
+
+TEST_CASE("render --json keeps every key with one backend: the other backend and the comparison are null", "[cli][render]") {
+  const test::TempDir dir;
+  const test::CliResult r = test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu", "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"format", "scene", "width", "height", "differing_pixels", "max_channel_difference", "diff", "backends"}) {
+    INFO(key);
+    REQUIRE(j.contains(key));
+  }
+  REQUIRE(j.size() == 8);
+  REQUIRE(j["differing_pixels"].is_null());
+  REQUIRE(j["max_channel_difference"].is_null());
+  REQUIRE(j["diff"].is_null());
+  REQUIRE(j["backends"].size() == 2);
+  REQUIRE(j["backends"]["gpu"].is_null());
+  REQUIRE(j["backends"]["cpu"]["output"] == (dir / "c.png").string());
+  REQUIRE(j["backends"]["cpu"]["device"].get<std::string>().rfind("CPU twin, ", 0) == 0);
+}
+
+TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes to standard output", "[cli][render]") {
+  const std::string scene_text = test::ReadFile(kScene);
+  const test::TempDir dir;
+  const test::CliResult r = test::RunCliWithInput({"render", "-", "-o", "-", "--backend", "cpu"}, scene_text);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  // Standard output is the PNG and nothing else; the report went to standard error.
+  REQUIRE(r.out.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
+  test::WriteFile(dir / "out.png", r.out);
+  const Image image = ReadPng(dir / "out.png");
+  REQUIRE(image.width == 600);
+  REQUIRE(image.height == 600);
+  REQUIRE(r.err.rfind("cpu: standard output  (CPU twin, ", 0) == 0);
+
+  // The same image as a file written from the scene file.
+  REQUIRE(test::RunCli({"render", kScene, "-o", (dir / "file.png").string(), "--backend", "cpu"}).exit_code == 0);
+  REQUIRE(ReadPng(dir / "file.png").rgba == image.rgba);
+
+  // --quiet: nothing at all on standard error.
+  const test::CliResult quiet = test::RunCliWithInput({"render", "-", "-o", "-", "--backend", "cpu", "-q"}, scene_text);
+  REQUIRE(quiet.exit_code == 0);
+  REQUIRE(quiet.err.empty());
+  REQUIRE(quiet.out == r.out);
+
+  // A bad scene on standard input is named <stdin>.
+  const test::CliResult bad = test::RunCliWithInput({"render", "-", "-o", (dir / "bad.png").string()}, "{\"canvas\": ");
+  REQUIRE(bad.exit_code == 2);
+  REQUIRE(bad.err.rfind("twinraster: <stdin>: line ", 0) == 0);
+  REQUIRE(!std::filesystem::exists(dir / "bad.png"));
+}
+
+TEST_CASE("Standard streams are refused where they cannot work, before anything is drawn or written", "[cli][render]") {
+  const test::TempDir dir;
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"render", kScene, "-o", "-"}, "--backend both makes two"},
+      {{"render", kScene, "-o", "-", "--backend", "cpu", "--json"}, "-o - and --json both want standard output"},
+      {{"render", "-", "--backend", "cpu"}, "SCENE - (standard input) needs -o OUT.png"},
+  };
+  for (const Case& c : cases) {
+    const test::CliResult r = test::RunCliWithInput(c.args, test::ReadFile(kScene));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.out.empty());
+    REQUIRE(r.err.rfind("twinraster render: ", 0) == 0);
+    REQUIRE(r.err.find(c.says) != std::string::npos);
+    REQUIRE(std::count(r.err.begin(), r.err.end(), '\n') == 2);  // the problem, then the hint
+  }
+}
+
+TEST_CASE("render -o and compare --diff must name .png files, in any case", "[cli][render][compare]") {
+  const test::TempDir dir;
+  test::WriteFile(dir / "keep.jpg", "earlier result");
+  for (const std::string name : {"keep.jpg", "frame", "frame.png.tmp", ".png"}) {
+    INFO(name);
+    const test::CliResult r = test::RunCli({"render", kScene, "-o", (dir / name).string(), "--backend", "cpu"});
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find("the output must be a file name ending in .png") != std::string::npos);
+  }
+  REQUIRE(test::ReadFile(dir / "keep.jpg") == "earlier result");
+  REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 1);
+
+  const test::CliResult upper = test::RunCli({"render", kScene, "-o", (dir / "Frame.PNG").string(), "--backend", "cpu"});
+  INFO(upper.err);
+  REQUIRE(upper.exit_code == 0);
+  REQUIRE(ReadPng(dir / "Frame.PNG").width == 600);
+
+  Image a(2, 2), b(2, 2);
+  b.pixel(0, 0)[0] = 200;
+  WritePng(dir / "a.png", a);
+  WritePng(dir / "b.png", b);
+  const test::CliResult diff = test::RunCli({"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff",
+                                             (dir / "d.gif").string()});
+  REQUIRE(diff.exit_code == 2);
+  REQUIRE(diff.err.find("--diff") != std::string::npos);
+  REQUIRE(!std::filesystem::exists(dir / "d.gif"));
+}
+
+TEST_CASE("Without a terminal on standard error, render and bench print no progress", "[cli][progress]") {
+  const test::TempDir dir;
+  const test::CliResult render = test::RunCli({"render", kScene, "-o", (dir / "x.png").string()});
+  INFO(render.err);
+  REQUIRE(render.exit_code == 0);
+  REQUIRE(render.err.empty());
+  REQUIRE(render.out.find("drawing") == std::string::npos);
+  const test::CliResult bench = test::RunCli({"bench", "--runs", "1", "--only", "cgfs-scene", "--methods",
+                                              "compose-f64,cpu-twin", "--scenes", test::SourcePath("scenes").string()});
+  INFO(bench.err);
+  REQUIRE(bench.exit_code == 0);
+  REQUIRE(bench.err.empty());
+  REQUIRE(bench.out.find("[1/") == std::string::npos);
+}
+
+TEST_CASE("On a terminal, render and bench show progress on standard error, and --quiet silences it", "[cli][progress]") {
+  const test::TempDir dir;
+  const std::vector<std::string> render = {"render", kScene, "-o", (dir / "x.png").string()};
+  const std::vector<std::string> bench = {"bench", "--runs", "1", "--only", "cgfs-scene", "--methods",
+                                          "compose-f64,cpu-twin", "--scenes", test::SourcePath("scenes").string(), "--json"};
+  const test::CliResult shown = test::RunCliInTerminal(render);
+  INFO(shown.out + shown.err);
+  REQUIRE(shown.exit_code == 0);
+  for (const char* stage : {"gpu: starting Vulkan...", "gpu: drawing on ", "cpu: drawing...", "writing the PNGs..."}) {
+    INFO(stage);
+    REQUIRE(shown.out.find(stage) != std::string::npos);
+  }
+  REQUIRE(shown.out.find("\r\033[K") != std::string::npos);  // each stage replaces the last, then is erased
+
+  auto quiet = render;
+  quiet.push_back("--quiet");
+  const test::CliResult silent = test::RunCliInTerminal(quiet);
+  REQUIRE(silent.exit_code == 0);
+  REQUIRE(silent.out.find("drawing") == std::string::npos);
+  REQUIRE(silent.out.find("\033[K") == std::string::npos);
+  REQUIRE(silent.out.find("gpu vs cpu: 600 x 600: 0 differing pixels") != std::string::npos);
+
+  const test::CliResult rows = test::RunCliInTerminal(bench);
+  REQUIRE(rows.exit_code == 0);
+  // compose-f64, then the twin with one thread and (on a machine with more) with every core.
+  REQUIRE(rows.out.find("[1/") != std::string::npos);
+  REQUIRE(rows.out.find("] cgfs-scene compose-f64, ") != std::string::npos);
+  REQUIRE(rows.out.find("] cgfs-scene cpu-twin, 1 thread: frame ") != std::string::npos);
+  auto bench_quiet = bench;
+  bench_quiet.push_back("-q");
+  const test::CliResult no_rows = test::RunCliInTerminal(bench_quiet);
+  REQUIRE(no_rows.exit_code == 0);
+  REQUIRE(no_rows.out.find("[1/") == std::string::npos);
+  REQUIRE(no_rows.out.find("\"format\": \"twinraster.bench/1\"") != std::string::npos);
 }

@@ -1,25 +1,104 @@
-// Mistakes on the command line: one message saying what is wrong, exit code 2.
+// The command line itself: mistakes give one line saying what is wrong (with the closest valid
+// command or option) and where to read more, exit code 2; --help and --version print on stdout.
 #include "support/test_support.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
 
 using namespace twinraster;
 
-TEST_CASE("Usage errors exit with 2 and say what is wrong", "[cli][usage]") {
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{}, "missing command"},
-      {{"frobnicate"}, "unknown command \"frobnicate\""},
-      {{"explain"}, "missing SCENE"},
-      {{"explain", "a.json", "b.json"}, "unexpected argument b.json"},
+TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where to look", "[cli][usage]") {
+  const std::string scene = test::SourcePath("scenes/cgfs-scene.json").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message, hint;
   };
-  for (const auto& [args, message] : cases) {
-    const test::CliResult r = test::RunCli(args);
+  const std::vector<Case> cases = {
+      {{}, "twinraster: missing command", "see 'twinraster --help'"},
+      {{"frobnicate"}, "twinraster: unknown command \"frobnicate\"", "see 'twinraster --help'"},
+      {{"rendr", scene}, "twinraster: unknown command \"rendr\" (did you mean \"render\"?)", "see 'twinraster --help'"},
+      {{"--frobnicate"}, "twinraster: unknown option --frobnicate", "see 'twinraster --help'"},
+      {{"--verison"}, "twinraster: unknown option --verison (did you mean --version?)", "see 'twinraster --help'"},
+      {{"explain"}, "twinraster explain: missing SCENE", "see 'twinraster explain --help'"},
+      {{"explain", "a.json", "b.json"}, "twinraster explain: unexpected argument b.json", "see 'twinraster explain --help'"},
+      {{"compare", "a.png"}, "twinraster compare: missing B.png", "see 'twinraster compare --help'"},
+      {{"render", scene, "--backnd", "gpu"}, "twinraster render: unknown option --backnd (did you mean --backend?)",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--jsno=1"}, "twinraster render: unknown option --jsno (did you mean --json?)",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--backend", "gpuu"},
+       "twinraster render: --backend: unknown backend \"gpuu\" (did you mean \"gpu\"?); choose from gpu, cpu, both",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--threads"}, "twinraster render: option --threads needs a value", "see 'twinraster render --help'"},
+      {{"render", scene, "--json=maybe"}, "twinraster render: --json: cannot take the value \"maybe\"",
+       "see 'twinraster render --help'"},
+      {{"explain", scene, "--vertex", "x"}, "twinraster explain: --vertex: expects a non-negative integer, got \"x\"",
+       "see 'twinraster explain --help'"},
+      {{"render", scene, "compare"}, "twinraster render: unexpected argument compare", "see 'twinraster render --help'"},
+      {{"bench", "--runs", "0"}, "twinraster bench: --runs: expects an integer in 1..1000, got \"0\"",
+       "see 'twinraster bench --help'"},
+      {{"help", "rendr"}, "twinraster help: unknown command \"rendr\" (did you mean \"render\"?)",
+       "see 'twinraster help --help'"},
+  };
+  for (const Case& c : cases) {
+    const test::CliResult r = test::RunCli(c.args);
     INFO(r.err);
     REQUIRE(r.exit_code == 2);
-    REQUIRE(r.err.rfind("twinraster: " + message, 0) == 0);
+    REQUIRE(r.out.empty());
+    REQUIRE(r.err == c.message + "\n" + c.hint + "\n");
+  }
+}
+
+TEST_CASE("Help: --help, -h and the help command print a command's usage on stdout and exit 0", "[cli][usage]") {
+  struct Case {
+    std::vector<std::string> args;
+    std::string usage;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {{"--help"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench", "--version", "Exit codes"}},
+      {{"-h"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench"}},
+      {{"help"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench"}},
+      {{"render", "--help"}, "Usage: twinraster render [OPTIONS] SCENE",
+       {"-o,--output OUT.png", "--backend gpu|cpu|both", "--json", "--device NAME", "--threads N", "-q,--quiet",
+        "standard input", "standard output"}},
+      {{"render", "-h", "no-such-scene.json", "--backend", "cpu"}, "Usage: twinraster render [OPTIONS] SCENE", {"--backend"}},
+      {{"help", "render"}, "Usage: twinraster render [OPTIONS] SCENE", {"--backend"}},
+      {{"explain", "--help"}, "Usage: twinraster explain [OPTIONS] SCENE", {"--instance I", "--vertex V", "--json"}},
+      {{"compare", "-h"}, "Usage: twinraster compare [OPTIONS] A.png B.png", {"--diff D.png", "--json"}},
+      {{"bench", "--help"}, "Usage: twinraster bench [OPTIONS]",
+       {"--out DIR", "--runs N", "--only TEXT", "--methods A,B", "--scenes DIR", "--json", "-q,--quiet", "lavapipe"}},
+  };
+  for (const Case& c : cases) {
+    const test::CliResult r = test::RunCli(c.args);
+    INFO(c.usage);
+    INFO(r.out + r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.err.empty());
+    REQUIRE(r.out.find(c.usage + "\n") != std::string::npos);
+    for (const std::string& mention : c.mentions) {
+      INFO(mention);
+      REQUIRE(r.out.find(mention) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("Version: --version prints the project version, and in a git checkout the commit", "[cli][usage]") {
+  const test::CliResult r = test::RunCli({"--version"});
+  INFO(r.out + r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.empty());
+  const std::string version = std::string("twinraster ") + TWINRASTER_VERSION;
+  REQUIRE(r.out.rfind(version, 0) == 0);
+  if (std::filesystem::exists(test::SourcePath(".git"))) {
+    // git describe --always: a tag or an abbreviated commit, "-dirty" when tracked files changed.
+    REQUIRE(std::regex_match(r.out, std::regex(version + R"( \([0-9A-Za-z._/-]+\)\n)")));
+  } else {
+    REQUIRE(r.out == version + "\n");
   }
 }

@@ -1,0 +1,25 @@
+// Files and streams named on the command line: SCENE is a file or - (standard input); an output
+// PNG is a .png file (written whole, then renamed into place) or - (standard output).
+#pragma once
+
+#include "scene/scene.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace twinraster {
+
+// "-" as SCENE or as an output: the standard stream, as in most command-line tools.
+bool IsStandardStream(std::string_view argument);
+
+// Reads the scene file, or standard input for "-" (named <stdin> in errors); throws SceneError.
+Scene LoadSceneArgument(const std::string& argument);
+
+// Throws UsageError unless `name` ends in .png (in any case): "<option> <name>: ...".
+void ExpectPngName(const std::string& option, const std::string& name);
+
+bool StandardOutputIsTerminal();
+// All of `bytes` to standard output, flushed; throws FileError naming standard output.
+void WriteStandardOutput(std::string_view bytes);
+
+}  // namespace twinraster

@@ -1,0 +1,41 @@
+// Progress on standard error for work that takes a while (a large render's stages, bench rows):
+// shown only when standard error is a terminal and --quiet is not given, so that pipes, files,
+// standard output and --json never see any of it.
+#pragma once
+
+#include <cstddef>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+namespace twinraster {
+
+struct BenchRow;
+
+// Whether progress belongs on file descriptor `fd`: it is a terminal and quiet is not asked for.
+bool ShowProgressOn(int fd, bool quiet);
+
+class Progress {
+ public:
+  explicit Progress(std::ostream* out);  // nullptr: shows nothing
+  static Progress OnStandardError(bool quiet);  // std::cerr when ShowProgressOn(stderr), else nothing
+  ~Progress();  // erases a status line still showing
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  bool active() const { return out_ != nullptr; }
+  // One line that the next Status() or Line() replaces, erased at the end: "gpu: drawing...".
+  void Status(std::string_view text);
+  // A line that stays: one per finished bench row.
+  void Line(std::string_view text);
+  void Clear();  // erases the status line now
+
+ private:
+  std::ostream* out_;
+  bool status_showing_ = false;
+};
+
+// "[ 3/56] hard/far-1e5 compose-f32, 2 threads: frame 0.97 ms, vertex error 2.62e+00 px, image error 2514 px"
+std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t total);
+
+}  // namespace twinraster

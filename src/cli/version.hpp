@@ -1,0 +1,11 @@
+// What `twinraster --version` prints: the project version and, when built from a git checkout,
+// which commit (git describe --always, "-dirty" when tracked files had changes).
+#pragma once
+
+#include <string>
+
+namespace twinraster {
+
+std::string VersionText();  // "twinraster 0.1.0 (93a62fb-dirty)", or "twinraster 0.1.0"
+
+}  // namespace twinraster

@@ -1,0 +1,154 @@
+#!/usr/bin/env python3
+"""Runs the real twinraster executable for each --json output and validates what it prints
+against that output's schema in docs/schemas/. Each schema is also proven strict on the real
+output: a copy with one key missing from any object, or with one key too many, must fail.
+
+Run as: check_json_schemas.py --exe build/bin/twinraster --source <repository>
+Exits 1 naming every failure; CTest runs it (tests/cli/CMakeLists.txt)."""
+
+import argparse
+import copy
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+try:
+    import jsonschema
+except ImportError:
+    sys.exit("check_json_schemas: this python3 has no jsonschema module (apt-get install python3-jsonschema)")
+
+# A camera at the origin and a vertex in its plane (camera z = 0): clip w is 0, so the divided
+# coordinates are not finite and print as null, which the explain schema must allow.
+W_ZERO_SCENE = {
+    "canvas": {"width": 8, "height": 6},
+    "viewport": {"width": 1, "height": 1, "distance": 1},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"m": {"vertices": [[1, 0, 0], [0, 1, 5], [1, 1, 5]], "triangles": [[0, 1, 2, "red"]]}},
+    "instances": [{"model": "m"}],
+}
+
+
+def objects(value, path="$"):
+    """Every object in `value` with its path; of each array, only the first element."""
+    if isinstance(value, dict):
+        yield path, value
+        for key, child in value.items():
+            yield from objects(child, f"{path}.{key}")
+    elif isinstance(value, list) and value:
+        yield from objects(value[0], f"{path}[0]")
+
+
+def at(document, path):
+    node = document
+    for part in path[2:].replace("[0]", ".0").split(".") if path != "$" else []:
+        node = node[0] if part == "0" else node[part]
+    return node
+
+
+def strictness_failures(validator, document):
+    """The mutations of a valid document that the schema wrongly accepts."""
+    failures = []
+    for path, obj in objects(document):
+        for key in list(obj):
+            mutated = copy.deepcopy(document)
+            del at(mutated, path)[key]
+            if validator.is_valid(mutated):
+                failures.append(f"accepts {path} without \"{key}\"")
+        mutated = copy.deepcopy(document)
+        at(mutated, path)["unexpected_key"] = None
+        if validator.is_valid(mutated):
+            failures.append(f"accepts an extra key in {path}")
+    return failures
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--exe", required=True)
+    parser.add_argument("--source", required=True)
+    args = parser.parse_args()
+    scenes = os.path.join(args.source, "scenes")
+    transforms = os.path.join(scenes, "cgfs-transforms.json")
+
+    with tempfile.TemporaryDirectory(prefix="twinraster-schemas-") as tmp:
+        out = lambda name: os.path.join(tmp, name)
+        # (what, schema, arguments, standard input, expected exit code, extra check on the document)
+        cases = [
+            ("explain", "explain", ["explain", transforms, "--json"], None, 0,
+             lambda d: len(d["instances"]) == 2 and len(d["instances"][0]["vertices"]) == 8),
+            ("explain --instance --vertex", "explain",
+             ["explain", transforms, "--json", "--instance", "1", "--vertex", "6"], None, 0,
+             lambda d: len(d["instances"]) == 1 and len(d["instances"][0]["vertices"]) == 1),
+            ("explain of a vertex where w = 0, from standard input", "explain", ["explain", "-", "--json"],
+             json.dumps(W_ZERO_SCENE), 0,
+             lambda d: d["scene"] == "<stdin>" and d["instances"][0]["vertices"][0]["ndc"][0] is None),
+            ("render --backend gpu", "render", ["render", transforms, "--json", "--backend", "gpu", "-o", out("g.png")],
+             None, 0, lambda d: d["backends"]["cpu"] is None and d["differing_pixels"] is None),
+            ("render --backend cpu", "render", ["render", transforms, "--json", "--backend", "cpu", "-o", out("c.png")],
+             None, 0, lambda d: d["backends"]["gpu"] is None and d["diff"] is None),
+            ("render --backend both", "render", ["render", transforms, "--json", "-o", out("b.png")], None, 0,
+             lambda d: d["differing_pixels"] == 0 and d["backends"]["gpu"]["output"] == out("b-gpu.png")),
+            ("render a scene from standard input", "render", ["render", "-", "--json", "--backend", "cpu", "-o",
+             out("s.png")], open(transforms).read(), 0, lambda d: d["scene"] == "-"),
+            ("compare identical", "compare", ["compare", out("b-gpu.png"), out("b-cpu.png"), "--json"], None, 0,
+             lambda d: d["identical"] and d["diff"] is None),
+            ("compare different", "compare",
+             ["compare", out("c.png"), out("other.png"), "--json", "--diff", out("d.png")], None, 1,
+             lambda d: d["differing_pixels"] > 0 and d["diff"] == out("d.png")),
+            ("compare different sizes", "compare", ["compare", out("c.png"), out("small.png"), "--json"], None, 1,
+             lambda d: not d["same_size"] and d["differing_pixels"] is None),
+            ("bench, every method", "bench",
+             ["bench", "--runs", "1", "--only", "cgfs-scene", "--scenes", scenes, "--json"], None, 0,
+             lambda d: len(d["rows"]) >= 6 and len(d["summary"]["cpu_twin_over_lavapipe"]) >= 1),
+            ("bench, depth scenes, two methods", "bench",
+             ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
+              scenes, "--json", "-q"], None, 0,
+             lambda d: d["summary"]["cpu_twin_over_lavapipe"] == [] and d["summary"]["far_1e7_vertex_error_px"]["compose-f32"] is None),
+        ]
+        # The second and third images compare: another scene of the same size, and a smaller one.
+        setup = [
+            ["render", os.path.join(scenes, "cgfs-scene.json"), "--backend", "cpu", "-o", out("other.png")],
+            ["render", "-", "--backend", "cpu", "-o", out("small.png")],
+        ]
+        for i, command in enumerate(setup):
+            subprocess.run([args.exe] + command, check=True, capture_output=True,
+                           input=json.dumps(W_ZERO_SCENE).encode() if i == 1 else None)
+
+        failures = []
+        validators = {}
+        for what, schema_name, arguments, stdin, expected_exit, check in cases:
+            if schema_name not in validators:
+                with open(os.path.join(args.source, "docs", "schemas", f"{schema_name}.schema.json")) as f:
+                    schema = json.load(f)
+                jsonschema.Draft202012Validator.check_schema(schema)
+                validators[schema_name] = jsonschema.Draft202012Validator(schema)
+            validator = validators[schema_name]
+            failures_before = len(failures)
+            run = subprocess.run([args.exe] + arguments, input=stdin.encode() if stdin else None,
+                                 capture_output=True, stdin=None if stdin else subprocess.DEVNULL)
+            if run.returncode != expected_exit:
+                failures.append(f"{what}: exit code {run.returncode}, expected {expected_exit}: {run.stderr.decode()}")
+                continue
+            try:
+                document = json.loads(run.stdout)
+            except json.JSONDecodeError as e:
+                failures.append(f"{what}: standard output is not one JSON document: {e}")
+                continue
+            errors = sorted(validator.iter_errors(document), key=lambda e: list(e.path))
+            for error in errors:
+                where = "$" + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.path)
+                failures.append(f"{what}: {where}: {error.message}")
+            if not errors and not check(document):
+                failures.append(f"{what}: valid, but not what this case expects:\n{json.dumps(document, indent=2)}")
+            if not errors:
+                failures += [f"{what}: the {schema_name} schema {f}" for f in strictness_failures(validator, document)]
+            print(f"{what}: {'ok' if len(failures) == failures_before else 'FAILED'}")
+
+    for failure in failures:
+        print("FAIL " + failure, file=sys.stderr)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
