@@ -6,6 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
 #include <glm/mat4x4.hpp>
 
 #include <cmath>
@@ -38,7 +42,9 @@ Selection Select(const Scene& scene, const ExplainOptions& options) {
     }
     selection.instances = {*options.instance};
   } else {
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) selection.instances.push_back(i);
+    // A million instances would be a million traces: show the first few, and say so.
+    const std::size_t shown = std::min(scene.instances.size(), kExplainedInstances);
+    for (std::size_t i = 0; i < shown; ++i) selection.instances.push_back(i);
   }
   if (options.vertex) {
     for (std::size_t i : selection.instances) {
@@ -52,6 +58,24 @@ Selection Select(const Scene& scene, const ExplainOptions& options) {
     selection.vertex = options.vertex;
   }
   return selection;
+}
+
+// The grid an instance is a copy of, and its (i, j, k) there; nullptr when it was written out.
+const InstanceGrid* GridOf(const Scene& scene, std::size_t instance, std::array<std::size_t, 3>& ijk) {
+  for (const InstanceGrid& g : scene.grids) {
+    if (instance < g.first || instance >= g.first + g.copies()) continue;
+    const std::size_t n = instance - g.first;
+    ijk = {n % g.count[0], n / g.count[0] % g.count[1], n / (std::size_t{g.count[0]} * g.count[1])};
+    return &g;
+  }
+  return nullptr;
+}
+
+std::string GridText(const InstanceGrid& g) {
+  char text[256];
+  std::snprintf(text, sizeof text, "%u x %u x %u grid, spacing (%.6g, %.6g, %.6g)", g.count[0], g.count[1], g.count[2],
+                g.spacing.x, g.spacing.y, g.spacing.z);
+  return text;
 }
 
 // Everything both formats print: the chain, and per selected instance its matrices and traces.
@@ -154,9 +178,23 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   PrintMatrix(out, "C_T⁻¹", Translation(-scene.camera.position));
   PrintMatrix(out, "M_Camera", chain.camera);
 
+  out << "\nInstances: " << scene.instances.size() << " in all";
+  for (const InstanceGrid& g : scene.grids) {
+    out << "\n  instances[" << g.written << "] of the file is a " << GridText(g) << ": " << g.copies()
+        << " copies, instances " << g.first << ".." << g.first + g.copies() - 1 << ", i fastest";
+  }
+  if (!options.instance && e.instances.size() < scene.instances.size()) {
+    out << "\n  the first " << e.instances.size() << " are traced below; pick any other with --instance I";
+  }
+  out << "\n";
+
   for (const InstanceExplanation& x : e.instances) {
     const Transform& t = *x.transform;
-    out << "\nInstance " << x.index << " (model \"" << x.model->name << "\"): M_Model = I_T · I_R · I_S\n";
+    std::array<std::size_t, 3> ijk{};
+    const InstanceGrid* grid = GridOf(scene, x.index, ijk);
+    out << "\nInstance " << x.index << " (model \"" << x.model->name << "\"";
+    if (grid) out << "; copy (" << ijk[0] << ", " << ijk[1] << ", " << ijk[2] << ") of the grid of instances[" << grid->written << "]";
+    out << "): M_Model = I_T · I_R · I_S\n";
     PrintMatrix(out, "I_S", Scale(t.scale));
     PrintMatrix(out, "I_R", Rotation4(t.rotation));
     PrintMatrix(out, "I_T", Translation(t.translation));
@@ -193,11 +231,24 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
   out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
   out["projection_matrix"] = Rows(chain.projection);
   out["camera_matrix"] = Rows(chain.camera);
+  out["instance_count"] = scene.instances.size();
+  out["grids"] = nlohmann::ordered_json::array();
+  for (const InstanceGrid& g : scene.grids) {
+    out["grids"].push_back({{"instance", g.written},
+                            {"first", g.first},
+                            {"count", {g.count[0], g.count[1], g.count[2]}},
+                            {"spacing", Array(g.spacing)},
+                            {"copies", g.copies()}});
+  }
   out["instances"] = nlohmann::ordered_json::array();
   for (const InstanceExplanation& x : e.instances) {
     nlohmann::ordered_json entry;
     entry["index"] = x.index;
     entry["model"] = x.model->name;
+    std::array<std::size_t, 3> ijk{};
+    const InstanceGrid* grid = GridOf(scene, x.index, ijk);
+    entry["grid_copy"] = grid ? nlohmann::ordered_json{{"instance", grid->written}, {"ijk", {ijk[0], ijk[1], ijk[2]}}}
+                              : nlohmann::ordered_json(nullptr);
     entry["model_matrix"] = Rows(x.model_matrix);
     entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
     entry["vertices"] = nlohmann::ordered_json::array();

@@ -12,6 +12,9 @@
 
 namespace twinraster {
 
+// Without --instance, this many instances are traced (the first ones); the rest are counted.
+inline constexpr std::size_t kExplainedInstances = 16;
+
 struct ExplainOptions {
   std::optional<std::size_t> instance;  // only this instance
   std::optional<std::size_t> vertex;    // only this vertex of each instance shown

@@ -1,5 +1,6 @@
-// `twinraster render SCENE`: draws the scene on lavapipe, on the CPU twin or both, writes the
-// PNGs (staged: all or none, or one PNG to standard output) and compares the two images.
+// `twinraster render SCENE...`: draws each scene on lavapipe, on the CPU twin or both, writes the
+// PNGs (staged: all of a scene's or none, or one PNG to standard output) and compares the images.
+// Several scenes share one Vulkan device and pipeline, and write into one directory.
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
 #include "chain/draw_list.hpp"
@@ -12,11 +13,14 @@
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
+#include "scene/scene_error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
+#include <set>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -26,8 +30,9 @@ namespace twinraster {
 namespace {
 
 struct RenderArguments {
-  std::string scene;
-  std::optional<std::string> output;
+  std::vector<std::string> scenes;
+  std::optional<std::string> output;  // one scene: OUT.png or -; several: a directory
+  int png_level = kPngFastest;
   std::string backend = "both";
   bool json = false;
   std::string device;
@@ -52,13 +57,19 @@ std::string Suffixed(const std::string& out, const std::string& suffix) {
   return p.string();
 }
 
-BackendRun RenderGpu(const DrawList& list, const std::string& device, Progress& progress) {
+// The Vulkan device and pipeline are made for the first scene and kept for the others, so that
+// its set-up time includes them and later scenes' do not.
+BackendRun RenderGpu(const DrawList& list, const std::string& device, std::optional<GpuRenderer>& gpu,
+                     Progress& progress) {
   BackendRun run{"gpu", "", {}, {}};
-  progress.Status("gpu: starting Vulkan...");
   Stopwatch clock;
-  GpuOptions options;
-  options.device = device;
-  GpuRenderer renderer(options);
+  if (!gpu) {
+    progress.Status("gpu: starting Vulkan...");
+    GpuOptions options;
+    options.device = device;
+    gpu.emplace(options);
+  }
+  GpuRenderer& renderer = *gpu;
   const double device_ms = clock.Milliseconds();
   run.detail = renderer.DeviceName();
   progress.Status("gpu: drawing on " + run.detail + "...");
@@ -100,7 +111,26 @@ std::string RunText(const BackendRun& run) {
 
 // Every check on the arguments that needs no scene and no device, so that a mistake costs nothing.
 void CheckOutput(const RenderArguments& a) {
-  if (IsStandardStream(a.scene) && !a.output) {
+  if (a.scenes.size() > 1) {
+    // Several scenes: -o is a directory, and each scene's files are named after it.
+    std::set<std::string> names;
+    for (const std::string& scene : a.scenes) {
+      if (IsStandardStream(scene)) throw UsageError("SCENE - (standard input) can only be rendered on its own");
+      const std::string name = std::filesystem::path(scene).stem().string();
+      if (!names.insert(name).second) {
+        throw UsageError("two scenes are named \"" + name + "\": their images would overwrite each other; render them "
+                         "in separate calls");
+      }
+    }
+    if (a.output && IsStandardStream(*a.output)) throw UsageError("-o -: several scenes make several PNGs; give a directory");
+    std::error_code ignored;
+    if (a.output && std::filesystem::exists(*a.output, ignored) && !std::filesystem::is_directory(*a.output, ignored)) {
+      throw UsageError("-o " + *a.output + ": with several scenes, -o names a directory, and this is a file");
+    }
+    return;
+  }
+  const std::string& scene = a.scenes.front();
+  if (IsStandardStream(scene) && !a.output) {
     throw UsageError("SCENE - (standard input) needs -o OUT.png, or -o - for the PNG on standard output");
   }
   if (!a.output || !IsStandardStream(*a.output)) {
@@ -121,18 +151,23 @@ void CheckOutput(const RenderArguments& a) {
   }
 }
 
-int Render(const RenderArguments& a) {
-  CheckOutput(a);
-  Progress progress = Progress::OnStandardError(a.quiet);
-  progress.Status("reading the scene...");
-  const Scene scene = LoadSceneArgument(a.scene);
-  const std::string out = a.output.value_or(scene.name + ".png");
+// One scene, from reading it to its report. `directory`: where several scenes' files go.
+int RenderScene(const RenderArguments& a, const std::string& scene_argument, const std::optional<std::string>& directory,
+                std::optional<GpuRenderer>& gpu, Progress& progress) {
+  progress.Status("reading " + scene_argument + "...");
+  Stopwatch load_clock;
+  const Scene scene = LoadSceneArgument(scene_argument);
+  const std::string out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
+                                    : a.output.value_or(scene.name + ".png");
   const bool to_stdout = IsStandardStream(out);
   const DrawList list = BuildDrawList(scene);
+  const double load_ms = load_clock.Milliseconds();
+  std::size_t triangles = 0;
+  for (const DrawCall& draw : list.draws) triangles += list.meshes[draw.mesh].triangles.size();
 
   // Render everything before writing anything: a run that fails writes no file at all.
   std::vector<BackendRun> runs;
-  if (a.backend != "cpu") runs.push_back(RenderGpu(list, a.device, progress));  // GpuUnavailable: exit 3
+  if (a.backend != "cpu") runs.push_back(RenderGpu(list, a.device, gpu, progress));  // GpuUnavailable: exit 3
   if (a.backend != "gpu") runs.push_back(RenderCpu(list, a.threads, progress));
   for (BackendRun& run : runs) run.output = a.backend == "both" ? Suffixed(out, run.name) : out;
 
@@ -149,12 +184,12 @@ int Render(const RenderArguments& a) {
   std::string png_bytes;  // for -o -
   for (BackendRun& run : runs) {
     Stopwatch clock;
-    if (to_stdout) png_bytes = EncodePng(run.image);
-    else staged.push_back(StagePng(run.output, run.image));
+    if (to_stdout) png_bytes = EncodePng(run.image, a.png_level);
+    else staged.push_back(StagePng(run.output, run.image, a.png_level));
     run.png_ms = clock.Milliseconds();
   }
   const bool wrote_diff = comparison && !comparison->Equal();
-  if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image)));
+  if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image), a.png_level));
   for (StagedFile& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   std::error_code ignored;
@@ -173,17 +208,26 @@ int Render(const RenderArguments& a) {
     using Json = nlohmann::ordered_json;
     Json j;
     j["format"] = kRenderJsonFormat;
-    j["scene"] = a.scene;
+    j["scene"] = scene_argument;
     j["width"] = list.width;
     j["height"] = list.height;
+    j["instances"] = list.draws.size();
+    j["triangles"] = triangles;
+    j["load_ms"] = load_ms;
     j["differing_pixels"] = comparison ? Json(comparison->differing_pixels) : Json(nullptr);
     j["max_channel_difference"] = comparison ? Json(comparison->max_channel_difference) : Json(nullptr);
     j["diff"] = wrote_diff ? Json(diff_file) : Json(nullptr);
     j["backends"] = {{"gpu", RunJson(find_run("gpu"))}, {"cpu", RunJson(find_run("cpu"))}};
-    std::cout << j.dump(2) << "\n";
+    // One scene: the object, indented. Several: JSON Lines, one object per scene as it finishes.
+    std::cout << (directory ? j.dump() : j.dump(2)) << "\n" << std::flush;
   } else if (!(to_stdout && a.quiet)) {
     // With -o - standard output carries the PNG alone, so the report goes to standard error.
     std::ostream& report = to_stdout ? std::cerr : std::cout;
+    std::ostringstream work;
+    work.precision(3);
+    work << std::fixed << scene_argument << ": " << list.draws.size() << (list.draws.size() == 1 ? " instance, " : " instances, ") << triangles
+         << " triangles, " << list.width << " x " << list.height << ", loaded in " << load_ms << " ms";
+    report << work.str() << "\n";
     for (const BackendRun& run : runs) report << RunText(run) << "\n";
     if (comparison) {
       report << "gpu vs cpu: " << ComparisonText(runs[0].image, runs[1].image, *comparison)
@@ -191,6 +235,37 @@ int Render(const RenderArguments& a) {
     }
   }
   return comparison && !comparison->Equal() ? kExitImagesDiffer : kExitOk;
+}
+
+int Render(const RenderArguments& a) {
+  CheckOutput(a);
+  Progress progress = Progress::OnStandardError(a.quiet);
+  std::optional<GpuRenderer> gpu;
+  if (a.scenes.size() == 1) return RenderScene(a, a.scenes.front(), std::nullopt, gpu, progress);
+
+  const std::string directory = a.output.value_or(".");
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw FileError(directory + ": cannot create the directory: " + error.message());
+  // Each scene on its own: a bad scene or an unwritable output is reported and the others still
+  // render; the exit code is the worst of them. No Vulkan device ends the run (exit 3).
+  int worst = kExitOk;
+  for (const std::string& scene : a.scenes) {
+    int code = kExitOk;
+    try {
+      code = RenderScene(a, scene, directory, gpu, progress);
+    } catch (const SceneError& e) {
+      progress.Clear();
+      std::cerr << "twinraster: " << e.what() << "\n";
+      code = kExitBadInput;
+    } catch (const FileError& e) {
+      progress.Clear();
+      std::cerr << "twinraster: " << e.what() << "\n";
+      code = kExitBadInput;
+    }
+    worst = std::max(worst, code);
+  }
+  return worst;
 }
 
 }  // namespace
@@ -203,13 +278,20 @@ CommandRun AddRenderCommand(CLI::App& app) {
       "earlier files untouched. On a terminal, progress shows on standard error.\n"
       "Exit codes: 0 done (both: identical images), 1 the images differ, 2 bad input or usage,\n"
       "3 no usable Vulkan device (--backend cpu needs none), 4 internal error.");
-  command->add_option("SCENE", a->scene, "the scene file (JSON), or - to read it from standard input")->required();
+  command->add_option("SCENE", a->scenes, "scene files (JSON), or - to read one from standard input")->required();
   command
       ->add_option("-o,--output", a->output,
                    "gpu, cpu: write OUT.png; both: OUT-gpu.png, OUT-cpu.png and, when\n"
                    "they differ, OUT-diff.png. Default: the scene's name in the current\n"
-                   "directory. - writes the PNG to standard output (gpu or cpu only)")
-      ->type_name("OUT.png");
+                   "directory. - writes the PNG to standard output (gpu or cpu only).\n"
+                   "Several scenes: OUT is a directory (made if missing; default .) and\n"
+                   "each scene's files are named after it")
+      ->type_name("OUT.png|DIR");
+  ExpectIntegerIn(command
+                      ->add_option("--png-level", a->png_level,
+                                   "PNG compression, 0 (none) to 12 (smallest, slowest); default 1, the fastest")
+                      ->type_name("0-12"),
+                  0, 12);
   ExpectOneOf(command->add_option("--backend", a->backend, "where to draw (default: both)")->type_name("gpu|cpu|both"),
               "backend", {"gpu", "cpu", "both"});
   command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/1, docs/json-output.md)");

@@ -83,6 +83,10 @@ def main():
             ("explain of a vertex where w = 0, from standard input", "explain", ["explain", "-", "--json"],
              json.dumps(W_ZERO_SCENE), 0,
              lambda d: d["scene"] == "<stdin>" and d["instances"][0]["vertices"][0]["ndc"][0] is None),
+            ("explain of a grid scene: 16 of 1000 instances traced, the grid described", "explain",
+             ["explain", os.path.join(scenes, "catlike-grid.json"), "--json"], None, 0,
+             lambda d: d["instance_count"] == 1000 and len(d["instances"]) == 16 and d["grids"][0]["copies"] == 1000
+             and d["instances"][11]["grid_copy"] == {"instance": 0, "ijk": [1, 1, 0]}),
             ("render --backend gpu", "render", ["render", transforms, "--json", "--backend", "gpu", "-o", out("g.png")],
              None, 0, lambda d: d["backends"]["cpu"] is None and d["differing_pixels"] is None),
             ("render --backend cpu", "render", ["render", transforms, "--json", "--backend", "cpu", "-o", out("c.png")],
@@ -91,6 +95,10 @@ def main():
              lambda d: d["differing_pixels"] == 0 and d["backends"]["gpu"]["output"] == out("b-gpu.png")),
             ("render a scene from standard input", "render", ["render", "-", "--json", "--backend", "cpu", "-o",
              out("s.png")], open(transforms).read(), 0, lambda d: d["scene"] == "-"),
+            ("render several scenes: JSON Lines, one object per scene", "render",
+             ["render", transforms, os.path.join(scenes, "lookat.json"), "--json", "--backend", "cpu", "-o", out("many")],
+             None, 0, lambda ds: [d["scene"] for d in ds] == [transforms, os.path.join(scenes, "lookat.json")] and
+             ds[1]["backends"]["cpu"]["output"] == os.path.join(out("many"), "lookat.png") and ds[1]["instances"] == 3),
             ("compare identical", "compare", ["compare", out("b-gpu.png"), out("b-cpu.png"), "--json"], None, 0,
              lambda d: d["identical"] and d["diff"] is None),
             ("compare different", "compare",
@@ -130,19 +138,27 @@ def main():
             if run.returncode != expected_exit:
                 failures.append(f"{what}: exit code {run.returncode}, expected {expected_exit}: {run.stderr.decode()}")
                 continue
+            # One JSON document, or JSON Lines (render with several scenes): one document per line.
             try:
-                document = json.loads(run.stdout)
-            except json.JSONDecodeError as e:
-                failures.append(f"{what}: standard output is not one JSON document: {e}")
-                continue
-            errors = sorted(validator.iter_errors(document), key=lambda e: list(e.path))
+                documents = [json.loads(run.stdout)]
+            except json.JSONDecodeError:
+                try:
+                    documents = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
+                except json.JSONDecodeError as e:
+                    failures.append(f"{what}: standard output is neither one JSON document nor JSON Lines: {e}")
+                    continue
+            errors = []
+            for document in documents:
+                errors += sorted(validator.iter_errors(document), key=lambda e: list(e.path))
             for error in errors:
                 where = "$" + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.path)
                 failures.append(f"{what}: {where}: {error.message}")
-            if not errors and not check(document):
-                failures.append(f"{what}: valid, but not what this case expects:\n{json.dumps(document, indent=2)}")
+            checked = documents[0] if len(documents) == 1 else documents
+            if not errors and not check(checked):
+                failures.append(f"{what}: valid, but not what this case expects:\n{json.dumps(checked, indent=2)}")
             if not errors:
-                failures += [f"{what}: the {schema_name} schema {f}" for f in strictness_failures(validator, document)]
+                for document in documents:
+                    failures += [f"{what}: the {schema_name} schema {f}" for f in strictness_failures(validator, document)]
             print(f"{what}: {'ok' if len(failures) == failures_before else 'FAILED'}")
 
     for failure in failures:

@@ -156,11 +156,14 @@ TEST_CASE("render --json keeps every key with one backend: the other backend and
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"format", "scene", "width", "height", "differing_pixels", "max_channel_difference", "diff", "backends"}) {
+  for (const char* key : {"format", "scene", "width", "height", "instances", "triangles", "load_ms", "differing_pixels",
+                          "max_channel_difference", "diff", "backends"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
-  REQUIRE(j.size() == 8);
+  REQUIRE(j.size() == 11);
+  REQUIRE(j["instances"] == 2);
+  REQUIRE(j["triangles"] == 24);
   REQUIRE(j["differing_pixels"].is_null());
   REQUIRE(j["max_channel_difference"].is_null());
   REQUIRE(j["diff"].is_null());
@@ -182,7 +185,8 @@ TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes
   const Image image = ReadPng(dir / "out.png");
   REQUIRE(image.width == 600);
   REQUIRE(image.height == 600);
-  REQUIRE(r.err.rfind("cpu: standard output  (CPU twin, ", 0) == 0);
+  REQUIRE(r.err.rfind("-: 2 instances, 24 triangles, 600 x 600, loaded in ", 0) == 0);
+  REQUIRE(r.err.find("\ncpu: standard output  (CPU twin, ") != std::string::npos);
 
   // The same image as a file written from the scene file.
   REQUIRE(test::RunCli({"render", kScene, "-o", (dir / "file.png").string(), "--backend", "cpu"}).exit_code == 0);
@@ -300,4 +304,31 @@ TEST_CASE("On a terminal, render and bench show progress on standard error, and 
   REQUIRE(no_rows.exit_code == 0);
   REQUIRE(no_rows.out.find("[1/") == std::string::npos);
   REQUIRE(no_rows.out.find("\"format\": \"twinraster.bench/1\"") != std::string::npos);
+}
+
+TEST_CASE("render with several scenes writes each into -o DIR, keeps going past a bad one, exits with the worst code",
+          "[cli][render][many]") {
+  const test::TempDir dir;
+  const std::string lookat = test::SourcePath("scenes/lookat.json").string();
+  test::WriteFile(dir / "broken.json", "{\"canvas\": ");
+  const auto out = dir / "frames";  // made by render
+  const test::CliResult r = test::RunCli({"render", kScene, (dir / "broken.json").string(), lookat, "-o", out.string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 2);  // the worst: the broken scene's bad input, although the others matched
+  REQUIRE(r.err.find("broken.json: line 1") != std::string::npos);
+  for (const char* file : {"cgfs-transforms-gpu.png", "cgfs-transforms-cpu.png", "lookat-gpu.png", "lookat-cpu.png"}) {
+    INFO(file);
+    REQUIRE(ReadPng(out / file).width > 0);
+  }
+  REQUIRE_FALSE(std::filesystem::exists(out / "broken-gpu.png"));
+  // The Vulkan device is made once: the second scene's set-up is only its buffers.
+  REQUIRE(r.out.find("lookat.json: 3 instances, 36 triangles, 640 x 480") != std::string::npos);
+
+  const test::CliResult good = test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
+  REQUIRE(good.exit_code == 0);
+  REQUIRE(ReadPng(out / "lookat.png").width == 640);
+  // -o naming a file, and - among several scenes, are refused before anything runs.
+  test::WriteFile(dir / "plain.txt", "x");
+  REQUIRE(test::RunCli({"render", kScene, lookat, "-o", (dir / "plain.txt").string()}).exit_code == 2);
+  REQUIRE(test::RunCli({"render", kScene, "-", "-o", out.string()}).exit_code == 2);
 }
