@@ -3,6 +3,7 @@
 #include "base/usage_error.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
+#include "bench/scale_bench.hpp"
 #include "cli/commands.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
@@ -26,9 +27,44 @@ struct BenchArguments {
   std::string scenes = "scenes";
   bool json = false;
   bool quiet = false;
+  bool scale = false;
+  std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
 };
 
+// bench --scale: the million cubes at growing instance counts.
+int BenchScale(const BenchArguments& a) {
+  ScaleOptions options;
+  options.counts = a.counts;
+  options.runs = a.runs;
+  Progress progress = Progress::OnStandardError(a.quiet);
+  if (progress.active()) {
+    options.on_row = [&progress](const ScaleRow& row, std::size_t done, std::size_t total) {
+      progress.Line("scale " + std::to_string(done) + "/" + std::to_string(total) + ": " + std::to_string(row.instances) +
+                    " instances");
+    };
+  }
+  const ScaleResult result = RunScaleBench(options);
+  if (a.out) {
+    const std::filesystem::path dir = *a.out;
+    std::vector<StagedFile> staged;
+    staged.emplace_back(dir / "scale.csv", ScaleCsv(result));
+    staged.emplace_back(dir / "scale.svg", ScaleChartSvg(result));
+    staged.emplace_back(dir / "scale.json", ScaleJson(result).dump(2) + "\n");
+    staged.emplace_back(dir / "scale.txt", ScaleTable(result));
+    for (StagedFile& file : staged) file.Commit();
+  }
+  if (a.json) std::cout << ScaleJson(result).dump(2) << "\n";
+  else std::cout << ScaleTable(result);
+  return kExitOk;
+}
+
 int Bench(const BenchArguments& a) {
+  if (a.out && !std::filesystem::is_directory(*a.out)) {
+    std::error_code error;
+    std::filesystem::create_directories(*a.out, error);
+    if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
+  }
+  if (a.scale) return BenchScale(a);
   BenchOptions options;
   options.runs = a.runs;
   options.only = a.only;
@@ -95,6 +131,13 @@ CommandRun AddBenchCommand(CLI::App& app) {
   command->add_option("--scenes", a->scenes, "the suite's directory (default: scenes)")->type_name("DIR");
   command->add_flag("--json", a->json, "print the results as JSON (twinraster.bench/1, docs/json-output.md)");
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error");
+  command->add_flag("--scale", a->scale,
+                    "instead of the suite: cubes written out one instance each, at growing counts,\n"
+                    "every stage timed, with peak memory (scale.csv/.svg/.json/.txt with --out;\n"
+                    "JSON twinraster.bench-scale/1)");
+  command->add_option("--counts", a->counts, "with --scale: the instance counts (default: 1000,10000,100000,1000000)")
+      ->type_name("N,N")
+      ->delimiter(',');
   return [a] { return Bench(*a); };
 }
 

@@ -109,6 +109,10 @@ def main():
             ("bench, every method", "bench",
              ["bench", "--runs", "1", "--only", "cgfs-scene", "--scenes", scenes, "--json"], None, 0,
              lambda d: len(d["rows"]) >= 6 and len(d["summary"]["cpu_twin_over_lavapipe"]) >= 1),
+            ("bench --scale, two small counts", "bench-scale",
+             ["bench", "--scale", "--counts", "1000,64", "--runs", "1", "--json", "-q"], None, 0,
+             lambda d: [r["instances"] for r in d["rows"]] == [64, 1000] and all(r["identical"] for r in d["rows"])
+             and d["rows"][1]["triangles"] == 12000),
             ("bench, depth scenes, two methods", "bench",
              ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
               scenes, "--json", "-q"], None, 0,

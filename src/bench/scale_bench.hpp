@@ -1,0 +1,51 @@
+// `twinraster bench --scale`: the chapter's "one million cubes" at 1 k, 10 k, 100 k and 1 M
+// instances, each stage timed (medians) with the process's peak memory, so that cost can be read
+// against instance count.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace twinraster {
+
+struct ScaleRow {
+  std::size_t instances = 0, triangles = 0;
+  std::size_t json_bytes = 0;  // the scene file, every instance written out
+  unsigned threads = 0;        // the CPU twin's
+  // Medians, milliseconds. load: parsing the JSON into a Scene; chain: the host's F per instance
+  // (the draw list); gpu_*: lavapipe; twin_*: the CPU twin; png: encoding the twin's image.
+  double load_ms = 0, chain_ms = 0, gpu_setup_ms = 0, gpu_draw_ms = 0, twin_setup_ms = 0, twin_draw_ms = 0, png_ms = 0;
+  double peak_mib = 0;  // the process's peak resident memory once this size is done (sizes run in increasing order)
+  bool identical = false;  // lavapipe's image equals the twin's
+};
+
+struct ScaleOptions {
+  std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
+  int runs = 3;
+  std::uint32_t width = 1920, height = 1080;
+  std::function<void(const ScaleRow& row, std::size_t done, std::size_t total)> on_row;
+};
+
+struct ScaleResult {
+  std::vector<ScaleRow> rows;
+  std::string machine;
+  int runs = 0;
+};
+
+// Cubes in a centred grid as close to a cube as the count allows, each written out as its own
+// instance, seen whole from above a corner. Throws GpuUnavailable without a Vulkan device.
+ScaleResult RunScaleBench(const ScaleOptions& options);
+
+inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/1";
+std::string ScaleTable(const ScaleResult& result);
+std::string ScaleCsv(const ScaleResult& result);
+nlohmann::ordered_json ScaleJson(const ScaleResult& result);
+// Log-log: milliseconds per stage against instances, one line per stage.
+std::string ScaleChartSvg(const ScaleResult& result);
+
+}  // namespace twinraster
