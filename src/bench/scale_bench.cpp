@@ -92,11 +92,12 @@ struct Stage {
   const char* label;
   double ScaleRow::*value;
 };
-constexpr std::array<Stage, 7> kStages = {{
+constexpr std::array<Stage, 8> kStages = {{
     {"load_ms", "load", &ScaleRow::load_ms},
     {"chain_ms", "host chain", &ScaleRow::chain_ms},
     {"gpu_setup_ms", "gpu set-up", &ScaleRow::gpu_setup_ms},
     {"gpu_draw_ms", "gpu draw", &ScaleRow::gpu_draw_ms},
+    {"gpu_per_draw_ms", "gpu, F per draw", &ScaleRow::gpu_per_draw_ms},
     {"twin_setup_ms", "twin set-up", &ScaleRow::twin_setup_ms},
     {"twin_draw_ms", "twin draw", &ScaleRow::twin_draw_ms},
     {"png_ms", "png", &ScaleRow::png_ms},
@@ -112,7 +113,10 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   std::vector<std::size_t> counts = options.counts;
   std::sort(counts.begin(), counts.end());  // increasing, so that the peak memory is this size's
 
-  GpuRenderer gpu;  // made once, as `render` with several scenes does
+  // Made once, as `render` with several scenes does: the path a user gets (instanced from
+  // kInstancingThreshold draws of one mesh on), and F pushed per draw for comparison.
+  GpuRenderer gpu;
+  GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   ScaleResult result;
   result.machine = MachineName(gpu.DeviceName());
   result.runs = options.runs;
@@ -120,7 +124,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
     ScaleRow row;
     const std::string json = CubesJson(counts[n], options.width, options.height);
     row.json_bytes = json.size();
-    std::vector<double> load, chain, gpu_setup, gpu_draw, twin_setup, twin_draw, png;
+    std::vector<double> load, chain, gpu_setup, gpu_draw, gpu_per_draw, twin_setup, twin_draw, png;
     for (int run = 0; run < options.runs; ++run) {
       Stopwatch clock;
       const Scene scene = ParseScene(json, "cubes.json");
@@ -131,6 +135,9 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       const Image gpu_image = gpu.Render(list, &g);
       gpu_setup.push_back(g.setup_ms);
       gpu_draw.push_back(g.draw_ms);
+      GpuTimings p;
+      const Image per_draw_image = pushing.Render(list, &p);
+      gpu_per_draw.push_back(p.setup_ms + p.draw_ms);
       CpuTimings c;
       const Image twin_image = RenderOnCpu(list, {}, &c);
       twin_setup.push_back(c.setup_ms);
@@ -141,11 +148,12 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       row.instances = list.draws.size();
       row.triangles = list.draws.size() * list.meshes.front().triangles.size();
       row.threads = c.threads;
-      row.identical = CompareImages(gpu_image, twin_image).Equal();
+      row.identical = CompareImages(gpu_image, twin_image).Equal() && CompareImages(per_draw_image, twin_image).Equal();
     }
     row.load_ms = Median(load), row.chain_ms = Median(chain), row.gpu_setup_ms = Median(gpu_setup);
     row.gpu_draw_ms = Median(gpu_draw), row.twin_setup_ms = Median(twin_setup), row.twin_draw_ms = Median(twin_draw);
     row.png_ms = Median(png);
+    row.gpu_per_draw_ms = Median(gpu_per_draw);
     row.peak_mib = PeakMib();
     result.rows.push_back(row);
     if (options.on_row) options.on_row(row, n + 1, counts.size());
@@ -157,16 +165,19 @@ std::string ScaleTable(const ScaleResult& result) {
   std::ostringstream s;
   s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine << "\n";
   char line[256];
-  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %7s |%8s  %s\n", "instances", "triangles",
-                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "twin set", "twin draw", "png", "peak MB", "gpu == twin");
+  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s |%8s  %s\n", "instances", "triangles",
+                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw", "png", "peak MB",
+                "gpu == twin");
   s << line;
   for (const ScaleRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %7.1f |%8.0f  %s\n", r.instances,
-                  r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms, r.gpu_draw_ms,
-                  r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.peak_mib, r.identical ? "yes" : "NO");
+    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f |%8.0f  %s\n",
+                  r.instances, r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
+                  r.gpu_draw_ms, r.gpu_per_draw_ms, r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.peak_mib,
+                  r.identical ? "yes" : "NO");
     s << line;
   }
-  s << "(milliseconds; twin on " << (result.rows.empty() ? 0 : result.rows.front().threads)
+  s << "(milliseconds; per-draw: lavapipe's set-up + draw with F pushed per draw, against gpu set-up + draw as a user\n"
+       " gets it, instanced from " << gpu::kInstancingThreshold << " draws of a mesh on; twin on " << (result.rows.empty() ? 0 : result.rows.front().threads)
     << " thread(s); peak MB: the process's peak resident memory after that size)\n";
   return s.str();
 }
@@ -238,7 +249,7 @@ std::string ScaleChartSvg(const ScaleResult& result) {
       << "\" text-anchor=\"middle\">instances (cubes, 12 triangles each)</text>\n"
       << "<text x=\"14\" y=\"" << (kTop + kHeight - kBottom) / 2 << "\" transform=\"rotate(-90 14 "
       << (kTop + kHeight - kBottom) / 2 << ")\" text-anchor=\"middle\">milliseconds (median)</text>\n";
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"};
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#7f7f7f", "#9467bd", "#8c564b", "#e377c2"};
   for (std::size_t k = 0; k < kStages.size(); ++k) {
     svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << colours[k] << "\" points=\"";
     for (const ScaleRow& r : result.rows) svg << px(static_cast<double>(r.instances)) << "," << py(r.*kStages[k].value) << " ";

@@ -20,6 +20,9 @@ struct ScaleRow {
   // Medians, milliseconds. load: parsing the JSON into a Scene; chain: the host's F per instance
   // (the draw list); gpu_*: lavapipe; twin_*: the CPU twin; png: encoding the twin's image.
   double load_ms = 0, chain_ms = 0, gpu_setup_ms = 0, gpu_draw_ms = 0, twin_setup_ms = 0, twin_draw_ms = 0, png_ms = 0;
+  // lavapipe with F pushed per draw (one draw per instance, Listing 10-5), set-up plus draw, to
+  // set against gpu_setup_ms + gpu_draw_ms (instanced): where the two cross over.
+  double gpu_per_draw_ms = 0;
   double peak_mib = 0;  // the process's peak resident memory once this size is done (sizes run in increasing order)
   bool identical = false;  // lavapipe's image equals the twin's
 };
