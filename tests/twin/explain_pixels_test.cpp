@@ -21,12 +21,12 @@ TEST_CASE("explain's framebuffer points land on the pixels the renderers colour"
   REQUIRE(images.Equal());
 
   struct Case {
-    std::array<int, 3> triangle;
+    std::array<std::size_t, 3> triangle;
     std::array<std::uint8_t, 3> colour;
   };
   for (const Case& c : {Case{{5, 4, 7}, {0, 0, 255}}, Case{{5, 7, 6}, {0, 0, 255}}, Case{{4, 0, 3}, {0, 255, 0}}}) {
     double x = 0, y = 0;
-    for (int v : c.triangle) {
+    for (const std::size_t v : c.triangle) {
       x += vertices[v]["framebuffer"][0].get<double>() / 3;
       y += vertices[v]["framebuffer"][1].get<double>() / 3;
     }

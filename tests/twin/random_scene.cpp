@@ -121,7 +121,7 @@ json RandomSceneJson(std::uint32_t seed) {
   const double kind = dice.Uniform(0, 1);
   const json up = json::array({dice.Uniform(-0.3, 0.3), 1, dice.Uniform(-0.3, 0.3)});
   if (kind < 0.4) {
-    const json& target = instances[dice.Int(0, count - 1)]["transform"]["translation"];
+    const json& target = instances[static_cast<std::size_t>(dice.Int(0, count - 1))]["transform"]["translation"];
     scene["camera"] = {{"eye", json::array({dice.Uniform(-4, 4), dice.Uniform(-4, 4), dice.Uniform(2, 12)})},
                        {"center", target},
                        {"up", up}};
