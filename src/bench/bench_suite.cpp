@@ -77,6 +77,8 @@ GpuRenderer LavapipeWithThreads(unsigned threads) {
   return renderer;
 }
 
+}  // namespace
+
 std::string MachineDescription(const std::string& device) {
   std::string model = "unknown CPU";
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -88,8 +90,6 @@ std::string MachineDescription(const std::string& device) {
   }
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; Vulkan: " + device;
 }
-
-}  // namespace
 
 std::vector<std::string> BenchMethodNames() {
   std::vector<std::string> names;

@@ -43,6 +43,9 @@ struct BenchResult {
   double seconds = 0;
 };
 
+// "CPU model, N hardware threads; Vulkan: device", for the reports.
+std::string MachineDescription(const std::string& device);
+
 // Every name --methods accepts, in the order rows appear.
 std::vector<std::string> BenchMethodNames();
 

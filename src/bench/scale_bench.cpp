@@ -2,6 +2,7 @@
 
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
+#include "bench/bench_suite.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/gpu_renderer.hpp"
@@ -16,9 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-#include <thread>
 
 namespace twinraster {
 
@@ -75,18 +74,6 @@ double Median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-std::string MachineName(const std::string& device) {
-  std::string model = "unknown CPU";
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);) {
-    if (line.rfind("model name", 0) == 0) {
-      model = line.substr(line.find(':') + 2);
-      break;
-    }
-  }
-  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; Vulkan: " + device;
-}
-
 struct Stage {
   const char* key;
   const char* label;
@@ -118,7 +105,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   GpuRenderer gpu;
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   ScaleResult result;
-  result.machine = MachineName(gpu.DeviceName());
+  result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;
   for (std::size_t n = 0; n < counts.size(); ++n) {
     ScaleRow row;

@@ -31,6 +31,13 @@ struct BenchArguments {
   std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
 };
 
+// Staged together: either every output in `dir` is replaced or none is.
+void WriteTogether(const std::filesystem::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<StagedFile> staged;
+  for (const auto& [name, text] : files) staged.emplace_back(dir / name, text);
+  for (StagedFile& file : staged) file.Commit();
+}
+
 // bench --scale: the million cubes at growing instance counts.
 int BenchScale(const BenchArguments& a) {
   ScaleOptions options;
@@ -45,13 +52,10 @@ int BenchScale(const BenchArguments& a) {
   }
   const ScaleResult result = RunScaleBench(options);
   if (a.out) {
-    const std::filesystem::path dir = *a.out;
-    std::vector<StagedFile> staged;
-    staged.emplace_back(dir / "scale.csv", ScaleCsv(result));
-    staged.emplace_back(dir / "scale.svg", ScaleChartSvg(result));
-    staged.emplace_back(dir / "scale.json", ScaleJson(result).dump(2) + "\n");
-    staged.emplace_back(dir / "scale.txt", ScaleTable(result));
-    for (StagedFile& file : staged) file.Commit();
+    WriteTogether(*a.out, {{"scale.csv", ScaleCsv(result)},
+                           {"scale.svg", ScaleChartSvg(result)},
+                           {"scale.json", ScaleJson(result).dump(2) + "\n"},
+                           {"scale.txt", ScaleTable(result)}});
   }
   if (a.json) std::cout << ScaleJson(result).dump(2) << "\n";
   else std::cout << ScaleTable(result);
@@ -88,14 +92,10 @@ int Bench(const BenchArguments& a) {
   }
   const BenchResult result = RunBench(options);
   if (a.out) {
-    const std::filesystem::path dir = *a.out;
-    // Staged together: either every output is replaced or none is.
-    std::vector<StagedFile> staged;
-    staged.emplace_back(dir / "bench.csv", BenchCsv(result));
-    staged.emplace_back(dir / "bench.svg", BenchChartSvg(result));
-    staged.emplace_back(dir / "bench.json", BenchJson(result).dump(2) + "\n");
-    staged.emplace_back(dir / "bench.txt", BenchTable(result));
-    for (StagedFile& file : staged) file.Commit();
+    WriteTogether(*a.out, {{"bench.csv", BenchCsv(result)},
+                           {"bench.svg", BenchChartSvg(result)},
+                           {"bench.json", BenchJson(result).dump(2) + "\n"},
+                           {"bench.txt", BenchTable(result)}});
   }
   if (a.json) {
     std::cout << BenchJson(result).dump(2) << "\n";

@@ -1,5 +1,7 @@
 #include "gpu/vulkan_context.hpp"
 
+#include "gpu/keep_loaded.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <optional>
@@ -196,6 +198,7 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
                                                    .pEnabledFeatures = &features,
                                                });
   queue_ = device_.getQueue(queue_family_, 0);
+  KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
 }
 
 std::uint32_t VulkanContext::FindMemoryType(std::uint32_t type_bits,
