@@ -1,5 +1,7 @@
 #include "cli/parser_setup.hpp"
 
+#include "cli/version.hpp"
+
 #include "base/closest_match.hpp"
 
 #include <CLI/CLI.hpp>
@@ -51,6 +53,7 @@ CLI::App* AddSubcommand(CLI::App& app, const std::string& name, const std::strin
   CLI::App* command = app.add_subcommand(name, description);
   command->group("Commands");
   command->allow_extras();
+  command->set_version_flag("--version", VersionText(), "print the version and exit");
   if (!footer.empty()) command->footer(footer);
   return command;
 }

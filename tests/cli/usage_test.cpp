@@ -105,4 +105,11 @@ TEST_CASE("Version: --version prints the project version, and in a git checkout 
   } else {
     REQUIRE(r.out == version + "\n");
   }
+  // Every command answers --version the same way, without its required arguments.
+  for (const char* command : {"explain", "render", "compare", "bench", "help"}) {
+    INFO(command);
+    const test::CliResult c = test::RunCli({command, "--version"});
+    REQUIRE(c.exit_code == 0);
+    REQUIRE(c.out == r.out);
+  }
 }
