@@ -34,6 +34,9 @@ double MedianMs(int runs, const std::function<void()>& fn) {
   return times.size() % 2 ? times[times.size() / 2] : (times[times.size() / 2 - 1] + times[times.size() / 2]) / 2;
 }
 
+// Scenes with more instances are left out of the default suite.
+constexpr std::size_t kSuiteMaxInstances = 100'000;
+
 std::vector<std::filesystem::path> SuiteScenes(const BenchOptions& options) {
   std::vector<std::filesystem::path> files;
   for (const char* sub : {"", "hard", "bench"}) {
@@ -47,6 +50,10 @@ std::vector<std::filesystem::path> SuiteScenes(const BenchOptions& options) {
   }
   if (options.only) {
     std::erase_if(files, [&](const auto& f) { return f.string().find(*options.only) == std::string::npos; });
+  } else {
+    // The million cubes would take the truth minutes per run; `bench --scale` measures them, and
+    // --only still picks them.
+    std::erase_if(files, [](const auto& f) { return LoadScene(f).instances.size() > kSuiteMaxInstances; });
   }
   return files;
 }
