@@ -1,6 +1,8 @@
 // libFuzzer target for the scene loader: any bytes either load into a scene or are refused with a
 // SceneError; anything else (another exception, a crash, a leak, undefined behaviour, a hang) is
-// a finding.
+// a finding. A scene that loads must also keep the promises src/scene/scene.hpp makes ("already
+// validated by the loader"), which every later stage relies on; a broken one traps.
+#include "scene/scene.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -9,15 +11,34 @@
 #include <string>
 #include <string_view>
 
+namespace {
+
+void Check(bool promise) {
+  if (!promise) __builtin_trap();
+}
+
+void CheckScene(const twinraster::Scene& scene) {
+  Check(scene.canvas.width >= 1 && scene.canvas.width <= twinraster::kMaxCanvasSize);
+  Check(scene.canvas.height >= 1 && scene.canvas.height <= twinraster::kMaxCanvasSize);
+  Check(scene.depth.far > scene.depth.near);
+  for (const twinraster::Model& model : scene.models) {
+    for (const twinraster::Triangle& triangle : model.triangles) {
+      for (const std::uint32_t v : triangle.v) Check(v < model.vertices.size());
+    }
+  }
+  Check(scene.instances.size() <= twinraster::kMaxInstances);
+  for (const twinraster::Instance& instance : scene.instances) Check(instance.model < scene.models.size());
+  for (const twinraster::InstanceGrid& grid : scene.grids) {
+    Check(grid.first <= scene.instances.size() && grid.copies() <= scene.instances.size() - grid.first);
+  }
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const twinraster::Scene scene = twinraster::ParseScene(text, "fuzz.json");
-    // A scene that loads has what every later stage relies on.
-    if (scene.canvas.width == 0 || scene.canvas.height == 0) __builtin_trap();
-    for (const twinraster::Instance& instance : scene.instances) {
-      if (instance.model >= scene.models.size()) __builtin_trap();
-    }
+    CheckScene(twinraster::ParseScene(text, "fuzz.json"));
   } catch (const twinraster::SceneError&) {
     // The expected way to refuse bad input.
   }

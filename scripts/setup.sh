@@ -19,6 +19,7 @@ packages=(
   libsimdjson-dev                # scene files: the fast parser
   libcli11-dev                   # the command line
   clang libclang-rt-14-dev       # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
+  llvm                           # llvm-symbolizer: file:line in sanitizer and fuzzer reports
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
 )
 

@@ -83,7 +83,8 @@ struct InstanceGrid {
 };
 
 // At most this many instances in a scene, grids' copies included: 2^24, far more than a
-// 2-core machine draws in a second, and F for each still fits comfortably in memory (1 GiB).
+// 2-core machine draws in a second. At that count the scene's instances take 2 GiB (128 bytes
+// each) and the draw list's F another 1 GiB: large, but bounded.
 inline constexpr std::size_t kMaxInstances = std::size_t{1} << 24;
 
 // The camera's own transform in the world (C_T, C_R); M_Camera is its inverse.
