@@ -1,5 +1,6 @@
 #include "cpu/cpu_renderer.hpp"
 
+#include "cpu/depth_tiles.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/geometry.hpp"
 #include "cpu/parallel.hpp"
@@ -7,6 +8,7 @@
 #include "base/stopwatch.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -47,20 +49,37 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   });
   draw_ms += clock.Lap();
 
+  DepthTiles tiles(list.width, list.height, fb.compare);
+  std::vector<std::uint64_t> hidden(threads, 0);  // per part
+  const int height = static_cast<int>(list.height);
   for (const GeometryChunk& chunk : chunks) {
-    // Setup: vertex stage, clipping, viewport transform, triangle setup.
-    ProcessGeometry(list, chunk, threads, scratch, clip, threads);
+    // Setup: vertex stage, clipping, viewport transform, triangle setup, binning into bands.
+    ProcessGeometry(list, chunk, threads, scratch, clip, bands);
     setup_ms += clock.Lap();
-    // Draw: every part rasterizes, in order, the chunk's triangles that touch its own bands.
+    // Draw: each part rasterizes its own bands, each band's triangles in list order.
     const TriangleChunks& triangles = scratch.triangles;
     ParallelParts(threads, [&](unsigned part) {
-      RasterizeOwnedBands(
-          [&](auto&& fn) {
-            for (std::size_t p = 0; p < triangles.size(); ++p)
-              for (const std::uint32_t i : scratch.owners[p][part]) fn(triangles[p][i]);
-          },
-          RowShare{threads, part}, static_cast<int>(list.height), [](int, int) {},
-          [&](const TriangleSetup& t, int py, Span span) { ShadeSpan(fb, py, span, t.depth, t.colour); });
+      std::uint64_t skipped = 0;  // counted here: a shared array written per triangle would ping-pong
+      for (unsigned band = part; band < bands; band += threads) {
+        const int band_begin = static_cast<int>(band) * kBandRows;
+        const int band_end = std::min(height, band_begin + kBandRows);
+        for (std::size_t p = 0; p < triangles.size(); ++p) {
+          for (const std::uint32_t i : scratch.bins[p][band]) {
+            const TriangleSetup& t = triangles[p][i];
+            const int row_begin = std::max(t.bounds.y0, band_begin), row_end = std::min(t.bounds.y1 + 1, band_end);
+            if (options.depth_tiles && tiles.Hidden(t, static_cast<int>(band), row_begin, row_end)) {
+              ++skipped;
+              continue;
+            }
+            RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup& s, int py, Span span) {
+              ShadeSpan(fb, py, span, s.depth, s.colour);
+              tiles.MarkDrawn(py, span);
+            });
+          }
+        }
+        if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
+      }
+      hidden[part] += skipped;
     });
     draw_ms += clock.Lap();
   }
@@ -71,7 +90,9 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
   // A sliced giant mesh may have grown the scratch; don't keep that much between renders.
   if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
-  if (timings != nullptr) *timings = {setup_ms, draw_ms, readback_ms, threads};
+  if (timings != nullptr) {
+    *timings = {setup_ms, draw_ms, readback_ms, threads, std::accumulate(hidden.begin(), hidden.end(), std::uint64_t{0})};
+  }
   return image;
 }
 

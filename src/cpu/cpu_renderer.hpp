@@ -7,6 +7,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace twinraster {
@@ -17,6 +18,9 @@ struct CpuOptions {
   // Triangles (and vertices) set up per chunk; 0: the default (geometry.hpp's ChunkBudget). The
   // image is identical for any value; tests use small ones to exercise the streaming.
   std::size_t chunk_triangles = 0;
+  // Skip triangles hidden in a 16x16 tile by what is already drawn (cpu/depth_tiles.hpp). Exact,
+  // so the image is the same without; off only to measure what it saves and to test that.
+  bool depth_tiles = true;
 };
 
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,
@@ -24,6 +28,7 @@ struct CpuOptions {
 struct CpuTimings {
   double setup_ms = 0, draw_ms = 0, readback_ms = 0;
   unsigned threads = 0;  // the threads actually used: at most one per 16-row band
+  std::uint64_t hidden = 0;  // triangles skipped in a band because the depth tiles hid them there
 };
 
 // Throws std::invalid_argument for a malformed list (size 0 or over 16384, a mesh or vertex index

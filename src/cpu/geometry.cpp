@@ -33,12 +33,14 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
                       std::vector<TriangleSetup>& out) {
   const unsigned any_outside = v[0]->outcode | v[1]->outcode | v[2]->outcode;
   const unsigned all_outside = v[0]->outcode & v[1]->outcode & v[2]->outcode;
-  TriangleSetup setup;
-  setup.colour = colour;
+  // Set up in place: a copy through the stack would cost store-forwarding stalls on every field.
+  const auto set_up = [&](const WindowPos& a, const WindowPos& b, const WindowPos& c) {
+    TriangleSetup& setup = out.emplace_back();
+    setup.colour = colour;
+    if (!SetUpTriangle(a, b, c, region, setup)) out.pop_back();
+  };
   if (any_outside == 0) {
-    if (SetUpTriangle(v[0]->v.window, v[1]->v.window, v[2]->v.window, region, setup)) {
-      out.push_back(setup);
-    }
+    set_up(v[0]->v.window, v[1]->v.window, v[2]->v.window);
     return;
   }
   if (all_outside != 0) return;  // entirely outside one plane
@@ -47,18 +49,15 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
   ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon);
   for (int i = 2; i < polygon.count; ++i) {
     const auto& p = polygon.v;
-    if (SetUpTriangle(p[0].window, p[static_cast<std::size_t>(i - 1)].window,
-                      p[static_cast<std::size_t>(i)].window, region, setup)) {
-      out.push_back(setup);
-    }
+    set_up(p[0].window, p[static_cast<std::size_t>(i - 1)].window, p[static_cast<std::size_t>(i)].window);
   }
 }
 
 std::size_t GeometryScratch::bytes() const {
   std::size_t total = vertices.capacity() * sizeof(ShadedVertex) + vertex_start.capacity() * sizeof(std::size_t);
   for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
-  for (const auto& part : owners)
-    for (const auto& owned : part) total += owned.capacity() * sizeof(std::uint32_t);
+  for (const auto& part : bins)
+    for (const auto& bin : part) total += bin.capacity() * sizeof(std::uint32_t);
   return total;
 }
 
@@ -104,7 +103,7 @@ TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads) {
 
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip,
-                     unsigned raster_parts) {
+                     unsigned band_count) {
   const ViewportState vp = MakeViewport(list.width, list.height);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
 
@@ -162,10 +161,10 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
   // 4 KiB on every render); with a reused scratch there is usually nothing to allocate.
   TriangleChunks& parts = scratch.triangles;
   parts.resize(triangle_parts);
-  scratch.owners.resize(triangle_parts);
+  scratch.bins.resize(triangle_parts);
   for (unsigned part = 0; part < triangle_parts; ++part) {
-    scratch.owners[part].resize(raster_parts);
-    for (auto& owned : scratch.owners[part]) owned.clear();
+    scratch.bins[part].resize(band_count);
+    for (auto& bin : scratch.bins[part]) bin.clear();
     parts[part].clear();
     const std::size_t share =
         triangle_count * (part + 1) / triangle_parts - triangle_count * part / triangle_parts;
@@ -186,14 +185,12 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                                      PackRgba(mesh.colours[t]), vp, region, out);
                   }
                 }
-                if (raster_parts == 0) return;
-                // Bin while the triangles are still in cache: most touch one band, so one owner.
-                std::vector<std::vector<std::uint32_t>>& owners = scratch.owners[part];
+                if (band_count == 0) return;
+                // Bin while the triangles are still in cache (most touch one band).
+                std::vector<std::vector<std::uint32_t>>& bins = scratch.bins[part];
                 for (std::size_t i = 0; i < out.size(); ++i) {
-                  const int first_band = out[i].bounds.y0 / kBandRows, last_band = out[i].bounds.y1 / kBandRows;
-                  const int last = std::min(last_band, first_band + static_cast<int>(raster_parts) - 1);
-                  for (int band = first_band; band <= last; ++band) {
-                    owners[static_cast<unsigned>(band) % raster_parts].push_back(static_cast<std::uint32_t>(i));
+                  for (int band = FirstBand(out[i]); band <= LastBand(out[i]); ++band) {
+                    bins[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
                   }
                 }
               });

@@ -58,18 +58,19 @@ struct GeometryScratch {
   std::vector<ShadedVertex> vertices;
   std::vector<std::size_t> vertex_start;  // per draw of the shaded chunk, into `vertices`
   TriangleChunks triangles;               // the result
-  // owners[p][r]: indices into triangles[p] of the triangles touching a band of raster part r
-  // (BandOwner), in order; binned as they are set up, so each raster part reads only its own.
-  std::vector<std::vector<std::vector<std::uint32_t>>> owners;
+  // bins[p][b]: indices into triangles[p] of the triangles whose box touches band b (kBandRows
+  // rows), in order; binned as they are set up, while still in cache, so that each band's
+  // rasterizer reads only the triangles it draws.
+  std::vector<std::vector<std::vector<std::uint32_t>>> bins;
   std::size_t bytes() const;
 };
 
-// Sets up one chunk into scratch.triangles, and, when raster_parts > 0, bins them into
-// scratch.owners. `clip`: when given, the positions another vertex stage computed (one vector per
+// Sets up one chunk into scratch.triangles, and, when band_count > 0, bins them into
+// scratch.bins. `clip`: when given, the positions another vertex stage computed (one vector per
 // draw) replace this one's F · (p, 1).
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip = nullptr,
-                     unsigned raster_parts = 0);
+                     unsigned band_count = 0);
 
 // The whole list as one chunk, for tests that want every triangle at once.
 TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads);

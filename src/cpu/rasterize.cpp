@@ -18,7 +18,7 @@ std::int64_t CeilDiv(std::int64_t a, std::int64_t b) { return -FloorDiv(-a, b); 
 Span CoveredSpan(const TriangleSetup& t, int py) {
   std::int64_t begin = t.bounds.x0;
   std::int64_t end = std::int64_t{t.bounds.x1} + 1;
-  for (const EdgeFunction& e : t.edges) {
+  for (const EdgeFunction& e : Edges(t)) {
     // Along the row the edge function is row_value + step * px; covered needs > 0.
     const std::int64_t row_value = e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne);
     const std::int64_t step = -e.dcdx * kSubpixelOne;
@@ -36,8 +36,9 @@ Span CoveredSpan(const TriangleSetup& t, int py) {
 
 SpanWalker::SpanWalker(const TriangleSetup& t, int py)
     : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
+  const std::array<EdgeFunction, 3> edges = Edges(t);
   for (std::size_t i = 0; i < 3; ++i) {
-    const EdgeFunction& e = t.edges[i];
+    const EdgeFunction& e = edges[i];
     EdgeState& s = edges_[i];
     const std::int64_t row_value = e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne);
     const std::int64_t row_change = e.dcdy * kSubpixelOne;  // of row_value per row down

@@ -9,6 +9,7 @@
 #include "cpu/triangle_setup.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -82,11 +83,12 @@ constexpr int kNarrowTriangle = 8;
 // one SpanWalker computes.
 template <class SpanFn>
 void ScanNarrowTriangle(const TriangleSetup& t, int row_begin, int row_end, SpanFn&& on_span) {
+  const std::array<EdgeFunction, 3> edges = Edges(t);
+  const std::int64_t s0 = edges[0].dcdx * kSubpixelOne, s1 = edges[1].dcdx * kSubpixelOne,
+                     s2 = edges[2].dcdx * kSubpixelOne;
   for (int py = row_begin; py < row_end; ++py) {
-    std::int64_t e0 = EdgeAt(t.edges[0], t.bounds.x0, py), e1 = EdgeAt(t.edges[1], t.bounds.x0, py),
-                 e2 = EdgeAt(t.edges[2], t.bounds.x0, py);
-    const std::int64_t s0 = t.edges[0].dcdx * kSubpixelOne, s1 = t.edges[1].dcdx * kSubpixelOne,
-                       s2 = t.edges[2].dcdx * kSubpixelOne;
+    std::int64_t e0 = EdgeAt(edges[0], t.bounds.x0, py), e1 = EdgeAt(edges[1], t.bounds.x0, py),
+                 e2 = EdgeAt(edges[2], t.bounds.x0, py);
     int begin = -1, end = -1;
     for (int px = t.bounds.x0; px <= t.bounds.x1; ++px, e0 -= s0, e1 -= s1, e2 -= s2) {
       if (e0 > 0 && e1 > 0 && e2 > 0) {
@@ -97,6 +99,21 @@ void ScanNarrowTriangle(const TriangleSetup& t, int row_begin, int row_end, Span
       }
     }
     if (begin >= 0) on_span(t, py, Span{begin, end});
+  }
+}
+
+// The covered spans of rows [row_begin, row_end) of t, which must lie inside its bounds: on_span(t,
+// py, span) for each non-empty one, top down.
+template <class SpanFn>
+void RasterizeRows(const TriangleSetup& t, int row_begin, int row_end, SpanFn&& on_span) {
+  if (t.bounds.x1 - t.bounds.x0 < kNarrowTriangle) {
+    ScanNarrowTriangle(t, row_begin, row_end, on_span);
+    return;
+  }
+  SpanWalker walker(t, row_begin);
+  for (int py = row_begin; py < row_end; ++py, walker.NextRow()) {
+    const Span span = walker.span();
+    if (span.begin < span.end) on_span(t, py, span);
   }
 }
 
@@ -111,62 +128,30 @@ struct RowShare {
 // Which part owns the band of row y: bands are dealt out round-robin.
 inline unsigned BandOwner(int y, unsigned parts) { return static_cast<unsigned>(y / kBandRows) % parts; }
 
+// The bands a triangle's box touches, [first, last].
+inline int FirstBand(const TriangleSetup& t) { return t.bounds.y0 / kBandRows; }
+inline int LastBand(const TriangleSetup& t) { return t.bounds.y1 / kBandRows; }
+
 // Rasterizes the bands `share` owns one after the other, so that a band's depth and colour rows
 // stay in cache: for each owned band, top down, on_band(row_begin, row_end) first, then
 // on_span(triangle, py, span) for each covered span in the band of every triangle overlapping it,
-// triangles in order. `for_each_candidate(fn)` calls fn(triangle) for every triangle that may
-// touch the part's bands, in list order. Each pixel sees the same triangles in the same order as
-// drawing one whole triangle after the other would give.
-template <class CandidatesFn, class BandFn, class SpanFn>
-void RasterizeOwnedBands(CandidatesFn&& for_each_candidate, const RowShare& share, int height, BandFn&& on_band,
-                         SpanFn&& on_span) {
-  const int parts = static_cast<int>(share.parts);
-  const int part = static_cast<int>(share.part);
-  const int band_count = (height + kBandRows - 1) / kBandRows;
-  if (part >= band_count) return;
-  const int owned = (band_count - part + parts - 1) / parts;
-
-  // Bins: which triangles touch each owned band (band = part + k * parts), in list order.
-  std::vector<std::vector<const TriangleSetup*>> bins(static_cast<std::size_t>(owned));
-  for_each_candidate([&](const TriangleSetup& t) {
-    const int first_band = t.bounds.y0 / kBandRows, last_band = t.bounds.y1 / kBandRows;
-    int band = first_band + ((part - first_band % parts) % parts + parts) % parts;
-    for (; band <= last_band; band += parts) {
-      bins[static_cast<std::size_t>((band - part) / parts)].push_back(&t);
-    }
-  });
-
-  for (int k = 0; k < owned; ++k) {
-    const int band = part + k * parts;
-    const int band_begin = band * kBandRows, band_end = std::min(height, band_begin + kBandRows);
-    on_band(band_begin, band_end);
-    for (const TriangleSetup* triangle : bins[static_cast<std::size_t>(k)]) {
-      const TriangleSetup& t = *triangle;
-      const int row_begin = std::max(t.bounds.y0, band_begin);
-      const int row_end = std::min(t.bounds.y1 + 1, band_end);
-      if (t.bounds.x1 - t.bounds.x0 < kNarrowTriangle) {
-        ScanNarrowTriangle(t, row_begin, row_end, on_span);
-        continue;
-      }
-      SpanWalker walker(t, row_begin);
-      for (int py = row_begin; py < row_end; ++py, walker.NextRow()) {
-        const Span span = walker.span();
-        if (span.begin < span.end) on_span(t, py, span);
-      }
-    }
-  }
-}
-
-// The same over all triangles (chunk after chunk): every part looks at every triangle.
+// triangles in list order. Each pixel sees the same triangles in the same order as drawing one
+// whole triangle after the other would give. (The renderer does the same from the bins that
+// geometry.hpp fills during setup; this simple form serves clearing and coverage counting.)
 template <class BandFn, class SpanFn>
 void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share,
                     int height, BandFn&& on_band, SpanFn&& on_span) {
-  RasterizeOwnedBands(
-      [&](auto&& fn) {
-        for (const std::vector<TriangleSetup>& chunk : triangles)
-          for (const TriangleSetup& t : chunk) fn(t);
-      },
-      share, height, on_band, on_span);
+  const int band_count = (height + kBandRows - 1) / kBandRows;
+  for (int band = static_cast<int>(share.part); band < band_count; band += static_cast<int>(share.parts)) {
+    const int band_begin = band * kBandRows, band_end = std::min(height, band_begin + kBandRows);
+    on_band(band_begin, band_end);
+    for (const std::vector<TriangleSetup>& chunk : triangles) {
+      for (const TriangleSetup& t : chunk) {
+        if (band < FirstBand(t) || band > LastBand(t)) continue;
+        RasterizeRows(t, std::max(t.bounds.y0, band_begin), std::min(t.bounds.y1 + 1, band_end), on_span);
+      }
+    }
+  }
 }
 
 }  // namespace twinraster::cpu

@@ -9,6 +9,10 @@
 #include <thread>
 #include <vector>
 
+#if defined(__x86_64__) || defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 namespace twinraster::cpu {
 
 namespace {
@@ -17,6 +21,17 @@ namespace {
 // instead of waiting for themselves.
 thread_local bool t_inside_parts = false;
 
+// Pause inside a spin loop (lets the other hyper-thread run and saves power).
+inline void CpuRelax() {
+#if defined(__x86_64__) || defined(__SSE2__)
+  _mm_pause();
+#endif
+}
+
+// How long a thread spins before it sleeps: a wake-up through the kernel costs tens of
+// microseconds, more than one stage of a chunk often takes.
+constexpr int kSpins = 20000;
+
 // One RunParts call. Workers hold it by shared_ptr: one that wakes late finds every part taken
 // and lets go, never touching a later job's counters.
 struct Job {
@@ -24,6 +39,7 @@ struct Job {
   unsigned parts = 0;
   std::atomic<unsigned> next_part{0};
   unsigned unfinished = 0;  // guarded by ThreadPool::mutex_
+  std::atomic<unsigned> remaining{0};  // the same, readable without the lock (for spinning)
   std::exception_ptr error;  // likewise: the first part's exception, rethrown by the caller
 };
 
@@ -44,14 +60,16 @@ class ThreadPool {
     job->fn = &fn;
     job->parts = parts;
     job->unfinished = parts;
+    job->remaining.store(parts);
     {
       const std::lock_guard lock(mutex_);
       while (workers_.size() + 1 < parts) workers_.emplace_back([this] { Work(); });
       current_ = job;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     TakeParts(*job);
+    for (int spin = 0; spin < kSpins && job->remaining.load(std::memory_order_acquire) != 0; ++spin) CpuRelax();
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return job->unfinished == 0; });
     current_ = nullptr;
@@ -64,11 +82,12 @@ class ThreadPool {
     std::uint64_t seen = 0;
     for (;;) {
       std::shared_ptr<Job> job;
+      for (int spin = 0; spin < kSpins && generation_.load(std::memory_order_acquire) == seen; ++spin) CpuRelax();
       {
         std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+        wake_.wait(lock, [&] { return stopping_ || generation_.load() != seen; });
         if (stopping_) return;
-        seen = generation_;
+        seen = generation_.load();
         job = current_;
       }
       if (job) TakeParts(*job);
@@ -90,6 +109,7 @@ class ThreadPool {
       }
       const std::lock_guard lock(mutex_);
       if (error && !job.error) job.error = error;
+      job.remaining.fetch_sub(1, std::memory_order_release);
       if (--job.unfinished == 0) done_.notify_all();
     }
     t_inside_parts = was_inside;
@@ -100,7 +120,7 @@ class ThreadPool {
   std::condition_variable wake_, done_;
   std::vector<std::thread> workers_;
   bool stopping_ = false;
-  std::uint64_t generation_ = 0;
+  std::atomic<std::uint64_t> generation_{0};
   std::shared_ptr<Job> current_;
 };
 

@@ -25,17 +25,6 @@ std::int32_t SnapToSubpixel(float window_coord) {
 #endif
 }
 
-EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj) {
-  EdgeFunction e;
-  e.dcdx = std::int64_t{yi} - yj;
-  e.dcdy = std::int64_t{xi} - xj;
-  e.c = e.dcdx * xi - e.dcdy * yi;
-  const bool left_edge = e.dcdx < 0;
-  const bool top_edge = e.dcdx == 0 && e.dcdy > 0;
-  if (left_edge || top_edge) e.c += 1;
-  return e;
-}
-
 bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
                    const PixelRect& region, TriangleSetup& out) {
   std::int32_t x[3] = {SnapToSubpixel(v0.x), SnapToSubpixel(v1.x), SnapToSubpixel(v2.x)};
@@ -65,17 +54,15 @@ bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2
   if (box.x0 > box.x1 || box.y0 > box.y1) return false;
   out.bounds = box;
 
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    out.edges[static_cast<std::size_t>(i)] = MakeEdge(x[i], y[i], x[j], y[j]);
-  }
+  out.x = {x[0], x[1], x[2]};
+  out.y = {y[0], y[1], y[2]};
   out.depth = MakeDepthPlane(*w[0], *w[1], *w[2]);
   return true;
 }
 
 bool Covers(const TriangleSetup& t, int px, int py) {
   if (px < t.bounds.x0 || px > t.bounds.x1 || py < t.bounds.y0 || py > t.bounds.y1) return false;
-  for (const EdgeFunction& e : t.edges) {
+  for (const EdgeFunction& e : Edges(t)) {
     if (EdgeAt(e, px, py) <= 0) return false;
   }
   return true;

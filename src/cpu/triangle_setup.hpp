@@ -8,6 +8,7 @@
 //    dcdy > 0): the top-left rule, turning "on the edge" into "inside" for those edges only.
 //    Pixel (px, py) is covered when c + dcdy * (py * 256) - dcdx * (px * 256) > 0 for all three.
 //  - The bounding box of the snapped vertices (as llvmpipe rounds it) ∩ the draw region.
+// The setup keeps the snapped vertices; the edge functions follow from them (Edges).
 #pragma once
 
 #include "cpu/depth_plane.hpp"
@@ -37,15 +38,33 @@ inline std::int64_t EdgeAt(const EdgeFunction& e, int px, int py) {
          e.dcdx * (std::int64_t{px} * kSubpixelOne);
 }
 
-EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj);
+inline EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj) {
+  EdgeFunction e;
+  e.dcdx = std::int64_t{yi} - yj;
+  e.dcdy = std::int64_t{xi} - xj;
+  e.c = e.dcdx * xi - e.dcdy * yi;
+  const bool left_edge = e.dcdx < 0;
+  const bool top_edge = e.dcdx == 0 && e.dcdy > 0;
+  if (left_edge || top_edge) e.c += 1;
+  return e;
+}
 
+// What rasterization needs of one triangle, kept small (64 bytes) because a million cubes set up
+// twelve million of them: the edge functions are not stored but rebuilt from the snapped vertices
+// where a triangle is drawn (Edges), which costs less than moving them through memory.
 struct TriangleSetup {
-  std::array<EdgeFunction, 3> edges;
+  std::array<std::int32_t, 3> x{}, y{};  // snapped vertices, in post-swap order
   PixelRect bounds;  // pixels that may be covered, inside the draw region
   DepthPlane depth;  // from the vertices in post-swap order
   std::uint32_t colour = 0;
   bool swapped = false;  // the snapped area was negative, so vertices 1 and 2 were swapped
 };
+
+// The three edge functions, edge i running from vertex i to vertex i + 1 mod 3.
+inline std::array<EdgeFunction, 3> Edges(const TriangleSetup& t) {
+  return {MakeEdge(t.x[0], t.y[0], t.x[1], t.y[1]), MakeEdge(t.x[1], t.y[1], t.x[2], t.y[2]),
+          MakeEdge(t.x[2], t.y[2], t.x[0], t.y[0])};
+}
 
 // False when the triangle covers nothing for sure (zero area, or its box misses `region`).
 bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,

@@ -78,9 +78,9 @@ TEST_CASE("a triangle fully inside is drawn unchanged", "[cpu][clip]") {
   TriangleSetup direct;
   REQUIRE(SetUpTriangle(a.window, b.window, c.window, DrawRegion(kVp, 100, 100), direct));
   for (std::size_t i = 0; i < 3; ++i) {
-    CHECK(drawn[0].edges[i].c == direct.edges[i].c);
-    CHECK(drawn[0].edges[i].dcdx == direct.edges[i].dcdx);
-    CHECK(drawn[0].edges[i].dcdy == direct.edges[i].dcdy);
+    CHECK(Edges(drawn[0])[i].c == Edges(direct)[i].c);
+    CHECK(Edges(drawn[0])[i].dcdx == Edges(direct)[i].dcdx);
+    CHECK(Edges(drawn[0])[i].dcdy == Edges(direct)[i].dcdy);
   }
 }
 

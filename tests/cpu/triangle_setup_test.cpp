@@ -164,7 +164,7 @@ TEST_CASE("row spans, divided or stepped, equal per-pixel edge tests on many tri
       REQUIRE(walked.end == span.end);
       for (int px = 0; px < 16; ++px) {
         bool inside = px >= t.bounds.x0 && px <= t.bounds.x1;
-        for (const EdgeFunction& e : t.edges) inside = inside && EdgeAt(e, px, py) > 0;
+        for (const EdgeFunction& e : Edges(t)) inside = inside && EdgeAt(e, px, py) > 0;
         REQUIRE(inside == (px >= span.begin && px < span.end));
       }
     }

@@ -1,0 +1,84 @@
+#include "cpu/depth_tiles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace twinraster::cpu {
+
+namespace {
+
+// The largest (kLess) or smallest (kGreater) depth stored in a rectangle.
+template <bool kLargest>
+float Farthest(const Framebuffer& fb, int x_begin, int x_end, int row_begin, int row_end) {
+  float farthest = fb.depth[fb.index(x_begin, row_begin)];
+  for (int py = row_begin; py < row_end; ++py) {
+    const float* row = fb.depth.data() + fb.index(0, py);
+    for (int px = x_begin; px < x_end; ++px) {
+      farthest = kLargest ? (row[px] > farthest ? row[px] : farthest) : (row[px] < farthest ? row[px] : farthest);
+    }
+  }
+  return farthest;
+}
+
+}  // namespace
+
+double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare op) {
+  const double a0 = plane.a0, dzdx = plane.dzdx, dzdy = plane.dzdy;
+  const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
+  // The plane is affine, so over the box it is extreme at corners. Each product of a float and a
+  // pixel index is exact in double.
+  const double lowest = a0 + std::min(dzdx * x0, dzdx * x1) + std::min(dzdy * y0, dzdy * y1);
+  const double highest = a0 + std::max(dzdx * x0, dzdx * x1) + std::max(dzdy * y0, dzdy * y1);
+  // Each fma rounds once, by at most 2^-24 of a value no larger than `scale` (and by 2^-150 when
+  // subnormal); 2^-22 covers both roundings twice over, and the double sums above too.
+  const double scale = std::fabs(a0) + std::fabs(dzdx) * std::max(std::fabs(x0), std::fabs(x1)) +
+                       std::fabs(dzdy) * std::max(std::fabs(y0), std::fabs(y1));
+  const double slack = std::ldexp(scale, -22) + std::ldexp(1.0, -126);
+  // A NaN plane value is clamped to 1 (ClampDepth): 0 and 1 are the bounds that stay true then.
+  if (op == DepthCompare::kLess) {
+    const double z = lowest - slack;
+    return z > 0 ? std::min(z, 1.0) : 0.0;
+  }
+  const double z = highest + slack;
+  return z < 1 ? std::max(z, 0.0) : 1.0;
+}
+
+DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare op)
+    : columns_((width + kTileSize - 1) / kTileSize),
+      stride_((columns_ + 63) / 64 * 64),
+      op_(op),
+      farthest_(stride_ * ((height + kTileSize - 1) / kTileSize), ClearDepth(op)),
+      dirty_(farthest_.size(), 0) {}
+
+bool DepthTiles::Hidden(const TriangleSetup& t, int band, int row_begin, int row_end) const {
+  const float* tiles = farthest_.data() + static_cast<std::size_t>(band) * stride_;
+  const int first = t.bounds.x0 / kTileSize, last = t.bounds.x1 / kTileSize;
+  float farthest = tiles[first];
+  for (int tx = first + 1; tx <= last; ++tx) {
+    farthest = op_ == DepthCompare::kLess ? std::max(farthest, tiles[tx]) : std::min(farthest, tiles[tx]);
+  }
+  // Nothing to gain where the tiles still hold the clear depth (only a fragment exactly at it
+  // would be rejected), so skip the bound's arithmetic there.
+  if (farthest == ClearDepth(op_)) return false;
+  const PixelRect box{t.bounds.x0, row_begin, t.bounds.x1, row_end - 1};
+  const double nearest = NearestDepth(t.depth, box, op_);
+  // Every fragment is at least as far as `nearest`, which is at least as far as every stored depth
+  // in these tiles: the strict test fails everywhere.
+  return op_ == DepthCompare::kLess ? nearest >= farthest : nearest <= farthest;
+}
+
+void DepthTiles::Refresh(const Framebuffer& fb, int band) {
+  const int width = static_cast<int>(fb.width()), height = static_cast<int>(fb.height());
+  const int row_begin = band * kTileSize, row_end = std::min(height, row_begin + kTileSize);
+  const std::size_t offset = static_cast<std::size_t>(band) * stride_;
+  for (std::size_t tx = 0; tx < columns_; ++tx) {
+    if (dirty_[offset + tx] == 0) continue;
+    dirty_[offset + tx] = 0;
+    const int x_begin = static_cast<int>(tx) * kTileSize, x_end = std::min(width, x_begin + kTileSize);
+    farthest_[offset + tx] = op_ == DepthCompare::kLess
+                                 ? Farthest<true>(fb, x_begin, x_end, row_begin, row_end)
+                                 : Farthest<false>(fb, x_begin, x_end, row_begin, row_end);
+  }
+}
+
+}  // namespace twinraster::cpu
