@@ -33,7 +33,7 @@ double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare 
   // subnormal); 2^-22 covers both roundings twice over, and the double sums above too.
   const double scale = std::fabs(a0) + std::fabs(dzdx) * std::max(std::fabs(x0), std::fabs(x1)) +
                        std::fabs(dzdy) * std::max(std::fabs(y0), std::fabs(y1));
-  const double slack = std::ldexp(scale, -22) + std::ldexp(1.0, -126);
+  const double slack = scale * 0x1p-22 + 0x1p-126;
   // A NaN plane value is clamped to 1 (ClampDepth): 0 and 1 are the bounds that stay true then.
   if (op == DepthCompare::kLess) {
     const double z = lowest - slack;

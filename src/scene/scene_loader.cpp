@@ -257,31 +257,37 @@ void AppendGridCopies(const Instance& instance, const InstanceGrid& grid, std::v
 }
 
 // True when some object repeats a key or the nesting is deep enough that the locating parser
-// should look (it refuses kMaxJsonDepth levels; this errs on the side of looking).
-bool NeedsLocatingParser(simdjson::dom::element root) {
-  std::vector<std::pair<simdjson::dom::element, std::size_t>> stack{{root, 1}};
-  std::vector<std::string_view> keys;
-  while (!stack.empty()) {
-    const auto [element, depth] = stack.back();
-    stack.pop_back();
-    if (depth + 2 >= kMaxJsonDepth && (element.is_object() || element.is_array())) return true;
-    if (element.is_array()) {
-      const simdjson::dom::array array = element.get_array().value_unsafe();
-      for (const simdjson::dom::element child : array) {
-        if (child.is_object() || child.is_array()) stack.emplace_back(child, depth + 1);
-      }
-    } else if (element.is_object()) {
-      keys.clear();
-      const simdjson::dom::object object = element.get_object().value_unsafe();
-      for (const auto field : object) {
-        keys.push_back(field.key);
-        if (field.value.is_object() || field.value.is_array()) stack.emplace_back(field.value, depth + 1);
-      }
-      std::sort(keys.begin(), keys.end());
-      if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return true;
+// should look (it refuses kMaxJsonDepth levels; this errs on the side of looking). Depth first,
+// one level of recursion per level of nesting (so at most kMaxJsonDepth), instead of a stack
+// that would hold all of a million instances at once; keys[depth] is reused for every object at
+// that depth.
+bool NeedsLocatingParser(simdjson::dom::element element, std::size_t depth,
+                         std::vector<std::vector<std::string_view>>& keys) {
+  const bool nested = element.is_object() || element.is_array();
+  if (!nested) return false;
+  if (depth + 2 >= kMaxJsonDepth) return true;
+  if (element.is_array()) {
+    const simdjson::dom::array array = element.get_array().value_unsafe();
+    for (const simdjson::dom::element child : array) {
+      if (NeedsLocatingParser(child, depth + 1, keys)) return true;
     }
+    return false;
+  }
+  if (keys.size() <= depth) keys.resize(depth + 1);
+  const simdjson::dom::object object = element.get_object().value_unsafe();
+  keys[depth].clear();
+  for (const auto field : object) keys[depth].push_back(field.key);
+  std::sort(keys[depth].begin(), keys[depth].end());
+  if (std::adjacent_find(keys[depth].begin(), keys[depth].end()) != keys[depth].end()) return true;
+  for (const auto field : object) {
+    if (NeedsLocatingParser(field.value, depth + 1, keys)) return true;
   }
   return false;
+}
+
+bool NeedsLocatingParser(simdjson::dom::element root) {
+  std::vector<std::vector<std::string_view>> keys;
+  return NeedsLocatingParser(root, 1, keys);
 }
 
 Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name) {
