@@ -178,20 +178,18 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                                   .minDepth = 0.0f,
                                   .maxDepth = 1.0f});
   cmd.setScissor(0, vk::Rect2D{.offset = {0, 0}, .extent = extent});
-  cmd.bindVertexBuffers(0, meshes.geometry(), vk::DeviceSize{0});
-  cmd.bindIndexBuffer(meshes.geometry(), meshes.index_offset(), vk::IndexType::eUint32);
+  cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipeline.layout(), 0, *colour_set,
                          nullptr);
   // In list order: the depth test is strict (LESS, or GREATER with reversed Z), so the earlier of
   // two equally deep fragments stays. An instanced draw keeps that order too: its instances are
-  // rasterized in instance order, and gl_PrimitiveID restarts at 0 for each instance.
-  constexpr auto kStages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
+  // rasterized in instance order.
   std::optional<gpu::FSource> bound;
   std::optional<std::uint32_t> bound_buffer;
   std::size_t draw_commands = 0;
   for (const gpu::DrawBatch& batch : plan.batches) {
     const gpu::MeshRange& range = meshes.range(batch.mesh);
-    if (range.index_count == 0) continue;  // a mesh without triangles draws nothing
+    if (range.corner_count == 0) continue;  // a mesh without triangles draws nothing
     const gpu::FSource source = batch.instanced ? gpu::FSource::kInstanceAttribute : gpu::FSource::kPushConstant;
     if (bound != source) {
       // Both pipelines share one layout, so the push constants and descriptor set stay bound.
@@ -203,16 +201,14 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
         cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
         bound_buffer = batch.buffer;
       }
-      cmd.pushConstants<std::uint32_t>(*pipeline.layout(), kStages, offsetof(gpu::PushConstants, first_colour),
-                                       range.first_colour);
-      cmd.drawIndexed(range.index_count, batch.count, range.first_index, range.first_vertex, batch.first_instance);
+      cmd.draw(range.corner_count, batch.count, range.first_corner, batch.first_instance);
       ++draw_commands;
       continue;
     }
     for (std::uint32_t i = 0; i < batch.count; ++i) {
-      const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F, .first_colour = range.first_colour};
-      cmd.pushConstants<gpu::PushConstants>(*pipeline.layout(), kStages, 0, push);
-      cmd.drawIndexed(range.index_count, 1, range.first_index, range.first_vertex, 0);
+      const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F};
+      cmd.pushConstants<gpu::PushConstants>(*pipeline.layout(), vk::ShaderStageFlagBits::eVertex, 0, push);
+      cmd.draw(range.corner_count, 1, range.first_corner, 0);
       ++draw_commands;
     }
   }

@@ -30,7 +30,7 @@ struct GpuOptions {
 // into Image.
 struct GpuTimings {
   double setup_ms = 0, draw_ms = 0, readback_ms = 0;
-  std::size_t draw_commands = 0;    // vkCmdDrawIndexed calls recorded
+  std::size_t draw_commands = 0;    // vkCmdDraw calls recorded
   std::size_t instanced_draws = 0;  // draws of the list that were drawn instanced
 };
 

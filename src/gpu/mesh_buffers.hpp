@@ -1,5 +1,7 @@
-// The draw list's meshes packed for the GPU: all positions then all indices in one buffer, all
-// triangle colours in a storage buffer, and where each mesh starts in them.
+// The draw list's meshes packed for the GPU: every triangle's three corners in turn in one vertex
+// buffer, mesh after mesh, all triangle colours in a storage buffer in the same order, and where
+// each mesh starts in them. Corner v belongs to triangle v / 3, whose colour is colours[v / 3]:
+// the shaders need no index buffer, no per-draw offset and no gl_PrimitiveID.
 #pragma once
 
 #include "chain/draw_list.hpp"
@@ -13,10 +15,8 @@ namespace twinraster::gpu {
 
 // Where one mesh starts in the shared buffers; a draw of the mesh uses exactly these numbers.
 struct MeshRange {
-  std::int32_t first_vertex = 0;   // vkCmdDrawIndexed's vertexOffset, so indices stay mesh-local
-  std::uint32_t first_index = 0;   // vkCmdDrawIndexed's firstIndex
-  std::uint32_t index_count = 0;   // 3 per triangle; 0 for a mesh without triangles
-  std::uint32_t first_colour = 0;  // the mesh's first triangle overall: the shaders' first_colour
+  std::uint32_t first_corner = 0;  // vkCmdDraw's firstVertex: 3 x the mesh's first triangle overall
+  std::uint32_t corner_count = 0;  // vkCmdDraw's vertexCount: 3 per triangle; 0 for no triangles
 };
 
 // Packs a colour as unpackUnorm4x8 reads it: red in the lowest byte, alpha 255.
@@ -27,7 +27,7 @@ constexpr std::uint32_t PackRgba8(Rgb8 c) {
 // Every mesh's range, and the totals the buffers are sized from.
 struct MeshPlan {
   std::vector<MeshRange> ranges;  // ranges[i] belongs to DrawList::meshes[i]
-  std::uint64_t vertices = 0, triangles = 0;
+  std::uint64_t triangles = 0;
 };
 
 class MeshBuffers {
@@ -36,14 +36,13 @@ class MeshBuffers {
   // past the mesh's vertices, a colour count unlike the triangle count, or more than fits.
   MeshBuffers(const VulkanContext& context, const DrawList& list);
 
-  vk::Buffer geometry() const { return geometry_.buffer(); }  // positions (binding 0), then indices
-  vk::DeviceSize index_offset() const { return plan_.vertices * sizeof(glm::vec3); }
+  vk::Buffer corners() const { return corners_.buffer(); }  // vec3 positions (binding 0)
   vk::Buffer colours() const { return colours_.buffer(); }
   const MeshRange& range(std::uint32_t mesh) const { return plan_.ranges[mesh]; }
 
  private:
   MeshPlan plan_;  // first: the buffers below are sized from it
-  HostBuffer geometry_;
+  HostBuffer corners_;
   HostBuffer colours_;
 };
 

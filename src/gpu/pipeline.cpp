@@ -101,10 +101,9 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   colour_set_layout_ = vk::raii::DescriptorSetLayout(
       device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = 1, .pBindings = &colour_binding});
 
-  // One range for both stages: the vertex shader reads F (per-draw path), the fragment shader
-  // first_colour.
+  // F, for the vertex shader (read on the per-draw path only).
   const vk::PushConstantRange push_range{
-      .stageFlags = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment,
+      .stageFlags = vk::ShaderStageFlagBits::eVertex,
       .offset = 0,
       .size = sizeof(PushConstants),
   };
@@ -138,9 +137,9 @@ vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z) const {
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
 
-  // Binding 0: the vec3 position, the only per-vertex attribute. Colours come per triangle from
-  // the storage buffer instead, so vertices shared by triangles of different colours are not
-  // duplicated. Binding 1, instanced only: F, one mat4 per instance, a column per location.
+  // Binding 0: the vec3 position of a triangle's corner, the only per-vertex attribute. Colours
+  // come per triangle from the storage buffer, found from the corner's number. Binding 1,
+  // instanced only: F, one mat4 per instance, a column per location.
   const std::array bindings = {
       vk::VertexInputBindingDescription{
           .binding = 0, .stride = 3 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex},

@@ -15,12 +15,11 @@ constexpr vk::Format kColourFormat =
     vk::Format::eR8G8B8A8Unorm;  // UNORM: colours reach the PNG unchanged
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 
-// The push-constant block of shaders/triangle.vert and .frag, byte for byte (std430: 64 + 4).
+// The push-constant block of shaders/triangle.vert, byte for byte (std430: 64).
 struct PushConstants {
-  glm::mat4 F;                     // DrawCall::F; glm is column-major like GLSL
-  std::uint32_t first_colour = 0;  // index of the mesh's first triangle colour
+  glm::mat4 F;  // DrawCall::F; glm is column-major like GLSL
 };
-static_assert(sizeof(PushConstants) == 68 && offsetof(PushConstants, first_colour) == 64);
+static_assert(sizeof(PushConstants) == 64);
 
 // Where the vertex shader reads F: a push constant per draw (one draw per instance, the
 // chapter's Listing 10-5), or a per-instance vertex attribute (one draw for a run of instances).

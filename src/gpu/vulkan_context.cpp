@@ -48,10 +48,9 @@ bool ContainsIgnoringCase(std::string_view haystack, std::string_view needle) {
   return it != haystack.end();
 }
 
-// The queue family we draw with, if the device can do everything the renderer needs: graphics,
-// gl_PrimitiveID in the fragment shader (the geometryShader feature) and a D32_SFLOAT depth buffer.
+// The queue family we draw with, if the device can do everything the renderer needs: graphics
+// and a D32_SFLOAT depth buffer.
 std::optional<std::uint32_t> UsableQueueFamily(const vk::raii::PhysicalDevice& device) {
-  if (device.getFeatures().geometryShader == VK_FALSE) return std::nullopt;
   const vk::FormatProperties depth = device.getFormatProperties(vk::Format::eD32Sfloat);
   if (!(depth.optimalTilingFeatures & vk::FormatFeatureFlagBits::eDepthStencilAttachment)) {
     return std::nullopt;
@@ -175,7 +174,7 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
                            "'; devices present: " + DeviceNames(devices));
     }
     throw GpuUnavailable(
-        "no Vulkan device supports what the renderer needs (graphics queue, geometryShader, "
+        "no Vulkan device supports what the renderer needs (a graphics queue and "
         "D32_SFLOAT depth); devices present: " +
         DeviceNames(devices) + "; install lavapipe with `apt-get install mesa-vulkan-drivers`");
   }
@@ -190,12 +189,10 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
       .queueCount = 1,
       .pQueuePriorities = &priority,
   };
-  // The fragment shader reads gl_PrimitiveID, which SPIR-V puts under the Geometry capability.
-  const vk::PhysicalDeviceFeatures features{.geometryShader = VK_TRUE};
+  // No optional features: Vulkan 1.0's core is all the renderer uses.
   device_ = vk::raii::Device(physical_device_, vk::DeviceCreateInfo{
                                                    .queueCreateInfoCount = 1,
                                                    .pQueueCreateInfos = &queue_info,
-                                                   .pEnabledFeatures = &features,
                                                });
   queue_ = device_.getQueue(queue_family_, 0);
   KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp

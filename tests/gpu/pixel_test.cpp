@@ -100,7 +100,7 @@ TEST_CASE("The background is the clear colour exactly, for every 8-bit value", "
 
 TEST_CASE("Triangle colours arrive exactly, for every 8-bit value", "[gpu][pixels]") {
   // 16x16 pixels, each its own square of two triangles with colour i = y * 16 + x: 512
-  // triangles, so this also checks gl_PrimitiveID far past the first few.
+  // triangles, so this also checks the corner-to-triangle numbering far past the first few.
   std::vector<WindowTriangle> squares;
   for (int i = 0; i < 256; ++i) {
     const double x = i % 16, y = i / 16;
@@ -217,7 +217,7 @@ TEST_CASE("A triangle through the near plane is clipped and keeps its colour",
           "[gpu][pixels][clip]") {
   // Triangle 0 lies wholly right of the view (x > w) and is dropped; triangle 1 has its first
   // corner at z = -0.5, so the corner cut off by z = 0 is not drawn and the rest, drawn as a fan
-  // of clipped triangles, must still read colour 1 through gl_PrimitiveID.
+  // of clipped triangles, must still read colour 1 (the flat triangle number survives clipping).
   const Rgb8 dropped{255, 255, 255}, kept{12, 34, 56};
   DrawMesh mesh;
   mesh.positions = {glm::vec3(1.5f, 0, 0.5f),       glm::vec3(2, 0, 0.5f),
