@@ -223,6 +223,28 @@ def bench_scene():
         f.write("\n")
 
 
+def transform_order_scenes():
+    # Figures 10-4 and 10-5 of the chapter: the same rotation and translation, applied in the two
+    # orders, written as transform lists. Seen from above and behind the origin, where a small
+    # cube marks the origin the rotation turns about.
+    for figure, steps, what in (
+            ("10-4", [{"rotation": {"axis": "y", "degrees": 45}}, {"translation": [0, 0, 5]}],
+             "rotate 45 degrees about Y around the origin, then translate along Z: the cube turns in place and "
+             "moves 5 units ahead"),
+            ("10-5", [{"translation": [0, 0, 5]}, {"rotation": {"axis": "y", "degrees": 45}}],
+             "translate along Z, then rotate 45 degrees about Y around the origin: the rotation swings the "
+             "translated cube around the origin, 45 degrees off to the side")):
+        s = small(f"Computer Graphics from Scratch, figure {figure}: {what}. The small cube marks the origin. "
+                  "The transform is a list of steps, applied in the order written.", 600, 600)
+        s["viewport"] = {"width": 1.25, "height": 1.25, "distance": 1}
+        s["depth"] = {"near": 1, "far": 40}
+        s["camera"] = {"eye": [0, 9, -3], "center": [0, 0, 3], "up": [0, 1, 0]}
+        s["models"] = {"cube": cube()}
+        s["instances"] = [{"model": "cube", "transform": {"scale": 0.15}},
+                          {"model": "cube", "transform": steps}]
+        write(f"scenes/cgfs-figure-{figure}.json", s)
+
+
 def grid_scenes():
     # The chapter's question, "What if we wanted to render one million cubes?", as one instance
     # with a 100 x 100 x 100 grid: cubes 0.6 wide, 1 apart, seen whole from above a corner.
@@ -258,3 +280,4 @@ if __name__ == "__main__":
     transform_scenes()
     bench_scene()
     grid_scenes()
+    transform_order_scenes()

@@ -22,7 +22,12 @@ glm::mat4 ComposeInFloat(const Scene& scene, const Transform& t) {
   const glm::mat4 to_clip = ToFloat(CanvasToClip(scene.canvas));
   const glm::mat4 camera = ToFloat(Rotation4(glm::transpose(scene.camera.rotation))) *
                            ToFloat(Translation(-scene.camera.position));
-  const glm::mat4 model = ToFloat(Translation(t.translation)) * ToFloat(Rotation4(t.rotation)) * ToFloat(Scale(t.scale));
+  glm::mat4 model = ToFloat(Translation(t.translation)) * ToFloat(Rotation4(t.rotation)) * ToFloat(Scale(t.scale));
+  if (t.steps) {
+    glm::mat4 listed(1.0f);
+    for (const TransformStep& step : *t.steps) listed = ToFloat(StepMatrix(step)) * listed;
+    model = model * listed;
+  }
   return to_clip * to_canvas * projection * camera * model;
 }
 
@@ -31,12 +36,22 @@ glm::mat4 ComposeInFloat(const Scene& scene, const Transform& t) {
 glm::mat4 CameraRelative(const Scene& scene, const Transform& t) {
   const glm::dmat4 projection = ProjectionMatrix(scene.viewport, scene.canvas, scene.depth);
   const glm::dmat4 camera_rotation = Rotation4(glm::transpose(scene.camera.rotation));
-  const glm::dmat4 model = Translation(t.translation - scene.camera.position) * Rotation4(t.rotation) * Scale(t.scale);
+  glm::dmat4 model = ModelMatrix(t);
+  model[3] -= glm::dvec4(scene.camera.position, 0.0);  // the same bits as T(t - c) · R · S
   return ToFloat(projection * camera_rotation * model);
 }
 
 // Method 3: Listing 10-3's ApplyTransform, the camera and the projection, one step at a time in float.
-glm::vec4 StepsInFloat(const glm::vec3& v, const Transform& t, const Scene& scene, const glm::mat4& projection) {
+glm::vec4 StepsInFloat(glm::vec3 v, const Transform& t, const Scene& scene, const glm::mat4& projection) {
+  if (t.steps) {  // a transform written as a list: its steps first, each in float
+    for (const TransformStep& step : *t.steps) {
+      switch (step.kind) {
+        case TransformStep::Kind::kScale: v = v * ToFloat(step.vector); break;
+        case TransformStep::Kind::kRotation: v = ToFloat(step.rotation) * v; break;
+        case TransformStep::Kind::kTranslation: v = v + ToFloat(step.vector); break;
+      }
+    }
+  }
   const glm::vec3 scaled = v * ToFloat(t.scale);
   const glm::vec3 rotated = ToFloat(t.rotation) * scaled;
   const glm::vec3 world = rotated + ToFloat(t.translation);

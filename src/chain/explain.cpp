@@ -139,6 +139,24 @@ std::string Tuple(const Vec& v) {
   return s + ")";
 }
 
+// A list step's kind as the scene file writes it, and the chapter's name for its matrix.
+const char* StepKind(const TransformStep& step) {
+  switch (step.kind) {
+    case TransformStep::Kind::kScale: return "scale";
+    case TransformStep::Kind::kRotation: return "rotation";
+    case TransformStep::Kind::kTranslation: return "translation";
+  }
+  return "?";
+}
+std::string StepName(const TransformStep& step) {
+  switch (step.kind) {
+    case TransformStep::Kind::kScale: return "I_S";
+    case TransformStep::Kind::kRotation: return "I_R";
+    case TransformStep::Kind::kTranslation: return "I_T";
+  }
+  return "?";
+}
+
 void PrintMatrix(std::ostream& out, const std::string& name, const glm::dmat4& m) {
   out << "  " << name << " =\n";
   for (int r = 0; r < 4; ++r) {
@@ -194,11 +212,28 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
     const InstanceGrid* grid = GridOf(scene, x.index, ijk);
     out << "\nInstance " << x.index << " (model \"" << x.model->name << "\"";
     if (grid) out << "; copy (" << ijk[0] << ", " << ijk[1] << ", " << ijk[2] << ") of the grid of instances[" << grid->written << "]";
-    out << "): M_Model = I_T · I_R · I_S\n";
-    PrintMatrix(out, "I_S", Scale(t.scale));
-    PrintMatrix(out, "I_R", Rotation4(t.rotation));
-    PrintMatrix(out, "I_T", Translation(t.translation));
-    PrintMatrix(out, "M_Model", x.model_matrix);
+    if (t.steps) {
+      // Written as a list: each step's matrix in the order applied, then their product.
+      const std::size_t n = t.steps->size();
+      out << "): the transform is a list of " << n << " step" << (n == 1 ? "" : "s") << ", applied in the order written\n";
+      std::string product;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::string name = StepName((*t.steps)[k]) + std::to_string(k + 1);
+        PrintMatrix(out, "step " + std::to_string(k + 1) + ": " + name, StepMatrix((*t.steps)[k]));
+        product = k == 0 ? name : name + " · " + product;
+      }
+      if (grid) {
+        PrintMatrix(out, "I_T (the grid's offset, after the steps)", Translation(t.translation));
+        product = "I_T · " + product;
+      }
+      PrintMatrix(out, "M_Model = " + (product.empty() ? std::string("I") : product), x.model_matrix);
+    } else {
+      out << "): M_Model = I_T · I_R · I_S\n";
+      PrintMatrix(out, "I_S", Scale(t.scale));
+      PrintMatrix(out, "I_R", Rotation4(t.rotation));
+      PrintMatrix(out, "I_T", Translation(t.translation));
+      PrintMatrix(out, "M_Model", x.model_matrix);
+    }
     PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", x.f);
 
     for (const auto& [v, tr] : x.vertices) {
@@ -249,6 +284,13 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
     const InstanceGrid* grid = GridOf(scene, x.index, ijk);
     entry["grid_copy"] = grid ? nlohmann::ordered_json{{"instance", grid->written}, {"ijk", {ijk[0], ijk[1], ijk[2]}}}
                               : nlohmann::ordered_json(nullptr);
+    entry["transform_steps"] = nlohmann::ordered_json(nullptr);
+    if (x.transform->steps) {
+      entry["transform_steps"] = nlohmann::ordered_json::array();
+      for (const TransformStep& step : *x.transform->steps) {
+        entry["transform_steps"].push_back({{"kind", StepKind(step)}, {"matrix", Rows(StepMatrix(step))}});
+      }
+    }
     entry["model_matrix"] = Rows(x.model_matrix);
     entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
     entry["vertices"] = nlohmann::ordered_json::array();

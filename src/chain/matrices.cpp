@@ -30,8 +30,21 @@ glm::dmat4 Scale(glm::dvec3 s) {
   return FromRows({{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}});
 }
 
+glm::dmat4 StepMatrix(const TransformStep& step) {
+  switch (step.kind) {
+    case TransformStep::Kind::kScale: return Scale(step.vector);
+    case TransformStep::Kind::kRotation: return Rotation4(step.rotation);
+    case TransformStep::Kind::kTranslation: return Translation(step.vector);
+  }
+  return glm::dmat4(1.0);
+}
+
 glm::dmat4 ModelMatrix(const Transform& t) {
-  return Translation(t.translation) * Rotation4(t.rotation) * Scale(t.scale);
+  const glm::dmat4 object_form = Translation(t.translation) * Rotation4(t.rotation) * Scale(t.scale);
+  if (!t.steps) return object_form;
+  glm::dmat4 listed(1.0);
+  for (const TransformStep& step : *t.steps) listed = StepMatrix(step) * listed;  // each applied after the last
+  return object_form * listed;
 }
 
 glm::dmat4 CameraMatrix(const Camera& camera) {

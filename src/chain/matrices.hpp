@@ -24,7 +24,11 @@ glm::dmat4 Translation(glm::dvec3 t);      // I_T, C_T
 glm::dmat4 Rotation4(const glm::dmat3& r);  // I_R, C_R: the 3x3 with w kept
 glm::dmat4 Scale(glm::dvec3 s);             // I_S
 
-// M_Model = I_T · I_R · I_S: scale, then rotate, then translate (Listing 10-4's order).
+// One step of a transform written as a list: its I_S, I_R or I_T.
+glm::dmat4 StepMatrix(const TransformStep& step);
+// M_Model = I_T · I_R · I_S: scale, then rotate, then translate (Listing 10-4's order). For a
+// transform written as a list, its steps come first, in the order written:
+// M_Model = I_T · I_R · I_S · step_n · ... · step_1 (I_T, I_R, I_S then hold only a grid's offset).
 glm::dmat4 ModelMatrix(const Transform& t);
 
 // M_Camera = C_R⁻¹ · C_T⁻¹. A rotation's inverse is its transpose; a translation's is its negation.

@@ -27,7 +27,19 @@ bool InsideClipVolume(const glm::dvec4& c) {
   return -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w && 0 <= c.z && c.z <= c.w;
 }
 
+glm::dvec3 ApplyStep(glm::dvec3 vertex, const TransformStep& step) {
+  switch (step.kind) {
+    case TransformStep::Kind::kScale: return vertex * step.vector;
+    case TransformStep::Kind::kRotation: return step.rotation * vertex;
+    case TransformStep::Kind::kTranslation: return vertex + step.vector;
+  }
+  return vertex;
+}
+
 glm::dvec3 ApplyTransform(glm::dvec3 vertex, const Transform& transform) {
+  if (transform.steps) {
+    for (const TransformStep& step : *transform.steps) vertex = ApplyStep(vertex, step);
+  }
   const glm::dvec3 scaled = vertex * transform.scale;
   const glm::dvec3 rotated = transform.rotation * scaled;
   return rotated + transform.translation;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -54,13 +55,28 @@ struct Model {
   std::vector<Triangle> triangles;
 };
 
-// An instance's transform, applied scale first, then rotation, then translation (M_Model).
+// One step of a transform written as a list, in the order written:
+// "transform": [{"rotation": {...}}, {"translation": [x, y, z]}, {"scale": s}].
+struct TransformStep {
+  enum class Kind { kScale, kRotation, kTranslation };
+  Kind kind = Kind::kScale;
+  glm::dvec3 vector{1, 1, 1};  // the scale factors (kScale) or the offset (kTranslation)
+  glm::dmat3 rotation{1.0};    // kRotation, in the chapter's convention
+};
+
+// An instance's transform. Written as an object it is applied scale first, then rotation, then
+// translation (M_Model = I_T · I_R · I_S, the chapter's order). Written as a list, its steps are
+// applied in the order written, and the three fields stay the identity but for a grid's offset
+// in translation, which moves the whole result in world space:
+// M_Model = I_T · I_R · I_S · step_n · ... · step_1.
 struct Transform {
   glm::dvec3 scale{1, 1, 1};
   // A 3x3 matrix in the chapter's convention (see matrices.hpp); the loader composes a list of
   // axis rotations into one matrix.
   glm::dmat3 rotation{1.0};
   glm::dvec3 translation{0, 0, 0};
+  // The list form's steps, or null; shared by the copies of a grid.
+  std::shared_ptr<const std::vector<TransformStep>> steps;
 };
 
 struct Instance {

@@ -191,6 +191,33 @@ Model ReadModel(const JsonReader& r, const std::string& name) {
 // Model names to indices, looked up once per instance.
 using ModelIndex = std::map<std::string, std::size_t, std::less<>>;
 
+// "transform": [{"rotation": ...}, {"translation": [...]}, {"scale": ...}]: steps applied in the
+// order written, each an object with exactly one of the three keys.
+std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonReader& list) {
+  auto steps = std::make_shared<std::vector<TransformStep>>();
+  list.ForEachElement([&](const JsonReader& r) {
+    r.ExpectObject({"scale", "rotation", "translation"});
+    const std::vector<std::string_view> keys = r.Keys();
+    if (keys.size() != 1) {
+      r.Fail("a step of a transform list needs exactly one of \"scale\", \"rotation\" or \"translation\" (found " +
+             std::to_string(keys.size()) + " keys); write one step per object");
+    }
+    TransformStep step;
+    if (auto scale = r.Find("scale")) {
+      step.kind = TransformStep::Kind::kScale;
+      step.vector = ReadScale(*scale);
+    } else if (auto rotation = r.Find("rotation")) {
+      step.kind = TransformStep::Kind::kRotation;
+      step.rotation = ReadRotation(*rotation);
+    } else {
+      step.kind = TransformStep::Kind::kTranslation;
+      step.vector = r.Required("translation").Vec3();
+    }
+    steps->push_back(step);
+  });
+  return steps;
+}
+
 Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, const ModelIndex& index) {
   r.ExpectObject({"model", "transform", "grid"});
   Instance instance;
@@ -206,6 +233,14 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
   }
   instance.model = found->second;
   if (auto transform = r.Find("transform")) {
+    if (transform->IsArray()) {
+      instance.transform.steps = ReadTransformSteps(*transform);
+      return instance;
+    }
+    if (!transform->IsObject()) {
+      transform->Fail("expected an object (scale, rotation, translation) or a list of steps, found " +
+                      transform->TypeName());
+    }
     transform->ExpectObject({"scale", "rotation", "translation"});
     if (auto scale = transform->Find("scale")) instance.transform.scale = ReadScale(*scale);
     if (auto rotation = transform->Find("rotation")) instance.transform.rotation = ReadRotation(*rotation);
