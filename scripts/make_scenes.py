@@ -245,6 +245,57 @@ def transform_order_scenes():
         write(f"scenes/cgfs-figure-{figure}.json", s)
 
 
+def orthographic_scenes():
+    # Catlike Coding's section 5.1: an orthographic camera keeps x and y whatever z. The
+    # transformation grid seen from a corner: parallel edges stay parallel, far cubes stay as big as
+    # near ones.
+    s = small("Catlike Coding, 'Rendering 1: Matrices', section 5.1: the 10 x 10 x 10 transformation grid (cubes "
+              "0.5 wide, 1 apart) seen by an orthographic camera from a corner. No cube shrinks with distance; "
+              "depth is linear from near to far. GPU == CPU twin.", 800, 600)
+    s["viewport"] = {"width": 20, "height": 15, "distance": 1, "projection": "orthographic"}
+    s["depth"] = {"near": 1, "far": 60}
+    s["camera"] = {"eye": [16, 12, -20], "center": [0, 0, 0], "up": [0, 1, 0]}
+    s["models"] = {"cube": cube()}
+    s["instances"] = [{"model": "cube", "transform": {"scale": 0.25},
+                       "grid": {"count": [10, 10, 10], "spacing": [1, 1, 1]}}]
+    write("scenes/catlike-orthographic.json", s)
+
+    # Hard cases of the orthographic projection.
+    s = small("Orthographic, edge-on: a triangle whose plane contains the viewing direction (x = 0, camera looking "
+              "along +Z) projects to a line of zero area and draws nothing; beside it the same triangle turned by "
+              "1e-3 degrees is a sliver a fraction of a pixel wide, and a triangle turned by 30 degrees draws "
+              "normally. Expected: the edge-on triangle covers no pixel on either renderer. GPU == CPU twin.")
+    s["viewport"] = {"width": 4, "height": 3, "distance": 1, "projection": "orthographic"}
+    s["depth"] = {"near": 1, "far": 20}
+    s["camera"] = {"position": [0, 0, 0]}
+    s["models"] = {"tri": {"vertices": [[0, -1, 3], [0, 1, 4], [0, 0.2, 8]], "triangles": [[0, 1, 2, "red"]]}}
+    s["instances"] = [
+        {"model": "tri"},
+        {"model": "tri", "transform": {"rotation": {"axis": "y", "degrees": 0.001}, "translation": [-0.9, 0, 0]}},
+        {"model": "tri", "transform": {"rotation": {"axis": "y", "degrees": 30}, "translation": [0.9, 0, 0]}},
+    ]
+    write("scenes/hard/orthographic-edge-on.json", s)
+
+    for reversed_z in (False, True):
+        s = small("Orthographic, geometry at the near and far planes: squares exactly at z = near (depth 0, or 1 "
+                  "reversed) and z = far, squares a hair inside and outside each, and a long triangle from in front of "
+                  "near to beyond far, clipped at both. Depth is linear in z, so these land on the ends of the depth "
+                  "range exactly as written. Expected: GPU == CPU twin; the truth may differ where float rounds a "
+                  "depth at exactly 0 or 1 across the clip plane.")
+        s["viewport"] = {"width": 8, "height": 6, "distance": 1, "projection": "orthographic"}
+        s["depth"] = {"near": 2, "far": 10, "reversed": reversed_z}
+        s["camera"] = {"position": [0, 0, 0]}
+        square = {"vertices": [[-0.5, -0.5, 0], [0.5, -0.5, 0], [0.5, 0.5, 0], [-0.5, 0.5, 0]],
+                  "triangles": [[0, 1, 2, "green"], [0, 2, 3, "green"]]}
+        s["models"] = {"square": square,
+                       "long": {"vertices": [[1.4, -2.8, 1], [3.9, -2.6, 12], [1.6, 2.8, 6]], "triangles": [[0, 1, 2, [255, 128, 0]]]}}
+        s["instances"] = [{"model": "long"}] + [
+            {"model": "square", "transform": {"translation": [x, y, z]}}
+            for (x, y, z) in ((-2.5, 1.5, 2), (-1.2, 1.5, 2 + 1e-6), (0.1, 1.5, 2 - 1e-6),
+                              (-2.5, -1.5, 10), (-1.2, -1.5, 10 - 1e-6), (0.1, -1.5, 10 + 1e-6))]
+        write("scenes/hard/orthographic-near-far" + ("-reversed" if reversed_z else "") + ".json", s)
+
+
 def grid_scenes():
     # The chapter's question, "What if we wanted to render one million cubes?", as one instance
     # with a 100 x 100 x 100 grid: cubes 0.6 wide, 1 apart, seen whole from above a corner.
@@ -281,3 +332,4 @@ if __name__ == "__main__":
     bench_scene()
     grid_scenes()
     transform_order_scenes()
+    orthographic_scenes()

@@ -17,7 +17,7 @@ glm::vec3 ToFloat(const glm::dvec3& v) { return glm::vec3(v); }
 
 // Method 2: each of the chapter's matrices rounded to float as it is built, every product in float.
 glm::mat4 ComposeInFloat(const Scene& scene, const Transform& t) {
-  const glm::mat4 projection = ToFloat(PerspectiveMatrix(scene.viewport, scene.depth));
+  const glm::mat4 projection = ToFloat(ProjectionP(scene.viewport, scene.depth));
   const glm::mat4 to_canvas = ToFloat(ViewportToCanvas(scene.viewport, scene.canvas));
   const glm::mat4 to_clip = ToFloat(CanvasToClip(scene.canvas));
   const glm::mat4 camera = ToFloat(Rotation4(glm::transpose(scene.camera.rotation))) *

@@ -181,12 +181,17 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
 
   out << "Scene \"" << scene.name << "\": canvas Cw x Ch = " << cv.width << " x " << cv.height
       << " px, viewport Vw x Vh = " << Num(vp.width) << " x " << Num(vp.height)
-      << " at distance d = " << Num(vp.distance) << ", depth near = " << Num(scene.depth.near)
+      << (vp.projection == Projection::kOrthographic ? " (orthographic: d is not used)" : " at distance d = " + Num(vp.distance))
+      << ", depth near = " << Num(scene.depth.near)
       << ", far = " << Num(scene.depth.far) << (scene.depth.reversed ? " (reversed Z: near -> 1, far -> 0)" : "") << "\n"
       << "Column vectors on the right: V' = F · V, F = M_Projection · M_Camera · M_Model.\n\n";
 
   out << "M_Projection = CanvasToClip · ViewportToCanvas · P\n";
-  PrintMatrix(out, "P (perspective: x·d, y·d, depth row, w = z)", PerspectiveMatrix(vp, scene.depth));
+  if (vp.projection == Projection::kOrthographic) {
+    PrintMatrix(out, "P (orthographic: x, y kept, depth row linear in z, w = 1)", OrthographicMatrix(scene.depth));
+  } else {
+    PrintMatrix(out, "P (perspective: x·d, y·d, depth row, w = z)", PerspectiveMatrix(vp, scene.depth));
+  }
   PrintMatrix(out, "ViewportToCanvas (Cw/Vw, Ch/Vh)", ViewportToCanvas(vp, cv));
   PrintMatrix(out, "CanvasToClip (Vulkan: 2/Cw, -2/Ch)", CanvasToClip(cv));
   PrintMatrix(out, "M_Projection", chain.projection);
@@ -206,6 +211,8 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   }
   out << "\n";
 
+  const char* canvas_formula = vp.projection == Projection::kOrthographic ? "(x·Cw/Vw, y·Ch/Vh), whatever z"
+                                                                         : "(x·d·Cw/(z·Vw), y·d·Ch/(z·Vh))";
   for (const InstanceExplanation& x : e.instances) {
     const Transform& t = *x.transform;
     std::array<std::size_t, 3> ijk{};
@@ -243,7 +250,7 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
           << "    camera       " << Tuple(tr.camera) << "   = M_Camera · world\n"
           << "    clip         " << Tuple(tr.clip) << "   = M_Projection · camera\n"
           << "    ndc          " << Tuple(tr.ndc) << "   = clip.xyz / clip.w\n"
-          << "    canvas       " << Tuple(tr.canvas) << "   = (x·d·Cw/(z·Vw), y·d·Ch/(z·Vh)), +y up\n"
+          << "    canvas       " << Tuple(tr.canvas) << "   = " << canvas_formula << ", +y up\n"
           << "    framebuffer  " << Tuple(glm::dvec2(tr.framebuffer)) << " depth " << Num(tr.framebuffer.z)
           << "   Vulkan: +y down, pixel (i, j) has its centre at (i + 0.5, j + 0.5)\n";
     }
@@ -258,10 +265,13 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
   out["format"] = kExplainJsonFormat;
   out["scene"] = scene.name;
   out["canvas"] = {{"width", scene.canvas.width}, {"height", scene.canvas.height}};
+  const bool orthographic = scene.viewport.projection == Projection::kOrthographic;
   out["viewport"] = {{"width", scene.viewport.width}, {"height", scene.viewport.height},
-                     {"distance", scene.viewport.distance}};
+                     {"distance", scene.viewport.distance},
+                     {"projection", orthographic ? "orthographic" : "perspective"}};
   out["depth"] = {{"near", scene.depth.near}, {"far", scene.depth.far}, {"reversed", scene.depth.reversed}};
-  out["perspective_matrix"] = Rows(PerspectiveMatrix(scene.viewport, scene.depth));
+  out["perspective_matrix"] = orthographic ? nlohmann::ordered_json(nullptr) : Rows(PerspectiveMatrix(scene.viewport, scene.depth));
+  out["orthographic_matrix"] = orthographic ? Rows(OrthographicMatrix(scene.depth)) : nlohmann::ordered_json(nullptr);
   out["viewport_to_canvas"] = Rows(ViewportToCanvas(scene.viewport, scene.canvas));
   out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
   out["projection_matrix"] = Rows(chain.projection);

@@ -59,6 +59,19 @@ glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth) {
   return FromRows({{d, 0, 0, 0}, {0, d, 0, 0}, {0, 0, a, b}, {0, 0, 1, 0}});
 }
 
+glm::dmat4 OrthographicMatrix(const Depth& depth) {
+  const double n = depth.near, f = depth.far;
+  // depth = A·z + B: 0 at near and 1 at far, or reversed, 1 at near and 0 at far.
+  const double a = depth.reversed ? -1 / (f - n) : 1 / (f - n);
+  const double b = depth.reversed ? f / (f - n) : -n / (f - n);
+  return FromRows({{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, a, b}, {0, 0, 0, 1}});
+}
+
+glm::dmat4 ProjectionP(const Viewport& viewport, const Depth& depth) {
+  return viewport.projection == Projection::kOrthographic ? OrthographicMatrix(depth)
+                                                          : PerspectiveMatrix(viewport, depth);
+}
+
 glm::dmat4 ViewportToCanvas(const Viewport& viewport, const Canvas& canvas) {
   const double sx = canvas.width / viewport.width, sy = canvas.height / viewport.height;
   return FromRows({{sx, 0, 0, 0}, {0, sy, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}});
@@ -70,7 +83,7 @@ glm::dmat4 CanvasToClip(const Canvas& canvas) {
 }
 
 glm::dmat4 ProjectionMatrix(const Viewport& viewport, const Canvas& canvas, const Depth& depth) {
-  return CanvasToClip(canvas) * ViewportToCanvas(viewport, canvas) * PerspectiveMatrix(viewport, depth);
+  return CanvasToClip(canvas) * ViewportToCanvas(viewport, canvas) * ProjectionP(viewport, depth);
 }
 
 Chain SceneChain(const Scene& scene) {

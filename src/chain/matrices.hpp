@@ -39,13 +39,19 @@ glm::dmat4 CameraMatrix(const Camera& camera);
 // swaps the ends: A = -near/(far-near), B = far·near/(far-near).
 glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth);
 
+// The orthographic P (Catlike's section 5.1): x and y kept whatever z, depth linear in z,
+// z' = A·z + B with A = 1/(far-near), B = -near/(far-near) (reversed: A = -1/(far-near),
+// B = far/(far-near)), and w' = 1: nothing is divided, so size does not fall off with distance.
+glm::dmat4 OrthographicMatrix(const Depth& depth);
+// P for the scene's projection: PerspectiveMatrix or OrthographicMatrix.
+glm::dmat4 ProjectionP(const Viewport& viewport, const Depth& depth);
 // The chapter's M: viewport units to canvas pixels, a 2D scale by Cw/Vw and Ch/Vh.
 glm::dmat4 ViewportToCanvas(const Viewport& viewport, const Canvas& canvas);
 
 // What Vulkan adds: canvas pixels to clip space, x by 2/Cw, and y by -2/Ch (Vulkan's +y is down).
 glm::dmat4 CanvasToClip(const Canvas& canvas);
 
-// M_Projection = CanvasToClip · ViewportToCanvas · P (docs/projection.md derives it).
+// M_Projection = CanvasToClip · ViewportToCanvas · P (docs/projection.md derives both kinds).
 glm::dmat4 ProjectionMatrix(const Viewport& viewport, const Canvas& canvas, const Depth& depth);
 
 // F = M_Projection · M_Camera · M_Model, all in double.

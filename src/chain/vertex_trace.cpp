@@ -51,6 +51,9 @@ glm::dvec3 ApplyCamera(glm::dvec3 world, const Camera& camera) {
 }
 
 glm::dvec2 ProjectVertex(glm::dvec3 v, const Viewport& viewport, const Canvas& canvas) {
+  if (viewport.projection == Projection::kOrthographic) {
+    return glm::dvec2(v.x * canvas.width / viewport.width, v.y * canvas.height / viewport.height);
+  }
   const double d = viewport.distance;
   return glm::dvec2(v.x * d * canvas.width / (v.z * viewport.width),
                     v.y * d * canvas.height / (v.z * viewport.height));

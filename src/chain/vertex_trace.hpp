@@ -33,7 +33,8 @@ VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4
 glm::dvec3 ApplyStep(glm::dvec3 vertex, const TransformStep& step);  // one step of a list
 glm::dvec3 ApplyTransform(glm::dvec3 vertex, const Transform& transform);  // object -> world
 glm::dvec3 ApplyCamera(glm::dvec3 world, const Camera& camera);            // world -> camera
-// The chapter's ProjectVertex: (x·d·Cw / (z·Vw), y·d·Ch / (z·Vh)) on the canvas.
+// The chapter's ProjectVertex: (x·d·Cw / (z·Vw), y·d·Ch / (z·Vh)) on the canvas; for an
+// orthographic viewport (x·Cw/Vw, y·Ch/Vh), whatever z.
 glm::dvec2 ProjectVertex(glm::dvec3 camera_space, const Viewport& viewport, const Canvas& canvas);
 
 }  // namespace twinraster

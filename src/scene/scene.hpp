@@ -29,10 +29,15 @@ struct Canvas {
 };
 
 // The viewport is the window into the world: Vw x Vh at distance d from the camera.
+// How camera space reaches the viewport: the chapter's perspective (x·d/z, y·d/z), or
+// orthographic (x, y whatever z; Catlike's section 5.1), where d plays no part.
+enum class Projection { kPerspective, kOrthographic };
+
 struct Viewport {
   double width = 1;     // Vw
   double height = 1;    // Vh
-  double distance = 1;  // d
+  double distance = 1;  // d (Catlike's focal length)
+  Projection projection = Projection::kPerspective;
 };
 
 // The chapter keeps no depth; Vulkan needs it. Camera-space z in [near, far] maps to depth [0, 1]

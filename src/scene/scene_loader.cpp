@@ -108,9 +108,20 @@ Canvas ReadCanvas(const JsonReader& r) {
 }
 
 Viewport ReadViewport(const JsonReader& r) {
-  r.ExpectObject({"width", "height", "distance"});
-  return Viewport{r.Required("width").Positive(), r.Required("height").Positive(),
-                  r.Required("distance").Positive()};
+  r.ExpectObject({"width", "height", "distance", "projection"});
+  Viewport viewport{r.Required("width").Positive(), r.Required("height").Positive(),
+                    r.Required("distance").Positive()};
+  if (auto projection = r.Find("projection")) {
+    const std::string kind = projection->String();
+    if (kind == "orthographic") {
+      viewport.projection = Projection::kOrthographic;
+    } else if (kind != "perspective") {
+      const std::string suggestion = ClosestMatch(kind, {"perspective", "orthographic"});
+      projection->Fail("expected \"perspective\" or \"orthographic\", found \"" + kind + "\"" +
+                       (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
+    }
+  }
+  return viewport;
 }
 
 Depth ReadDepth(const JsonReader& r) {

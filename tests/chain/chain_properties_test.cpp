@@ -88,11 +88,18 @@ TEST_CASE("F · V equals Listing 10-3's step-by-step chain for every vertex of e
         INFO(file.string() << " instance " << i << " vertex (" << v.x << ", " << v.y << ", " << v.z << ")");
         const glm::dvec3 camera_space = ApplyCamera(ApplyTransform(v, instance.transform), scene.camera);
         const glm::dvec4 clip = f * glm::dvec4(v, 1.0);
+        const glm::dvec2 canvas = ProjectVertex(camera_space, scene.viewport, scene.canvas);
+        const double to_canvas_x = scene.canvas.width / 2.0, to_canvas_y = -(scene.canvas.height / 2.0);
+        if (scene.viewport.projection == Projection::kOrthographic) {
+          // w = 1: nothing is divided, and the canvas point is (x·Cw/Vw, y·Ch/Vh) to 1e-9 px.
+          REQUIRE(clip.w == 1.0);
+          REQUIRE(std::abs(clip.x * to_canvas_x - canvas.x) <= 1e-9);
+          REQUIRE(std::abs(clip.y * to_canvas_y - canvas.y) <= 1e-9);
+          continue;
+        }
         // w is camera-space z, exactly the chapter's divisor.
         REQUIRE(clip.w == Approx(camera_space.z).margin(1e-12));
         if (camera_space.z == 0) continue;  // the chapter's formula has no canvas point there
-        const glm::dvec2 canvas = ProjectVertex(camera_space, scene.viewport, scene.canvas);
-        const double to_canvas_x = scene.canvas.width / 2.0, to_canvas_y = -(scene.canvas.height / 2.0);
         const double scale = 1 + std::abs(canvas.x) + std::abs(canvas.y);
         REQUIRE(clip.x / clip.w * to_canvas_x == Approx(canvas.x).margin(1e-12 * scale));
         REQUIRE(clip.y / clip.w * to_canvas_y == Approx(canvas.y).margin(1e-12 * scale));

@@ -21,7 +21,7 @@ TEST_CASE("explain prints the chain with the chapter's names", "[explain]") {
   REQUIRE(r.err.empty());
 }
 
-TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw), framebuffer is the canvas moved to Vulkan's origin", "[explain]") {
+TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw) (orthographic x·Cw/Vw), framebuffer is the canvas moved to Vulkan's origin", "[explain]") {
   for (const auto& file : test::ShippedScenes()) {
     INFO(file.string());
     const test::CliResult r = test::RunCli({"explain", file.string(), "--json"});
@@ -32,13 +32,17 @@ TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw), framebuffer is the ca
     REQUIRE(j.at("camera_matrix").at(3).size() == 4);
     const double cw = j["canvas"]["width"], ch = j["canvas"]["height"];
     const double vw = j["viewport"]["width"], vh = j["viewport"]["height"], d = j["viewport"]["distance"];
+    const bool orthographic = j["viewport"]["projection"] == "orthographic";
+    REQUIRE(j.at(orthographic ? "perspective_matrix" : "orthographic_matrix").is_null());
+    REQUIRE(j.at(orthographic ? "orthographic_matrix" : "perspective_matrix").size() == 4);
     for (const auto& instance : j.at("instances")) {
       REQUIRE(instance.at("model_matrix").size() == 4);
       REQUIRE(instance.at("mvp").size() == 4);
       for (const auto& v : instance.at("vertices")) {
         const double x = v["camera"][0], y = v["camera"][1], z = v["camera"][2];
         const double cx = v["canvas"][0], cy = v["canvas"][1];
-        const double expected_x = x * d * cw / (z * vw), expected_y = y * d * ch / (z * vh);
+        const double expected_x = orthographic ? x * cw / vw : x * d * cw / (z * vw);
+        const double expected_y = orthographic ? y * ch / vh : y * d * ch / (z * vh);
         const double scale = 1 + std::abs(expected_x) + std::abs(expected_y);
         REQUIRE(cx == Approx(expected_x).margin(1e-12 * scale));
         REQUIRE(cy == Approx(expected_y).margin(1e-12 * scale));

@@ -128,3 +128,30 @@ TEST_CASE("Reversed Z maps near to depth 1 and far to depth 0", "[matrices]") {
     REQUIRE(depth_at(7.25) + c.z / c.w == Approx(1.0).margin(1e-15));
   }
 }
+
+TEST_CASE("The orthographic P by hand: x and y kept, depth linear from near to far, w = 1", "[matrices][orthographic]") {
+  // near 2, far 10: depth = (z - 2) / 8 = z/8 - 1/4; reversed: (10 - z) / 8 = -z/8 + 5/4.
+  RequireNear(OrthographicMatrix(Depth{2, 10, false}), {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0.125, -0.25}, {0, 0, 0, 1}});
+  RequireNear(OrthographicMatrix(Depth{2, 10, true}), {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -0.125, 1.25}, {0, 0, 0, 1}});
+  // M_Projection for a 320 x 240 canvas and an 8 x 6 viewport: x · 320/8 = 40 px per unit, then
+  // 2/320 to clip: clip x = x / 4; y likewise with Vulkan's flip: clip y = -y / 3. d plays no part.
+  const Viewport viewport{8, 6, 123.0, Projection::kOrthographic};
+  const Canvas canvas{320, 240, {255, 255, 255}};
+  const glm::dmat4 projection = ProjectionMatrix(viewport, canvas, Depth{2, 10, false});
+  RequireNear(projection, {{0.25, 0, 0, 0}, {0, -1.0 / 3, 0, 0}, {0, 0, 0.125, -0.25}, {0, 0, 0, 1}});
+  // A point at the near plane has depth 0 and one at the far plane depth 1, wherever x and y are.
+  for (const double z : {2.0, 10.0}) {
+    const glm::dvec4 clip = projection * glm::dvec4(3, -2, z, 1);
+    REQUIRE(clip.w == 1.0);
+    REQUIRE(clip.z == Approx(z == 2.0 ? 0.0 : 1.0).margin(kTolerance));
+    REQUIRE(clip.x == 0.75);
+  }
+}
+
+TEST_CASE("catlike-orthographic: the scene says orthographic, and its M_Projection has no w = z row", "[matrices][orthographic]") {
+  const Scene scene = Load("catlike-orthographic");
+  REQUIRE(scene.viewport.projection == Projection::kOrthographic);
+  const glm::dmat4 projection = SceneChain(scene).projection;
+  REQUIRE(projection[2][3] == 0.0);  // row 3, column 2: w does not depend on z
+  REQUIRE(projection[3][3] == 1.0);
+}

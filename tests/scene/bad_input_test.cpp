@@ -54,6 +54,7 @@ std::vector<BadCase> Cases() {
       {"unknown key with a suggestion", With("/canvs", json::object()), "(top level)", "unknown key \"canvs\" (did you mean \"canvas\"?)"},
       {"unknown nested key", With("/instances/1/transform/scael", 2), "instances[1].transform", "did you mean \"scale\"?"},
       {"wrong type", With("/instances/1/transform/scale", "big"), "instances[1].transform.scale", "expected a number or [sx, sy, sz], found a string"},
+      {"unknown projection", With("/viewport/projection", "orthografic"), "viewport.projection", "expected \"perspective\" or \"orthographic\", found \"orthografic\" (did you mean \"orthographic\"?)"},
       {"transform neither object nor list", With("/instances/1/transform", 5), "instances[1].transform", "expected an object (scale, rotation, translation) or a list of steps, found a number"},
       {"transform step with two keys", With("/instances/1/transform", json::array({{{"scale", 2}, {"translation", {0, 0, 5}}}})), "instances[1].transform[0]", "needs exactly one of \"scale\", \"rotation\" or \"translation\" (found 2 keys)"},
       {"transform step with no key", With("/instances/1/transform", json::array({json::object()})), "instances[1].transform[0]", "(found 0 keys)"},
