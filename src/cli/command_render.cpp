@@ -1,8 +1,10 @@
-// `twinraster render SCENE...`: draws each scene on lavapipe, on the CPU twin or both, writes the
-// PNGs (staged: all of a scene's or none, or one PNG to standard output) and compares the images.
-// Several scenes share one Vulkan device and pipeline, and write into one directory.
+// `twinraster render SCENE...`: draws each scene on lavapipe, on the CPU twin or both, or (--rules
+// book) as the chapter's demos draw it; writes the PNGs (staged: all of a scene's or none, or one
+// PNG to standard output) and compares the images. Several scenes share one Vulkan device and
+// pipeline, and write into one directory.
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
+#include "book/book_renderer.hpp"
 #include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
 #include "cli/comparison_report.hpp"
@@ -34,6 +36,8 @@ struct RenderArguments {
   std::optional<std::string> output;  // one scene: OUT.png or -; several: a directory
   int png_level = kPngFastest;
   std::string backend = "both";
+  bool backend_given = false;  // --backend on the command line, rather than the default
+  std::string rules = "vulkan";
   bool json = false;
   std::string device;
   unsigned threads = 0;
@@ -92,6 +96,22 @@ BackendRun RenderCpu(const DrawList& list, unsigned threads, Progress& progress)
   return run;
 }
 
+// The chapter's demos draw on one thread, straight into the image: all of it is drawing.
+BackendRun RenderBook(const Scene& scene, const std::string& scene_argument, Progress& progress) {
+  BackendRun run{"cpu", "book rules: the chapter's demos, 1 thread", {}, {}};
+  progress.Status("cpu: drawing by the book's rules...");
+  Stopwatch clock;
+  try {
+    run.image = book::RenderScene(scene);
+  } catch (const book::BookRulesError& e) {
+    // Reported as a problem with the scene, like the loader's, so that several scenes go on.
+    throw SceneError(IsStandardStream(scene_argument) ? "<stdin>" : scene_argument, e.where(),
+                     "--rules book: " + e.problem());
+  }
+  run.draw_ms = clock.Milliseconds();
+  return run;
+}
+
 nlohmann::ordered_json RunJson(const BackendRun* run) {
   if (!run) return nullptr;  // the backend was not asked for
   return {{"output", run->output},
@@ -107,6 +127,15 @@ std::string RunText(const BackendRun& run) {
     << run.detail << ")  setup " << run.setup_ms << " ms, draw " << run.draw_ms << " ms, readback " << run.readback_ms
     << " ms, png " << run.png_ms << " ms";
   return s.str();
+}
+
+// --rules book draws on the CPU only, so it implies --backend cpu; asking for another is a mistake.
+void ResolveRules(RenderArguments& a) {
+  if (a.rules != "book") return;
+  if (a.backend_given && a.backend != "cpu") {
+    throw UsageError("--rules book draws on the CPU only, as the chapter's demos do: drop --backend " + a.backend);
+  }
+  a.backend = "cpu";
 }
 
 // Every check on the arguments that needs no scene and no device, so that a mistake costs nothing.
@@ -160,15 +189,20 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   const std::string out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
                                     : a.output.value_or(scene.name + ".png");
   const bool to_stdout = IsStandardStream(out);
-  const DrawList list = BuildDrawList(scene);
+  const bool book = a.rules == "book";
+  const DrawList list = book ? DrawList{} : BuildDrawList(scene);  // the book draws from the scene
   const double load_ms = load_clock.Milliseconds();
   std::size_t triangles = 0;
-  for (const DrawCall& draw : list.draws) triangles += list.meshes[draw.mesh].triangles.size();
+  for (const Instance& instance : scene.instances) triangles += scene.models[instance.model].triangles.size();
 
   // Render everything before writing anything: a run that fails writes no file at all.
   std::vector<BackendRun> runs;
-  if (a.backend != "cpu") runs.push_back(RenderGpu(list, a.device, gpu, progress));  // GpuUnavailable: exit 3
-  if (a.backend != "gpu") runs.push_back(RenderCpu(list, a.threads, progress));
+  if (book) {
+    runs.push_back(RenderBook(scene, scene_argument, progress));
+  } else {
+    if (a.backend != "cpu") runs.push_back(RenderGpu(list, a.device, gpu, progress));  // GpuUnavailable: exit 3
+    if (a.backend != "gpu") runs.push_back(RenderCpu(list, a.threads, progress));
+  }
   for (BackendRun& run : runs) run.output = a.backend == "both" ? Suffixed(out, run.name) : out;
 
   std::optional<Comparison> comparison;
@@ -209,9 +243,10 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     Json j;
     j["format"] = kRenderJsonFormat;
     j["scene"] = scene_argument;
-    j["width"] = list.width;
-    j["height"] = list.height;
-    j["instances"] = list.draws.size();
+    j["rules"] = a.rules;
+    j["width"] = scene.canvas.width;
+    j["height"] = scene.canvas.height;
+    j["instances"] = scene.instances.size();
     j["triangles"] = triangles;
     j["load_ms"] = load_ms;
     j["differing_pixels"] = comparison ? Json(comparison->differing_pixels) : Json(nullptr);
@@ -225,8 +260,9 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     std::ostream& report = to_stdout ? std::cerr : std::cout;
     std::ostringstream work;
     work.precision(3);
-    work << std::fixed << scene_argument << ": " << list.draws.size() << (list.draws.size() == 1 ? " instance, " : " instances, ") << triangles
-         << " triangles, " << list.width << " x " << list.height << ", loaded in " << load_ms << " ms";
+    const std::size_t instances = scene.instances.size();
+    work << std::fixed << scene_argument << ": " << instances << (instances == 1 ? " instance, " : " instances, ") << triangles
+         << " triangles, " << scene.canvas.width << " x " << scene.canvas.height << ", loaded in " << load_ms << " ms";
     report << work.str() << "\n";
     for (const BackendRun& run : runs) report << RunText(run) << "\n";
     if (comparison) {
@@ -237,7 +273,8 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   return comparison && !comparison->Equal() ? kExitImagesDiffer : kExitOk;
 }
 
-int Render(const RenderArguments& a) {
+int Render(RenderArguments& a) {
+  ResolveRules(a);
   CheckOutput(a);
   Progress progress = Progress::OnStandardError(a.quiet);
   std::optional<GpuRenderer> gpu;
@@ -273,7 +310,7 @@ int Render(const RenderArguments& a) {
 CommandRun AddRenderCommand(CLI::App& app) {
   auto a = std::make_shared<RenderArguments>();
   CLI::App* command = AddSubcommand(
-      app, "render", "draw a scene on Vulkan, on the CPU twin, or on both and compare",
+      app, "render", "draw a scene on Vulkan, on the CPU twin, or on both and compare; or as the book's demos do",
       "Each PNG is written whole to a temporary file and renamed into place: a failed run leaves\n"
       "earlier files untouched. On a terminal, progress shows on standard error.\n"
       "Exit codes: 0 done (both: identical images), 1 the images differ, 2 bad input or usage,\n"
@@ -292,14 +329,26 @@ CommandRun AddRenderCommand(CLI::App& app) {
                                    "PNG compression, 0 (none) to 12 (smallest, slowest); default 1, the fastest")
                       ->type_name("0-12"),
                   0, 12);
-  ExpectOneOf(command->add_option("--backend", a->backend, "where to draw (default: both)")->type_name("gpu|cpu|both"),
-              "backend", {"gpu", "cpu", "both"});
+  CLI::Option* backend =
+      ExpectOneOf(command->add_option("--backend", a->backend, "where to draw (default: both; with --rules book, cpu)")
+                      ->type_name("gpu|cpu|both"),
+                  "backend", {"gpu", "cpu", "both"});
+  ExpectOneOf(command
+                  ->add_option("--rules", a->rules,
+                               "vulkan (default): filled triangles, depth-tested and clipped, by Vulkan's\n"
+                               "rules. book: wireframes drawn as the chapter's live demos draw them\n"
+                               "(truncated coordinates, no clipping, no depth), on the CPU only")
+                  ->type_name("vulkan|book"),
+              "rule set", {"vulkan", "book"});
   command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/1, docs/json-output.md)");
   command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
       ->type_name("NAME");
   ExpectIndex(command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
-  return [a] { return Render(*a); };
+  return [a, backend] {
+    a->backend_given = backend->count() > 0;
+    return Render(*a);
+  };
 }
 
 }  // namespace twinraster

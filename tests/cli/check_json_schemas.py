@@ -92,7 +92,11 @@ def main():
             ("render --backend cpu", "render", ["render", transforms, "--json", "--backend", "cpu", "-o", out("c.png")],
              None, 0, lambda d: d["backends"]["gpu"] is None and d["diff"] is None),
             ("render --backend both", "render", ["render", transforms, "--json", "-o", out("b.png")], None, 0,
-             lambda d: d["differing_pixels"] == 0 and d["backends"]["gpu"]["output"] == out("b-gpu.png")),
+             lambda d: d["rules"] == "vulkan" and d["differing_pixels"] == 0
+             and d["backends"]["gpu"]["output"] == out("b-gpu.png")),
+            ("render --rules book", "render", ["render", transforms, "--json", "--rules", "book", "-o", out("book.png")],
+             None, 0, lambda d: d["rules"] == "book" and d["backends"]["gpu"] is None
+             and d["backends"]["cpu"]["output"] == out("book.png") and d["differing_pixels"] is None),
             ("render a scene from standard input", "render", ["render", "-", "--json", "--backend", "cpu", "-o",
              out("s.png")], open(transforms).read(), 0, lambda d: d["scene"] == "-"),
             ("render several scenes: JSON Lines, one object per scene", "render",

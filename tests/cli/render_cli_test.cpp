@@ -156,12 +156,13 @@ TEST_CASE("render --json keeps every key with one backend: the other backend and
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"format", "scene", "width", "height", "instances", "triangles", "load_ms", "differing_pixels",
-                          "max_channel_difference", "diff", "backends"}) {
+  for (const char* key : {"format", "scene", "rules", "width", "height", "instances", "triangles", "load_ms",
+                          "differing_pixels", "max_channel_difference", "diff", "backends"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
-  REQUIRE(j.size() == 11);
+  REQUIRE(j.size() == 12);
+  REQUIRE(j["rules"] == "vulkan");
   REQUIRE(j["instances"] == 2);
   REQUIRE(j["triangles"] == 24);
   REQUIRE(j["differing_pixels"].is_null());

@@ -26,6 +26,7 @@ set(expected
   include/twinraster/scene/scene_loader.hpp
   include/twinraster/chain/draw_list.hpp
   include/twinraster/image/png_file.hpp
+  include/twinraster/book/book_renderer.hpp
   include/twinraster/cpu/cpu_renderer.hpp
   include/twinraster/gpu/gpu_renderer.hpp
   include/twinraster/base/stopwatch.hpp
@@ -34,7 +35,7 @@ set(expected
   ${LIBDIR}/cmake/twinraster/twinrasterTargets.cmake
   ${LIBDIR}/cmake/twinraster/twinrasterGpuTargets.cmake
 )
-foreach(stage IN ITEMS scene chain image cpu gpu truth bench)
+foreach(stage IN ITEMS scene chain image book cpu gpu truth bench)
   list(APPEND expected ${LIBDIR}/libtwinraster_${stage}.a)
 endforeach()
 set(problems 0)
