@@ -67,8 +67,17 @@ void RenderModel(DemoCanvas& canvas, const Scene& scene, std::size_t instance, c
 }  // namespace
 
 void CheckBookRules(const Scene& scene) {
-  // Scene::Transform and Viewport have nothing yet that the demos lack; an orthographic viewport
-  // or a transform written as a list of steps, when the scene has them, are refused here too.
+  if (scene.viewport.projection == Projection::kOrthographic) {
+    throw BookRulesError("viewport.projection", "the book's demos only project in perspective (x·d/z, y·d/z); "
+                                                "this scene is orthographic");
+  }
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    if (scene.instances[i].transform.steps) {
+      throw BookRulesError(Path(scene, i) + ".transform",
+                           "a transform written as a list of steps; the book's demos always scale, then rotate, "
+                           "then translate (write the transform as an object)");
+    }
+  }
   const Canvas& c = scene.canvas;
   if (c.width % 2 != 0 || c.height % 2 != 0) {
     throw BookRulesError("canvas", "the book's rules need an even width and height (this canvas is " +

@@ -2,6 +2,7 @@
 // scenes it refuses (odd canvases, vertices projecting out of reach) with where and why.
 #include "book/book_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/test_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -101,4 +102,12 @@ TEST_CASE("The book's rules refuse an odd canvas, and a drawn vertex that projec
                                 "grid.json");
   // The copies move by 0.5 ∓ 0.5 along z: copy 0 by 1 (vertex 1 at z = 1 + 2^-20, fine), copy 1 by 0.
   REQUIRE(ErrorOf(grid).rfind("instances[1] (grid copy 1): model \"near\" triangle 0: vertex 1", 0) == 0);
+}
+
+TEST_CASE("The book's rules refuse what the demos cannot express: an orthographic viewport, a transform list",
+          "[book][renderer]") {
+  const std::string ortho = ErrorOf(LoadScene(test::SourcePath("scenes/catlike-orthographic.json")));
+  REQUIRE(ortho.rfind("viewport.projection: the book's demos only project in perspective", 0) == 0);
+  const std::string listed = ErrorOf(LoadScene(test::SourcePath("scenes/cgfs-figure-10-4.json")));
+  REQUIRE(listed.rfind("instances[1].transform: a transform written as a list of steps", 0) == 0);
 }
