@@ -13,6 +13,7 @@ DrawList BuildDrawList(const Scene& scene) {
   list.height = scene.canvas.height;
   list.background = scene.canvas.background;
   list.reversed_z = scene.depth.reversed;
+  list.wireframe = scene.wireframe;
 
   for (const Model& model : scene.models) {
     DrawMesh mesh;

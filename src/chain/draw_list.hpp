@@ -36,6 +36,8 @@ struct DrawList {
   // Standard depth: clear to 1, test LESS. Reversed Z (the projection maps near to 1, far to 0):
   // clear to 0, test GREATER. Either way depth is D32_SFLOAT and written.
   bool reversed_z = false;
+  // Triangle edges only (Vulkan's polygonMode LINE, 1 pixel wide), with the same depth test.
+  bool wireframe = false;
 };
 
 DrawList BuildDrawList(const Scene& scene);

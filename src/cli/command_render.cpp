@@ -38,6 +38,7 @@ struct RenderArguments {
   std::string backend = "both";
   bool backend_given = false;  // --backend on the command line, rather than the default
   std::string rules = "vulkan";
+  bool wireframe = false;  // --wireframe: as if every scene said "wireframe": true
   bool json = false;
   std::string device;
   unsigned threads = 0;
@@ -185,7 +186,8 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
                 std::optional<GpuRenderer>& gpu, Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
   Stopwatch load_clock;
-  const Scene scene = LoadSceneArgument(scene_argument);
+  Scene scene = LoadSceneArgument(scene_argument);
+  if (a.wireframe) scene.wireframe = true;
   const std::string out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
                                     : a.output.value_or(scene.name + ".png");
   const bool to_stdout = IsStandardStream(out);
@@ -340,6 +342,9 @@ CommandRun AddRenderCommand(CLI::App& app) {
                                "(truncated coordinates, no clipping, no depth), on the CPU only")
                   ->type_name("vulkan|book"),
               "rule set", {"vulkan", "book"});
+  command->add_flag("--wireframe", a->wireframe,
+                    "draw triangle edges only (Vulkan's polygonMode LINE, 1 pixel, depth-tested), as\n"
+                    "if the scene said \"wireframe\": true; the twin follows lavapipe's line rules");
   command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/1, docs/json-output.md)");
   command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
       ->type_name("NAME");

@@ -103,7 +103,8 @@ void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
       if (crosses) {
         if (created >= kMaxClippedVertices + 1 || count >= kMaxClippedVertices) return;
         ++created;
-        next[count++] = IntersectEdge(in[i - 1], d_prev, in[i], d, vp);
+        next[count] = IntersectEdge(in[i - 1], d_prev, in[i], d, vp);
+        next[count++].edge = d < 0.0f ? false : in[i - 1].edge;
       }
       d_prev = d;
     }

@@ -42,6 +42,10 @@ float PlaneDistance(const glm::vec4& clip, int plane);
 struct ClipVertex {
   glm::vec4 clip{0.0f};
   WindowPos window;  // for shader vertices the fma transform, for new vertices the plain one
+  // Whether the polygon edge starting here is drawn in wireframe: true for shader vertices; a
+  // vertex made where an edge leaves the volume starts an edge along the clip plane (false), one
+  // made where it comes back in copies the flag of the outside vertex it was cut from.
+  bool edge = true;
 };
 
 struct ClippedPolygon {

@@ -53,31 +53,46 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   std::vector<std::uint64_t> hidden(threads, 0);  // per part
   const int height = static_cast<int>(list.height);
   for (const GeometryChunk& chunk : chunks) {
-    // Setup: vertex stage, clipping, viewport transform, triangle setup, binning into bands.
+    // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
     ProcessGeometry(list, chunk, threads, scratch, clip, bands);
     setup_ms += clock.Lap();
-    // Draw: each part rasterizes its own bands, each band's triangles in list order.
-    const TriangleChunks& triangles = scratch.triangles;
+    // Draw: each part rasterizes its own bands, each band's triangles (or lines) in list order.
     ParallelParts(threads, [&](unsigned part) {
       std::uint64_t skipped = 0;  // counted here: a shared array written per triangle would ping-pong
-      for (unsigned band = part; band < bands; band += threads) {
+      // The primitives of the chunk's bins for one band, drawn in order: parts[p][i] for each i in
+      // bins[p][band], p = 0, 1, ...; rows(primitive, row_begin, row_end, on_span) rasterizes one.
+      const auto draw_band = [&](unsigned band, const auto& parts, auto&& rows) {
         const int band_begin = static_cast<int>(band) * kBandRows;
         const int band_end = std::min(height, band_begin + kBandRows);
-        for (std::size_t p = 0; p < triangles.size(); ++p) {
+        for (std::size_t p = 0; p < parts.size(); ++p) {
           for (const std::uint32_t i : scratch.bins[p][band]) {
-            const TriangleSetup& t = triangles[p][i];
+            const auto& t = parts[p][i];
             const int row_begin = std::max(t.bounds.y0, band_begin), row_end = std::min(t.bounds.y1 + 1, band_end);
-            if (options.depth_tiles && tiles.Hidden(t, static_cast<int>(band), row_begin, row_end)) {
+            if (options.depth_tiles && tiles.Hidden(t.bounds, t.depth, static_cast<int>(band), row_begin, row_end)) {
               ++skipped;
               continue;
             }
-            RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup& s, int py, Span span) {
-              ShadeSpan(fb, py, span, s.depth, s.colour);
+            rows(t, row_begin, row_end, [&](int py, Span span) {
+              ShadeSpan(fb, py, span, t.depth, t.colour);
               tiles.MarkDrawn(py, span);
             });
           }
         }
         if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
+      };
+      for (unsigned band = part; band < bands; band += threads) {
+        if (list.wireframe) {
+          draw_band(band, scratch.lines, [](const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
+            for (int py = row_begin; py < row_end; ++py) {
+              const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
+              if (span.begin < span.end) on_span(py, span);
+            }
+          });
+        } else {
+          draw_band(band, scratch.triangles, [](const TriangleSetup& t, int row_begin, int row_end, auto&& on_span) {
+            RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup&, int py, Span span) { on_span(py, span); });
+          });
+        }
       }
       hidden[part] += skipped;
     });

@@ -50,9 +50,10 @@ DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare o
       farthest_(stride_ * ((height + kTileSize - 1) / kTileSize), ClearDepth(op)),
       dirty_(farthest_.size(), 0) {}
 
-bool DepthTiles::Hidden(const TriangleSetup& t, int band, int row_begin, int row_end) const {
+bool DepthTiles::Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin,
+                        int row_end) const {
   const float* tiles = farthest_.data() + static_cast<std::size_t>(band) * stride_;
-  const int first = t.bounds.x0 / kTileSize, last = t.bounds.x1 / kTileSize;
+  const int first = bounds.x0 / kTileSize, last = bounds.x1 / kTileSize;
   float farthest = tiles[first];
   for (int tx = first + 1; tx <= last; ++tx) {
     farthest = op_ == DepthCompare::kLess ? std::max(farthest, tiles[tx]) : std::min(farthest, tiles[tx]);
@@ -60,8 +61,8 @@ bool DepthTiles::Hidden(const TriangleSetup& t, int band, int row_begin, int row
   // Nothing to gain where the tiles still hold the clear depth (only a fragment exactly at it
   // would be rejected), so skip the bound's arithmetic there.
   if (farthest == ClearDepth(op_)) return false;
-  const PixelRect box{t.bounds.x0, row_begin, t.bounds.x1, row_end - 1};
-  const double nearest = NearestDepth(t.depth, box, op_);
+  const PixelRect box{bounds.x0, row_begin, bounds.x1, row_end - 1};
+  const double nearest = NearestDepth(depth, box, op_);
   // Every fragment is at least as far as `nearest`, which is at least as far as every stored depth
   // in these tiles: the strict test fails everywhere.
   return op_ == DepthCompare::kLess ? nearest >= farthest : nearest <= farthest;

@@ -28,8 +28,9 @@ class DepthTiles {
  public:
   DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare op);  // every tile clear
 
-  // True when t certainly passes the depth test nowhere in rows [row_begin, row_end) of band.
-  bool Hidden(const TriangleSetup& t, int band, int row_begin, int row_end) const;
+  // True when a primitive (a triangle or a line) with this box and depth plane certainly passes
+  // the depth test nowhere in rows [row_begin, row_end) of band.
+  bool Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin, int row_end) const;
 
   // The tiles a span of row py covers may now hold nearer depths.
   void MarkDrawn(int py, Span span) {

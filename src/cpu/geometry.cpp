@@ -53,9 +53,46 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
   }
 }
 
+void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
+                       const ViewportState& vp, const PixelRect& region, std::vector<LineSetup>& out) {
+  const auto line = [&](const WindowPos& a, const WindowPos& b) {
+    LineSetup& setup = out.emplace_back();
+    setup.colour = colour;
+    if (!SetUpLine(a, b, region, setup)) out.pop_back();
+  };
+  const unsigned any_outside = v[0]->outcode | v[1]->outcode | v[2]->outcode;
+  const unsigned all_outside = v[0]->outcode & v[1]->outcode & v[2]->outcode;
+  if (any_outside == 0) {
+    line(v[2]->v.window, v[0]->v.window);
+    line(v[0]->v.window, v[1]->v.window);
+    line(v[1]->v.window, v[2]->v.window);
+    return;
+  }
+  if (all_outside != 0) return;
+
+  ClippedPolygon polygon;
+  ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon);
+  const int n = polygon.count;
+  const auto edge = [&](int i, int j) {
+    const ClipVertex& from = polygon.v[static_cast<std::size_t>(i)];
+    if (from.edge) line(from.window, polygon.v[static_cast<std::size_t>(j)].window);
+  };
+  if (n < 3) return;
+  if (n == 3) {
+    edge(2, 0);
+    edge(0, 1);
+    edge(1, 2);
+    return;
+  }
+  for (int i = 0; i + 2 < n; ++i) edge(i, i + 1);
+  edge(n - 1, 0);
+  edge(n - 2, n - 1);
+}
+
 std::size_t GeometryScratch::bytes() const {
   std::size_t total = vertices.capacity() * sizeof(ShadedVertex) + vertex_start.capacity() * sizeof(std::size_t);
   for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
+  for (const auto& part : lines) total += part.capacity() * sizeof(LineSetup);
   for (const auto& part : bins)
     for (const auto& bin : part) total += bin.capacity() * sizeof(std::uint32_t);
   return total;
@@ -159,20 +196,37 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
   const unsigned triangle_parts = parts_for(triangle_count, 2048);
   // Reserved here, in the calling thread (a worker's fresh memory would cost a page fault per
   // 4 KiB on every render); with a reused scratch there is usually nothing to allocate.
+  const bool wireframe = list.wireframe;
   TriangleChunks& parts = scratch.triangles;
-  parts.resize(triangle_parts);
+  LineChunks& line_parts = scratch.lines;
+  parts.resize(wireframe ? 0 : triangle_parts);
+  line_parts.resize(wireframe ? triangle_parts : 0);
   scratch.bins.resize(triangle_parts);
   for (unsigned part = 0; part < triangle_parts; ++part) {
     scratch.bins[part].resize(band_count);
     for (auto& bin : scratch.bins[part]) bin.clear();
-    parts[part].clear();
     const std::size_t share =
         triangle_count * (part + 1) / triangle_parts - triangle_count * part / triangle_parts;
-    parts[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
+    if (wireframe) {
+      line_parts[part].clear();
+      line_parts[part].reserve(3 * share + 16);
+    } else {
+      parts[part].clear();
+      parts[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
+    }
   }
+  // Bins the primitives of one part while they are still in cache (most touch one band).
+  const auto bin = [&](const auto& primitives, unsigned part) {
+    if (band_count == 0) return;
+    std::vector<std::vector<std::uint32_t>>& bins = scratch.bins[part];
+    for (std::size_t i = 0; i < primitives.size(); ++i) {
+      for (int band = FirstBand(primitives[i].bounds); band <= LastBand(primitives[i].bounds); ++band) {
+        bins[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  };
   ParallelFor(triangle_parts, triangle_count,
               [&](std::size_t begin, std::size_t end, unsigned part) {
-                std::vector<TriangleSetup>& out = parts[part];
                 for (std::size_t g = begin; g < end;) {
                   const std::size_t i = draw_of(triangle_start, g);
                   const DrawMesh& mesh = mesh_of(i);
@@ -181,17 +235,19 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                   for (; g < stop; ++g) {
                     const std::size_t t = first_triangle + g - triangle_start[i];
                     const auto& tri = mesh.triangles[t];
-                    AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]},
-                                     PackRgba(mesh.colours[t]), vp, region, out);
+                    if (wireframe) {
+                      AssembleWireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
+                                        region, line_parts[part]);
+                    } else {
+                      AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
+                                       region, parts[part]);
+                    }
                   }
                 }
-                if (band_count == 0) return;
-                // Bin while the triangles are still in cache (most touch one band).
-                std::vector<std::vector<std::uint32_t>>& bins = scratch.bins[part];
-                for (std::size_t i = 0; i < out.size(); ++i) {
-                  for (int band = FirstBand(out[i]); band <= LastBand(out[i]); ++band) {
-                    bins[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
-                  }
+                if (wireframe) {
+                  bin(line_parts[part], part);
+                } else {
+                  bin(parts[part], part);
                 }
               });
 }

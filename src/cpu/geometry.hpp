@@ -6,6 +6,7 @@
 #pragma once
 
 #include "cpu/clipping.hpp"
+#include "cpu/line_setup.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "cpu/viewport_transform.hpp"
 #include "chain/draw_list.hpp"
@@ -32,8 +33,16 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
                       const ViewportState& vp, const PixelRect& region,
                       std::vector<TriangleSetup>& out);
 
+// A wireframe triangle: its edges as lavapipe's draw module emits them for polygonMode LINE, each
+// set up as a line and appended. Unclipped: v2→v0, v0→v1, v1→v2, whatever the winding, even at
+// zero area. Clipped into p0..p(n-1): p0→p1, …, p(n-3)→p(n-2), then p(n-1)→p0, then
+// p(n-2)→p(n-1) (for n = 3 the unclipped order), leaving out the edges along a clip plane.
+void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
+                       const ViewportState& vp, const PixelRect& region, std::vector<LineSetup>& out);
+
 // The triangles in draw order, as consecutive parts (one per setup thread: no merge copy).
 using TriangleChunks = std::vector<std::vector<TriangleSetup>>;
+using LineChunks = std::vector<std::vector<LineSetup>>;  // the same for a wireframe's lines
 
 // A piece of the draw list set up at once: whole draws [draw_begin, draw_end), or, for a draw with
 // more triangles than a chunk holds, its triangles [triangle_begin, triangle_end) alone.
@@ -58,7 +67,8 @@ struct GeometryScratch {
   std::vector<ShadedVertex> vertices;
   std::vector<std::size_t> vertex_start;  // per draw of the shaded chunk, into `vertices`
   TriangleChunks triangles;               // the result
-  // bins[p][b]: indices into triangles[p] of the triangles whose box touches band b (kBandRows
+  LineChunks lines;                       // the result, for a wireframe draw list
+  // bins[p][b]: indices into triangles[p] (lines[p] for a wireframe) of those whose box touches band b (kBandRows
   // rows), in order; binned as they are set up, while still in cache, so that each band's
   // rasterizer reads only the triangles it draws.
   std::vector<std::vector<std::vector<std::uint32_t>>> bins;

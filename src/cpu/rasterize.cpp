@@ -16,9 +16,15 @@ std::int64_t CeilDiv(std::int64_t a, std::int64_t b) { return -FloorDiv(-a, b); 
 }  // namespace
 
 Span CoveredSpan(const TriangleSetup& t, int py) {
-  std::int64_t begin = t.bounds.x0;
-  std::int64_t end = std::int64_t{t.bounds.x1} + 1;
-  for (const EdgeFunction& e : Edges(t)) {
+  const std::array<EdgeFunction, 3> edges = Edges(t);
+  return CoveredSpan(edges.data(), edges.size(), t.bounds, py);
+}
+
+Span CoveredSpan(const EdgeFunction* edges, std::size_t count, const PixelRect& bounds, int py) {
+  std::int64_t begin = bounds.x0;
+  std::int64_t end = std::int64_t{bounds.x1} + 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    const EdgeFunction& e = edges[i];
     // Along the row the edge function is row_value + step * px; covered needs > 0.
     const std::int64_t row_value = e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne);
     const std::int64_t step = -e.dcdx * kSubpixelOne;

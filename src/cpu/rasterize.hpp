@@ -21,6 +21,8 @@ struct Span {
 
 // Covered span of row py, with three divisions (one per edge).
 Span CoveredSpan(const TriangleSetup& t, int py);
+// The same for any convex polygon given by its edge functions (a line's four), inside `bounds`.
+Span CoveredSpan(const EdgeFunction* edges, std::size_t count, const PixelRect& bounds, int py);
 
 // The same spans for consecutive rows without dividing per row: for each edge the bound
 // floor(-row_value / |step|) is kept as quotient and remainder and stepped exactly, like a DDA.
@@ -128,9 +130,9 @@ struct RowShare {
 // Which part owns the band of row y: bands are dealt out round-robin.
 inline unsigned BandOwner(int y, unsigned parts) { return static_cast<unsigned>(y / kBandRows) % parts; }
 
-// The bands a triangle's box touches, [first, last].
-inline int FirstBand(const TriangleSetup& t) { return t.bounds.y0 / kBandRows; }
-inline int LastBand(const TriangleSetup& t) { return t.bounds.y1 / kBandRows; }
+// The bands a box touches, [first, last].
+inline int FirstBand(const PixelRect& bounds) { return bounds.y0 / kBandRows; }
+inline int LastBand(const PixelRect& bounds) { return bounds.y1 / kBandRows; }
 
 // Rasterizes the bands `share` owns one after the other, so that a band's depth and colour rows
 // stay in cache: for each owned band, top down, on_band(row_begin, row_end) first, then
@@ -147,7 +149,7 @@ void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, co
     on_band(band_begin, band_end);
     for (const std::vector<TriangleSetup>& chunk : triangles) {
       for (const TriangleSetup& t : chunk) {
-        if (band < FirstBand(t) || band > LastBand(t)) continue;
+        if (band < FirstBand(t.bounds) || band > LastBand(t.bounds)) continue;
         RasterizeRows(t, std::max(t.bounds.y0, band_begin), std::min(t.bounds.y1 + 1, band_end), on_span);
       }
     }

@@ -38,10 +38,10 @@ inline std::int64_t EdgeAt(const EdgeFunction& e, int px, int py) {
          e.dcdx * (std::int64_t{px} * kSubpixelOne);
 }
 
-inline EdgeFunction MakeEdge(std::int32_t xi, std::int32_t yi, std::int32_t xj, std::int32_t yj) {
+inline EdgeFunction MakeEdge(std::int64_t xi, std::int64_t yi, std::int64_t xj, std::int64_t yj) {
   EdgeFunction e;
-  e.dcdx = std::int64_t{yi} - yj;
-  e.dcdy = std::int64_t{xi} - xj;
+  e.dcdx = yi - yj;
+  e.dcdy = xi - xj;
   e.c = e.dcdx * xi - e.dcdy * yi;
   const bool left_edge = e.dcdx < 0;
   const bool top_edge = e.dcdx == 0 && e.dcdy > 0;

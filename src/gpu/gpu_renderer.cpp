@@ -99,6 +99,10 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
 
   // Setup. Check and upload first: a malformed list then throws before anything is touched.
   CheckSize(list.width, list.height, context.limits());
+  if (list.wireframe && !context.wireframe()) {
+    throw GpuUnavailable(context.device_name() + " cannot draw wireframes (no fillModeNonSolid feature); "
+                         "--backend cpu can");
+  }
   const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
   const gpu::DrawPlan plan = gpu::PlanDraws(list, instancing, instances_per_buffer);
   const gpu::InstanceBuffers instances(context, list, plan);  // likewise
@@ -193,7 +197,7 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
     const gpu::FSource source = batch.instanced ? gpu::FSource::kInstanceAttribute : gpu::FSource::kPushConstant;
     if (bound != source) {
       // Both pipelines share one layout, so the push constants and descriptor set stay bound.
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(source, list.reversed_z));
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(source, list.reversed_z, list.wireframe));
       bound = source;
     }
     if (batch.instanced) {

@@ -116,13 +116,14 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
                                              });
 }
 
-const vk::raii::Pipeline& Pipeline::pipeline(FSource source, bool reversed_z) {
-  vk::raii::Pipeline& slot = pipelines_[source == FSource::kInstanceAttribute ? 1 : 0][reversed_z ? 1 : 0];
-  if (!*slot) slot = Create(source, reversed_z);
+const vk::raii::Pipeline& Pipeline::pipeline(FSource source, bool reversed_z, bool wireframe) {
+  vk::raii::Pipeline& slot =
+      pipelines_[source == FSource::kInstanceAttribute ? 1 : 0][reversed_z ? 1 : 0][wireframe ? 1 : 0];
+  if (!*slot) slot = Create(source, reversed_z, wireframe);
   return slot;
 }
 
-vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z) const {
+vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z, bool wireframe) const {
   const vk::raii::Device& device = *device_;
   const bool instanced = source == FSource::kInstanceAttribute;
   const vk::raii::ShaderModule vertex =
@@ -167,7 +168,7 @@ vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z) const {
   const vk::PipelineRasterizationStateCreateInfo rasterization{
       .depthClampEnable = VK_FALSE,
       .rasterizerDiscardEnable = VK_FALSE,
-      .polygonMode = vk::PolygonMode::eFill,
+      .polygonMode = wireframe ? vk::PolygonMode::eLine : vk::PolygonMode::eFill,
       .cullMode = vk::CullModeFlagBits::eNone,  // the chapter draws both sides
       .frontFace = vk::FrontFace::eCounterClockwise,
       .depthBiasEnable = VK_FALSE,

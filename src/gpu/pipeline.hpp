@@ -34,18 +34,20 @@ class Pipeline {
   const vk::raii::PipelineLayout& layout() const { return layout_; }
   // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z). Created
   // on first use.
-  const vk::raii::Pipeline& pipeline(FSource source, bool reversed_z);
+  // on first use. Wireframe: polygonMode LINE, 1 pixel wide (needs the fillModeNonSolid feature).
+  const vk::raii::Pipeline& pipeline(FSource source, bool reversed_z, bool wireframe);
 
  private:
-  vk::raii::Pipeline Create(FSource source, bool reversed_z) const;
+  vk::raii::Pipeline Create(FSource source, bool reversed_z, bool wireframe) const;
 
   const vk::raii::Device* device_;
   vk::raii::RenderPass render_pass_ = nullptr;
   vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;  // binding 0: the triangle colours
   vk::raii::PipelineLayout layout_ = nullptr;
-  // [F source][reversed Z]: identical but for the vertex input and the depth compare op, which
-  // are baked into a Vulkan 1.0 pipeline.
-  vk::raii::Pipeline pipelines_[2][2] = {{nullptr, nullptr}, {nullptr, nullptr}};
+  // [F source][reversed Z][wireframe]: identical but for the vertex input, the depth compare op
+  // and the polygon mode, which are baked into a Vulkan 1.0 pipeline.
+  vk::raii::Pipeline pipelines_[2][2][2] = {{{nullptr, nullptr}, {nullptr, nullptr}},
+                                            {{nullptr, nullptr}, {nullptr, nullptr}}};
 };
 
 }  // namespace twinraster::gpu

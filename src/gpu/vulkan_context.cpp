@@ -189,10 +189,13 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
       .queueCount = 1,
       .pQueuePriorities = &priority,
   };
-  // No optional features: Vulkan 1.0's core is all the renderer uses.
+  // One optional feature, for wireframe drawing (polygonMode LINE), when the device has it.
+  const vk::PhysicalDeviceFeatures features{.fillModeNonSolid = physical_device_.getFeatures().fillModeNonSolid};
+  wireframe_ = features.fillModeNonSolid == VK_TRUE;
   device_ = vk::raii::Device(physical_device_, vk::DeviceCreateInfo{
                                                    .queueCreateInfoCount = 1,
                                                    .pQueueCreateInfos = &queue_info,
+                                                   .pEnabledFeatures = &features,
                                                });
   queue_ = device_.getQueue(queue_family_, 0);
   KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp

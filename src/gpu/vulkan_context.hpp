@@ -24,6 +24,7 @@ class VulkanContext {
   const vk::PhysicalDeviceLimits& limits() const { return properties_.limits; }
   std::string device_name() const { return properties_.deviceName; }
   const std::vector<std::string>& messages() const { return messages_; }
+  bool wireframe() const { return wireframe_; }  // polygonMode LINE (fillModeNonSolid) enabled
 
   // A memory type allowed by `type_bits` (from vkGet*MemoryRequirements) that has every `required`
   // flag, preferring one that also has every `preferred` flag.
@@ -42,6 +43,7 @@ class VulkanContext {
   std::uint32_t queue_family_ = 0;
   vk::raii::Device device_ = nullptr;
   vk::raii::Queue queue_ = nullptr;
+  bool wireframe_ = false;
 };
 
 }  // namespace twinraster::gpu

@@ -123,6 +123,7 @@ struct Scene {
   std::vector<Model> models;
   std::vector<Instance> instances;  // every copy of every grid written out
   std::vector<InstanceGrid> grids;  // which instances came from a grid, in order
+  bool wireframe = false;           // draw triangle edges only, as the chapter's figures do
 };
 
 }  // namespace twinraster

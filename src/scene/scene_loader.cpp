@@ -347,7 +347,7 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem
 
   const JsonReader root(document, file_name);
-  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances"});
+  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe"});
   if (auto comment = root.Find("comment")) comment->String();
 
   Scene scene;
@@ -355,6 +355,7 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   scene.canvas = ReadCanvas(root.Required("canvas"));
   scene.viewport = ReadViewport(root.Required("viewport"));
   if (auto depth = root.Find("depth")) scene.depth = ReadDepth(*depth);
+  if (auto wireframe = root.Find("wireframe")) scene.wireframe = wireframe->Boolean();
   scene.camera = ReadCamera(root.Required("camera"));
 
   const JsonReader models = root.Required("models");

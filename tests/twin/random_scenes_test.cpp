@@ -57,3 +57,29 @@ TEST_CASE("Random scenes: GPU image == CPU image in every one", "[twin][random]"
   REQUIRE(scenes_with_drawing >= kSceneCount * 8 / 10);
   test::RequireNoValidationMessages();
 }
+
+TEST_CASE("Random scenes in wireframe: GPU image == CPU image in every one", "[twin][random][wireframe]") {
+  // The same scenes drawn as triangle edges (polygonMode LINE): clipped polygons, edges along
+  // clip planes left out, cameras inside the cloud, every winding.
+  test::SharedGpu(gpu::Instancing::kNever);
+  test::SharedGpu(gpu::Instancing::kAlways);
+  std::uint32_t failures = 0, scenes_with_drawing = 0;
+  for (std::uint32_t seed = kFirstSeed; seed < kFirstSeed + kSceneCount; ++seed) {
+    nlohmann::ordered_json json = test::RandomSceneJson(seed);
+    json["wireframe"] = true;
+    const std::string text = json.dump(1);
+    const Scene scene = ParseScene(text, "random-wireframe-" + std::to_string(seed) + ".json");
+    REQUIRE(scene.wireframe);
+    const test::TwinResult r = test::RenderTwins(BuildDrawList(scene));
+    scenes_with_drawing += DrewSomething(r.cpu, scene.canvas.background) ? 1 : 0;
+    if (r.Equal()) continue;
+    ++failures;
+    const auto file = SaveFailure(seed, text);
+    UNSCOPED_INFO("seed " << seed << " (wireframe): " << r.Describe() << "\n  replay: twinraster render " << file.string());
+    CHECK(r.Equal());
+  }
+  REQUIRE(failures == 0);
+  INFO(scenes_with_drawing << " of " << kSceneCount << " scenes drew something");
+  REQUIRE(scenes_with_drawing >= kSceneCount * 8 / 10);
+  test::RequireNoValidationMessages();
+}

@@ -11,27 +11,30 @@
 
 using namespace twinraster;
 
-TEST_CASE("Every shipped scene: GPU image == CPU image, bit for bit", "[twin]") {
+TEST_CASE("Every shipped scene, filled and in wireframe: GPU image == CPU image, bit for bit", "[twin]") {
   for (const auto& file : test::ShippedScenes()) {
-    INFO(file.string());
-    const Scene scene = LoadScene(file);
-    const test::TwinResult r = test::RenderTwins(BuildDrawList(scene));
-    INFO(r.Describe());
-    REQUIRE(r.Equal());
-    // Not a blank image: the scene drew something besides the background.
-    std::size_t drawn = 0;
-    for (std::uint32_t y = 0; y < r.cpu.height; ++y)
-      for (std::uint32_t x = 0; x < r.cpu.width; ++x) {
-        const std::uint8_t* p = r.cpu.pixel(x, y);
-        const Rgb8 bg = scene.canvas.background;
-        drawn += (p[0] != bg.r || p[1] != bg.g || p[2] != bg.b) ? 1 : 0;
-      }
-    REQUIRE(drawn > 100);
+    for (const bool wireframe : {false, true}) {
+      INFO(file.string() << (wireframe ? " --wireframe" : ""));
+      Scene scene = LoadScene(file);
+      scene.wireframe = scene.wireframe || wireframe;
+      const test::TwinResult r = test::RenderTwins(BuildDrawList(scene));
+      INFO(r.Describe());
+      REQUIRE(r.Equal());
+      // Not a blank image: the scene drew something besides the background.
+      std::size_t drawn = 0;
+      for (std::uint32_t y = 0; y < r.cpu.height; ++y)
+        for (std::uint32_t x = 0; x < r.cpu.width; ++x) {
+          const std::uint8_t* p = r.cpu.pixel(x, y);
+          const Rgb8 bg = scene.canvas.background;
+          drawn += (p[0] != bg.r || p[1] != bg.g || p[2] != bg.b) ? 1 : 0;
+        }
+      REQUIRE(drawn > 100);
+    }
   }
   test::RequireNoValidationMessages();
 }
 
-TEST_CASE("The million-instance scenes at 480x270: GPU (instanced) == CPU", "[twin][large]") {
+TEST_CASE("The million-instance scenes at 480x270, filled and in wireframe: GPU (instanced) == CPU", "[twin][large]") {
   for (const auto& file : test::LargeShippedScenes()) {
     INFO(file.string());
     Scene scene = LoadScene(file);
@@ -39,15 +42,19 @@ TEST_CASE("The million-instance scenes at 480x270: GPU (instanced) == CPU", "[tw
     // A smaller canvas with the same field of view: the same geometry, a sixteenth of the pixels.
     scene.canvas.width = 480;
     scene.canvas.height = 270;
-    const DrawList list = BuildDrawList(scene);
     GpuRenderer gpu(GpuOptions{.device = "", .validation = true});  // kAuto: the path a user gets
-    GpuTimings timings;
-    const Image gpu_image = gpu.Render(list, &timings);
-    REQUIRE(timings.instanced_draws == list.draws.size());
-    const Image cpu_image = RenderOnCpu(list);
-    const Comparison c = CompareImages(gpu_image, cpu_image);
-    INFO(c.differing_pixels << " differing pixels");
-    REQUIRE(c.Equal());
+    for (const bool wireframe : {false, true}) {
+      INFO((wireframe ? "wireframe" : "filled"));
+      scene.wireframe = wireframe;
+      const DrawList list = BuildDrawList(scene);
+      GpuTimings timings;
+      const Image gpu_image = gpu.Render(list, &timings);
+      REQUIRE(timings.instanced_draws == list.draws.size());
+      const Image cpu_image = RenderOnCpu(list);
+      const Comparison c = CompareImages(gpu_image, cpu_image);
+      INFO(c.differing_pixels << " differing pixels");
+      REQUIRE(c.Equal());
+    }
     REQUIRE(gpu.ValidationMessages().empty());
   }
 }

@@ -1,0 +1,77 @@
+#include "cpu/line_setup.hpp"
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace twinraster::cpu {
+
+namespace {
+
+// C's (int)f as x86-64 compiles it (cvttss2si): toward zero; NaN and out of range give INT32_MIN
+// (where plain C++ would be undefined).
+std::int32_t TruncateToInt(float f) {
+#if defined(__SSE__) || defined(__x86_64__)
+  return _mm_cvtt_ss2si(_mm_set_ss(f));
+#else
+  if (!(f > -2147483649.0f && f < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(f);
+#endif
+}
+
+// util_iround: the float add happens first, so 0.49999997f + 0.5f rounds up to 1.
+std::int32_t RoundHalfAway(float f) { return f >= 0.0f ? TruncateToInt(f + 0.5f) : TruncateToInt(f - 0.5f); }
+
+}  // namespace
+
+std::int32_t RoundLineCoordinate(float scaled) { return RoundHalfAway(scaled); }
+
+bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, LineSetup& out) {
+  const float dx = a.x - b.x, dy = a.y - b.y;
+  const float area = dx * dx + dy * dy;  // the squared length; not fused (-ffp-contract=off)
+  if (area == 0.0f) return false;
+  const float ooa = 1.0f / area;
+
+  // Half the width across the line, in subpixels.
+  const float scale = 0.5f / std::sqrt(area);
+  const std::int64_t tx = RoundHalfAway(((-dy) * scale) * 256.0f);
+  const std::int64_t ty = RoundHalfAway((dx * scale) * 256.0f);
+  const std::int64_t x1 = RoundHalfAway((a.x - 0.5f) * 256.0f), y1 = RoundHalfAway((a.y - 0.5f) * 256.0f);
+  const std::int64_t x2 = RoundHalfAway((b.x - 0.5f) * 256.0f), y2 = RoundHalfAway((b.y - 0.5f) * 256.0f);
+  const std::int64_t x[4] = {x1 - tx, x2 - tx, x2 + tx, x1 + tx};
+  const std::int64_t y[4] = {y1 - ty, y2 - ty, y2 + ty, y1 + ty};
+
+  // llvmpipe's box for lines: ceil-based, exactly the pixels whose centres may be inside.
+  const std::int64_t min_x = std::min({x[0], x[1], x[2], x[3]}), max_x = std::max({x[0], x[1], x[2], x[3]});
+  const std::int64_t min_y = std::min({y[0], y[1], y[2], y[3]}), max_y = std::max({y[0], y[1], y[2], y[3]});
+  PixelRect box;
+  box.x0 = static_cast<int>(std::max<std::int64_t>(region.x0, (min_x + 255) >> kSubpixelBits));
+  box.x1 = static_cast<int>(std::min<std::int64_t>(region.x1, ((max_x + 255) >> kSubpixelBits) - 1));
+  box.y0 = static_cast<int>(std::max<std::int64_t>(region.y0, (min_y + 255) >> kSubpixelBits));
+  box.y1 = static_cast<int>(std::min<std::int64_t>(region.y1, ((max_y + 255) >> kSubpixelBits) - 1));
+  if (box.x0 > box.x1 || box.y0 > box.y1) return false;
+  out.bounds = box;
+
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::size_t j = (i + 1) % 4;
+    out.edges[i] = MakeEdge(x[i], y[i], x[j], y[j]);
+  }
+
+  const float dz = a.z - b.z;
+  out.depth.dzdx = (dz * dx) * ooa;
+  out.depth.dzdy = (dz * dy) * ooa;
+  out.depth.a0 = a.z - (out.depth.dzdx * (a.x - 0.5f) + out.depth.dzdy * (a.y - 0.5f));
+  return true;
+}
+
+bool Covers(const LineSetup& line, int px, int py) {
+  const PixelRect& b = line.bounds;
+  if (px < b.x0 || px > b.x1 || py < b.y0 || py > b.y1) return false;
+  return std::all_of(line.edges.begin(), line.edges.end(), [&](const EdgeFunction& e) { return EdgeAt(e, px, py) > 0; });
+}
+
+}  // namespace twinraster::cpu
