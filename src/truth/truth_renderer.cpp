@@ -16,6 +16,10 @@ namespace {
 // every draw.
 void ValidateInputs(const DrawList& list, const ExactClipPositions& clip) {
   ValidateDrawList(list);
+  if (list.wireframe) {
+    // Lines have no exact pixel set to compare with: their width is a rasterization rule.
+    throw std::invalid_argument("the truth draws filled triangles only, and this list is a wireframe");
+  }
   if (clip.size() != list.draws.size()) {
     throw std::invalid_argument("clip positions for " + std::to_string(clip.size()) + " draws, but the list has " +
                                 std::to_string(list.draws.size()));

@@ -26,7 +26,7 @@ ExactClipPositions ExactClipSpace(const Scene& scene);
 // (DrawList::reversed_z: clear 0, GREATER; else clear 1, LESS) as `list`, but positions from
 // `clip`. Clipping, viewport transform, coverage at pixel centres (top-left rule on exact ties)
 // and depth all in double. Throws std::invalid_argument for a malformed list, as the twin does,
-// or when `clip` does not match the list's draws and meshes.
+// when `clip` does not match the list's draws and meshes, or for a wireframe list.
 Image RenderTruth(const DrawList& list, const ExactClipPositions& clip);
 
 // The framebuffer position (x, y, depth) in double of a clip-space vertex: the Vulkan viewport
