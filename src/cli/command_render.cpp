@@ -246,6 +246,7 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     j["format"] = kRenderJsonFormat;
     j["scene"] = scene_argument;
     j["rules"] = a.rules;
+    j["wireframe"] = a.rules == "book" || scene.wireframe;  // the book's demos draw wireframes only
     j["width"] = scene.canvas.width;
     j["height"] = scene.canvas.height;
     j["instances"] = scene.instances.size();

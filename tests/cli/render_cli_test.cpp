@@ -156,13 +156,14 @@ TEST_CASE("render --json keeps every key with one backend: the other backend and
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"format", "scene", "rules", "width", "height", "instances", "triangles", "load_ms",
-                          "differing_pixels", "max_channel_difference", "diff", "backends"}) {
+  for (const char* key : {"format", "scene", "rules", "wireframe", "width", "height", "instances", "triangles",
+                          "load_ms", "differing_pixels", "max_channel_difference", "diff", "backends"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
-  REQUIRE(j.size() == 12);
+  REQUIRE(j.size() == 13);
   REQUIRE(j["rules"] == "vulkan");
+  REQUIRE(j["wireframe"] == false);
   REQUIRE(j["instances"] == 2);
   REQUIRE(j["triangles"] == 24);
   REQUIRE(j["differing_pixels"].is_null());
@@ -332,4 +333,21 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   test::WriteFile(dir / "plain.txt", "x");
   REQUIRE(test::RunCli({"render", kScene, lookat, "-o", (dir / "plain.txt").string()}).exit_code == 2);
   REQUIRE(test::RunCli({"render", kScene, "-", "-o", out.string()}).exit_code == 2);
+}
+
+TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so", "[cli][render][wireframe]") {
+  const test::TempDir dir;
+  const test::CliResult r = test::RunCli({"render", kScene, "--wireframe", "-o", (dir / "w.png").string(), "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["wireframe"] == true);
+  REQUIRE(j["differing_pixels"] == 0);
+  // Edges only: far fewer pixels differ from the background than in the filled image.
+  const test::CliResult filled = test::RunCli({"render", kScene, "--backend", "cpu", "-o", (dir / "f.png").string()});
+  REQUIRE(filled.exit_code == 0);
+  const test::CliResult compared =
+      test::RunCli({"compare", (dir / "w-cpu.png").string(), (dir / "f.png").string(), "--json"});
+  REQUIRE(compared.exit_code == 1);
+  REQUIRE(nlohmann::json::parse(compared.out)["differing_pixels"].get<std::uint64_t>() > 10000);
 }
