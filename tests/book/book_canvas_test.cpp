@@ -1,5 +1,6 @@
 // The demo's canvas: JavaScript's `| 0`, and where PutPixel puts a canvas point.
 #include "book/book_canvas.hpp"
+#include "support/image_counts.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -17,14 +18,6 @@ constexpr Rgb8 kWhite{255, 255, 255}, kRed{255, 0, 0};
 bool IsRed(const Image& image, std::uint32_t column, std::uint32_t row) {
   const std::uint8_t* p = image.pixel(column, row);
   return p[0] == 255 && p[1] == 0 && p[2] == 0 && p[3] == 255;
-}
-
-std::size_t PaintedPixels(const Image& image) {  // pixels that are not white
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    n += image.rgba[i] != 255 || image.rgba[i + 1] != 255 || image.rgba[i + 2] != 255;
-  }
-  return n;
 }
 
 }  // namespace
@@ -48,7 +41,7 @@ TEST_CASE("PutPixel: column Cw/2 + (x|0), row Ch/2 - (y|0) - 1, off-canvas pixel
   REQUIRE(IsRed(canvas.image(), 300, 299));
   // -0.9 truncates to 0 as 0.9 does: the pixel left of and below the origin is not reached.
   canvas.PutPixel(-0.9, -0.9, kRed);
-  REQUIRE(PaintedPixels(canvas.image()) == 1);
+  REQUIRE(test::CountNotColour(canvas.image(), kWhite) == 1);
   canvas.PutPixel(-1, -1, kRed);
   REQUIRE(IsRed(canvas.image(), 299, 300));
   // The corners: (299.9, 299.9) -> column 599, row 0; x = -300.5 truncates to -300 -> column 0;
@@ -57,13 +50,13 @@ TEST_CASE("PutPixel: column Cw/2 + (x|0), row Ch/2 - (y|0) - 1, off-canvas pixel
   REQUIRE(IsRed(canvas.image(), 599, 0));
   canvas.PutPixel(-300.5, -300, kRed);
   REQUIRE(IsRed(canvas.image(), 0, 599));
-  REQUIRE(PaintedPixels(canvas.image()) == 4);
+  REQUIRE(test::CountNotColour(canvas.image(), kWhite) == 4);
   // Just off: column 600, row -1 (y = 300), row 600 (y = -301), column -1 (x = -301).
   canvas.PutPixel(300, 0, kRed);
   canvas.PutPixel(0, 300, kRed);
   canvas.PutPixel(0, -301, kRed);
   canvas.PutPixel(-301, 0, kRed);
-  REQUIRE(PaintedPixels(canvas.image()) == 4);
+  REQUIRE(test::CountNotColour(canvas.image(), kWhite) == 4);
 }
 
 TEST_CASE("The demo's canvas starts as the background, opaque, and needs an even size", "[book][canvas]") {

@@ -3,6 +3,7 @@
 // rules cannot draw reported like bad scenes.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,13 +20,6 @@ const std::string kFigure2 = test::SourcePath("scenes/cgfs-scene.json").string()
 const std::string kFigure10 = test::SourcePath("scenes/cgfs-transforms.json").string();
 const std::string kNoVulkan = "VK_ICD_FILENAMES=/nonexistent/icd.json";  // no driver at all
 
-std::size_t NotWhite(const Image& image) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    n += image.rgba[i] != 255 || image.rgba[i + 1] != 255 || image.rgba[i + 2] != 255;
-  }
-  return n;
-}
 
 }  // namespace
 
@@ -47,7 +41,7 @@ TEST_CASE("render --rules book draws the demo's canvas on the CPU, with no Vulka
   // Figure 10-2's wireframe: 2509 painted pixels on the demo page's canvas (tests/book).
   const Image image = ReadPng(dir / "f.png");
   REQUIRE(image.width == 600);
-  REQUIRE(NotWhite(image) == 2509);
+  REQUIRE(test::CountNotColour(image, {255, 255, 255}) == 2509);
   REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 1);
 
   // --backend cpu said outright is the same; the text report names the rules.
@@ -64,7 +58,7 @@ TEST_CASE("render --rules book draws the demo's canvas on the CPU, with no Vulka
   INFO(many.err);
   REQUIRE(many.exit_code == 0);
   REQUIRE(ReadPng(out / "cgfs-scene.png").rgba == image.rgba);
-  REQUIRE(NotWhite(ReadPng(out / "cgfs-transforms.png")) == 5648);
+  REQUIRE(test::CountNotColour(ReadPng(out / "cgfs-transforms.png"), {255, 255, 255}) == 5648);
   REQUIRE(std::distance(std::filesystem::directory_iterator(out), {}) == 2);
 
   // -o - is one PNG on standard output.
@@ -96,6 +90,6 @@ TEST_CASE("render --rules book reports a scene the demos cannot draw like a bad 
       test::RunCli({"render", (dir / "odd.json").string(), kFigure2, "--rules", "book", "-o", out.string()});
   REQUIRE(many.exit_code == 2);
   REQUIRE(many.err.find("odd.json: canvas: --rules book: ") != std::string::npos);
-  REQUIRE(NotWhite(ReadPng(out / "cgfs-scene.png")) == 2509);
+  REQUIRE(test::CountNotColour(ReadPng(out / "cgfs-scene.png"), {255, 255, 255}) == 2509);
   REQUIRE_FALSE(std::filesystem::exists(out / "odd.png"));
 }

@@ -4,6 +4,7 @@
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 
@@ -21,14 +22,7 @@ TEST_CASE("Every shipped scene, filled and in wireframe: GPU image == CPU image,
       INFO(r.Describe());
       REQUIRE(r.Equal());
       // Not a blank image: the scene drew something besides the background.
-      std::size_t drawn = 0;
-      for (std::uint32_t y = 0; y < r.cpu.height; ++y)
-        for (std::uint32_t x = 0; x < r.cpu.width; ++x) {
-          const std::uint8_t* p = r.cpu.pixel(x, y);
-          const Rgb8 bg = scene.canvas.background;
-          drawn += (p[0] != bg.r || p[1] != bg.g || p[2] != bg.b) ? 1 : 0;
-        }
-      REQUIRE(drawn > 100);
+      REQUIRE(test::CountNotColour(r.cpu, scene.canvas.background) > 100);
     }
   }
   test::RequireNoValidationMessages();
