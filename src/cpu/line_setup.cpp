@@ -23,12 +23,11 @@ std::int32_t TruncateToInt(float f) {
 #endif
 }
 
-// util_iround: the float add happens first, so 0.49999997f + 0.5f rounds up to 1.
+// llvmpipe's util_iround: half away from zero, the float add happening first (so 0.49999997f +
+// 0.5f rounds up to 1); out of range or NaN gives INT32_MIN, as the truncation does.
 std::int32_t RoundHalfAway(float f) { return f >= 0.0f ? TruncateToInt(f + 0.5f) : TruncateToInt(f - 0.5f); }
 
 }  // namespace
-
-std::int32_t RoundLineCoordinate(float scaled) { return RoundHalfAway(scaled); }
 
 bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, LineSetup& out) {
   const float dx = a.x - b.x, dy = a.y - b.y;
@@ -66,12 +65,6 @@ bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, 
   out.depth.dzdy = (dz * dy) * ooa;
   out.depth.a0 = a.z - (out.depth.dzdx * (a.x - 0.5f) + out.depth.dzdy * (a.y - 0.5f));
   return true;
-}
-
-bool Covers(const LineSetup& line, int px, int py) {
-  const PixelRect& b = line.bounds;
-  if (px < b.x0 || px > b.x1 || py < b.y0 || py > b.y1) return false;
-  return std::all_of(line.edges.begin(), line.edges.end(), [&](const EdgeFunction& e) { return EdgeAt(e, px, py) > 0; });
 }
 
 }  // namespace twinraster::cpu

@@ -22,10 +22,6 @@
 
 namespace twinraster::cpu {
 
-// util_iround((w - 0.5f) * 256.0f): half away from zero, out of range or NaN giving INT32_MIN as
-// SSE's truncating conversion does.
-std::int32_t RoundLineCoordinate(float scaled);
-
 struct LineSetup {
   std::array<EdgeFunction, 4> edges;
   PixelRect bounds;  // pixels that may be covered, inside the draw region
@@ -36,8 +32,5 @@ struct LineSetup {
 // The line from a to b, a first (the depth plane hangs on a). False when it covers nothing for
 // sure (zero length, or its box misses `region`).
 bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, LineSetup& out);
-
-// The coverage test for one pixel, bounds included.
-bool Covers(const LineSetup& line, int px, int py);
 
 }  // namespace twinraster::cpu

@@ -38,8 +38,9 @@ struct Job {
   const std::function<void(unsigned)>* fn = nullptr;
   unsigned parts = 0;
   std::atomic<unsigned> next_part{0};
-  unsigned unfinished = 0;  // guarded by ThreadPool::mutex_
-  std::atomic<unsigned> remaining{0};  // the same, readable without the lock (for spinning)
+  // Parts not yet finished: decremented under ThreadPool::mutex_ (so the caller's wait cannot miss
+  // the last one), read without it while the caller spins.
+  std::atomic<unsigned> unfinished{0};
   std::exception_ptr error;  // likewise: the first part's exception, rethrown by the caller
 };
 
@@ -59,8 +60,7 @@ class ThreadPool {
     const auto job = std::make_shared<Job>();
     job->fn = &fn;
     job->parts = parts;
-    job->unfinished = parts;
-    job->remaining.store(parts);
+    job->unfinished.store(parts);
     {
       const std::lock_guard lock(mutex_);
       while (workers_.size() + 1 < parts) workers_.emplace_back([this] { Work(); });
@@ -69,9 +69,9 @@ class ThreadPool {
     }
     wake_.notify_all();
     TakeParts(*job);
-    for (int spin = 0; spin < kSpins && job->remaining.load(std::memory_order_acquire) != 0; ++spin) CpuRelax();
+    for (int spin = 0; spin < kSpins && job->unfinished.load(std::memory_order_acquire) != 0; ++spin) CpuRelax();
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return job->unfinished == 0; });
+    done_.wait(lock, [&] { return job->unfinished.load() == 0; });
     current_ = nullptr;
     if (job->error) std::rethrow_exception(job->error);
   }
@@ -109,8 +109,7 @@ class ThreadPool {
       }
       const std::lock_guard lock(mutex_);
       if (error && !job.error) job.error = error;
-      job.remaining.fetch_sub(1, std::memory_order_release);
-      if (--job.unfinished == 0) done_.notify_all();
+      if (job.unfinished.fetch_sub(1, std::memory_order_acq_rel) == 1) done_.notify_all();
     }
     t_inside_parts = was_inside;
   }
