@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,10 +55,25 @@ struct Triangle {
   Rgb8 colour;
 };
 
+// How a model's triangles take the scene's light. Unlit: their own flat colours, as without
+// lighting (and always when the scene has none). Flat: each triangle lit once, with its face
+// normal, at its first vertex (the provoking vertex, whose flat outputs Vulkan uses). Gouraud:
+// each vertex lit with its own normal, the colour interpolated across the triangle.
+enum class Shading { kUnlit, kFlat, kGouraud };
+
+// A triangle corner with no normal in the file (an OBJ face written without vn).
+inline constexpr std::uint32_t kNoNormal = 0xffffffffu;
+
 struct Model {
   std::string name;
   std::vector<glm::dvec3> vertices;
   std::vector<Triangle> triangles;
+  // An OBJ's vn, and which of them each triangle corner names (kNoNormal where none); both empty
+  // for a model written as JSON vertices. The chain computes the normals a lit model lacks.
+  std::vector<glm::dvec3> normals;
+  std::vector<std::array<std::uint32_t, 3>> triangle_normals;
+  Shading shading = Shading::kUnlit;
+  std::string source;  // the OBJ file as the scene wrote it, or empty
 };
 
 // One step of a transform written as a list, in the order written:
@@ -114,6 +130,22 @@ struct Camera {
   glm::dmat3 rotation{1.0};
 };
 
+// Light in Computer Graphics from Scratch's diffuse model: at a surface point with normal n,
+// I = ambient + sum over lights of intensity * max(0, n.l) / (|n| |l|), where l points from the
+// surface toward the light; the colour is the base colour times min(I, 1). Lights live in world
+// space.
+struct Light {
+  enum class Kind { kDirectional, kPoint };
+  Kind kind = Kind::kDirectional;
+  glm::dvec3 vector{0, 0, 1};  // kDirectional: l itself (toward the light); kPoint: its position
+  double intensity = 0;
+};
+
+struct Lighting {
+  double ambient = 0;
+  std::vector<Light> lights;
+};
+
 struct Scene {
   std::string name;  // the file's stem, for default output names
   Canvas canvas;
@@ -124,6 +156,8 @@ struct Scene {
   std::vector<Instance> instances;  // every copy of every grid written out
   std::vector<InstanceGrid> grids;  // which instances came from a grid, in order
   bool wireframe = false;           // draw triangle edges only, as the chapter's figures do
+  // Absent: every model keeps its flat triangle colours, exactly as without this feature.
+  std::optional<Lighting> lighting;
 };
 
 }  // namespace twinraster
