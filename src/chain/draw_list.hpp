@@ -4,21 +4,28 @@
 
 #include "scene/scene.hpp"
 
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace twinraster {
 
 // One model's geometry in float, as uploaded to the GPU: shared vertices, indexed triangles and
-// one flat colour per triangle (the chapter colours triangles, not vertices).
+// one flat colour per triangle (the chapter colours triangles, not vertices). A lit mesh adds a
+// model-space unit normal per triangle corner (chain/normals.hpp says which), and its triangle
+// colours become the base colours the light scales.
 struct DrawMesh {
   std::vector<glm::vec3> positions;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<Rgb8> colours;  // colours[i] belongs to triangles[i]
+  Shading shading = Shading::kUnlit;
+  std::vector<std::array<glm::vec3, 3>> normals;  // lit only: normals[i][k], corner k of triangles[i]
 };
 
 // One instance: which mesh, and F = M_Projection · M_Camera · M_Model composed in double and
@@ -26,6 +33,30 @@ struct DrawMesh {
 struct DrawCall {
   std::uint32_t mesh = 0;
   glm::mat4 F{1.0f};
+};
+
+// A light as the vertex shader reads it, in world space (scene.hpp's Light, rounded to float).
+struct DrawLight {
+  glm::vec3 vector{0.0f};  // directional: toward the light; point: its position
+  float intensity = 0;
+  bool point = false;
+};
+
+// What lighting needs of one instance beyond F, each composed in double and rounded once:
+// M_Model, for the world position a point light is seen from, and the normal matrix
+// N = (M_Model's upper 3x3)⁻ᵀ, for the normal (zero for an instance of an unlit mesh, which
+// may be singular).
+struct LitInstance {
+  glm::mat4x3 model{1.0f};  // the upper three rows of M_Model; column 3 is the translation
+  glm::mat3 normal{1.0f};
+};
+
+// The scene's light: the ambient term, the lights in the order the sum adds them, and one
+// LitInstance per draw.
+struct DrawLighting {
+  float ambient = 0;
+  std::vector<DrawLight> lights;
+  std::vector<LitInstance> instances;  // instances[i] belongs to draws[i]
 };
 
 struct DrawList {
@@ -37,13 +68,17 @@ struct DrawList {
   // clear to 0, test GREATER. Either way depth is D32_SFLOAT and written.
   bool reversed_z = false;
   // Triangle edges only (Vulkan's polygonMode LINE, 1 pixel wide), with the same depth test.
+  // Edges are not lit: a wireframe list has no lighting and every mesh is unlit.
   bool wireframe = false;
+  // Present when some mesh is lit; absent, the list is exactly what it was before lighting existed.
+  std::optional<DrawLighting> lighting;
 };
 
 DrawList BuildDrawList(const Scene& scene);
 
 // What every renderer checks before drawing a list someone else built: a size in 1..kMaxCanvasSize,
-// every draw naming an existing mesh, every triangle using existing vertices and having its colour.
+// every draw naming an existing mesh, every triangle using existing vertices and having its colour,
+// a lit mesh having its normals, and lighting covering every draw.
 // Throws std::invalid_argument naming the first problem.
 void ValidateDrawList(const DrawList& list);
 

@@ -1,5 +1,6 @@
 #include "cpu/geometry.hpp"
 
+#include "cpu/lighting.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
 #include "cpu/vertex_stage.hpp"
@@ -238,6 +239,13 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                     if (wireframe) {
                       AssembleWireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
                                         region, line_parts[part]);
+                    } else if (mesh.shading == Shading::kFlat) {
+                      // Lit once, at the provoking vertex (corner 0), whose flat output fills the triangle.
+                      const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
+                      const glm::vec3 colour =
+                          LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
+                      AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), vp, region,
+                                       parts[part]);
                     } else {
                       AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
                                        region, parts[part]);

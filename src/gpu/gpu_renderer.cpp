@@ -1,6 +1,7 @@
 #include "gpu/gpu_renderer.hpp"
 
 #include "gpu/instance_buffers.hpp"
+#include "gpu/light_buffers.hpp"
 #include "gpu/mesh_buffers.hpp"
 #include "gpu/offscreen_target.hpp"
 #include "gpu/pipeline.hpp"
@@ -44,7 +45,7 @@ struct GpuRenderer::Impl {
   Image Render(const DrawList& list, GpuTimings* timings);
   // Returns the number of draw commands recorded.
   std::size_t Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
-                     const gpu::InstanceBuffers& instances);
+                     const gpu::InstanceBuffers& instances, const gpu::LightBuffers* lights);
 
   gpu::Instancing instancing;
   std::uint32_t instances_per_buffer;
@@ -53,6 +54,7 @@ struct GpuRenderer::Impl {
   gpu::Pipeline pipeline;
   vk::raii::DescriptorPool descriptor_pool = nullptr;
   vk::raii::DescriptorSet colour_set = nullptr;  // re-pointed at each Render()'s colour buffer
+  vk::raii::DescriptorSet lit_set = nullptr;     // the same, and the light buffers, for lit draws
   vk::raii::CommandPool command_pool = nullptr;
   vk::raii::CommandBuffer commands = nullptr;    // re-recorded by each Render()
   vk::raii::Fence done = nullptr;                // signalled when the frame has been copied out
@@ -62,23 +64,26 @@ struct GpuRenderer::Impl {
 GpuRenderer::Impl::Impl(const GpuOptions& options)
     : instancing(options.instancing), instances_per_buffer(options.instances_per_buffer), context(options), pipeline(context.device()) {
   const vk::raii::Device& device = context.device();
+  // The unlit set's one storage buffer and the lit set's three.
   const vk::DescriptorPoolSize pool_size{.type = vk::DescriptorType::eStorageBuffer,
-                                         .descriptorCount = 1};
+                                         .descriptorCount = 4};
   descriptor_pool = vk::raii::DescriptorPool(
       device, vk::DescriptorPoolCreateInfo{
                   // vk::raii::DescriptorSet frees itself, which needs this flag.
                   .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                  .maxSets = 1,
+                  .maxSets = 2,
                   .poolSizeCount = 1,
                   .pPoolSizes = &pool_size,
               });
-  const vk::DescriptorSetLayout set_layout = *pipeline.colour_set_layout();
+  const std::array set_layouts = {*pipeline.set_layout(false), *pipeline.set_layout(true)};
   const vk::DescriptorSetAllocateInfo set_info{
       .descriptorPool = *descriptor_pool,
-      .descriptorSetCount = 1,
-      .pSetLayouts = &set_layout,
+      .descriptorSetCount = set_layouts.size(),
+      .pSetLayouts = set_layouts.data(),
   };
-  colour_set = std::move(device.allocateDescriptorSets(set_info).front());
+  std::vector<vk::raii::DescriptorSet> sets = device.allocateDescriptorSets(set_info);
+  colour_set = std::move(sets[0]);
+  lit_set = std::move(sets[1]);
 
   command_pool =
       vk::raii::CommandPool(device, vk::CommandPoolCreateInfo{
@@ -106,24 +111,30 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
   const gpu::DrawPlan plan = gpu::PlanDraws(list, instancing, instances_per_buffer);
   const gpu::InstanceBuffers instances(context, list, plan);  // likewise
+  std::optional<gpu::LightBuffers> lights;                    // likewise
+  if (list.lighting) lights.emplace(context, list);
   if (!target || target->width() != list.width || target->height() != list.height) {
     target.reset();  // free the old images first: at 16384x16384 one target holds 3 GiB
     target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width,
                                                     list.height);
   }
   // Safe to rewrite: the previous frame that read the set has finished (we waited for it).
-  const vk::DescriptorBufferInfo colour_buffer{
-      .buffer = meshes.colours(), .offset = 0, .range = VK_WHOLE_SIZE};
-  context.device().updateDescriptorSets(
-      vk::WriteDescriptorSet{
-          .dstSet = *colour_set,
-          .dstBinding = 0,
-          .descriptorCount = 1,
-          .descriptorType = vk::DescriptorType::eStorageBuffer,
-          .pBufferInfo = &colour_buffer,
-      },
-      nullptr);
-  const std::size_t draw_commands = Record(list, plan, meshes, instances);
+  const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer) {
+    const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = VK_WHOLE_SIZE};
+    context.device().updateDescriptorSets(vk::WriteDescriptorSet{.dstSet = *set,
+                                                                 .dstBinding = binding,
+                                                                 .descriptorCount = 1,
+                                                                 .descriptorType = vk::DescriptorType::eStorageBuffer,
+                                                                 .pBufferInfo = &info},
+                                          nullptr);
+  };
+  point(colour_set, 0, meshes.colours());
+  if (lights) {
+    point(lit_set, 0, meshes.colours());
+    point(lit_set, 1, lights->instances());
+    point(lit_set, 2, lights->lights());
+  }
+  const std::size_t draw_commands = Record(list, plan, meshes, instances, lights ? &*lights : nullptr);
   const double setup_ms = clock.Lap();
 
   // Draw: run the commands and wait for them.
@@ -155,7 +166,8 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
 }
 
 std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan,
-                                      const gpu::MeshBuffers& meshes, const gpu::InstanceBuffers& instances) {
+                                      const gpu::MeshBuffers& meshes, const gpu::InstanceBuffers& instances,
+                                      const gpu::LightBuffers* lights) {
   const vk::raii::CommandBuffer& cmd = commands;
   const vk::Extent2D extent{list.width, list.height};
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
@@ -183,35 +195,55 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                                   .maxDepth = 1.0f});
   cmd.setScissor(0, vk::Rect2D{.offset = {0, 0}, .extent = extent});
   cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
-  cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipeline.layout(), 0, *colour_set,
-                         nullptr);
+  if (lights) cmd.bindVertexBuffers(2, lights->normals(), vk::DeviceSize{0});
   // In list order: the depth test is strict (LESS, or GREATER with reversed Z), so the earlier of
   // two equally deep fragments stays. An instanced draw keeps that order too: its instances are
   // rasterized in instance order.
-  std::optional<gpu::FSource> bound;
+  std::optional<std::pair<Shading, gpu::FSource>> bound;
+  std::optional<bool> bound_lit;  // which layout's descriptor set is bound
   std::optional<std::uint32_t> bound_buffer;
   std::size_t draw_commands = 0;
   for (const gpu::DrawBatch& batch : plan.batches) {
     const gpu::MeshRange& range = meshes.range(batch.mesh);
     if (range.corner_count == 0) continue;  // a mesh without triangles draws nothing
     const gpu::FSource source = batch.instanced ? gpu::FSource::kInstanceAttribute : gpu::FSource::kPushConstant;
-    if (bound != source) {
-      // Both pipelines share one layout, so the push constants and descriptor set stay bound.
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline.pipeline(source, list.reversed_z, list.wireframe));
-      bound = source;
+    const Shading shading = list.meshes[batch.mesh].shading;
+    const bool lit = shading != Shading::kUnlit;
+    const vk::PipelineLayout layout = *pipeline.layout(lit);
+    if (bound != std::pair{shading, source}) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                       *pipeline.pipeline(shading, source, list.reversed_z, list.wireframe));
+      bound = std::pair{shading, source};
+    }
+    if (bound_lit != lit) {
+      // The lit and unlit layouts differ, so switching between them unbinds the set.
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, lit ? *lit_set : *colour_set, nullptr);
+      bound_lit = lit;
     }
     if (batch.instanced) {
       if (bound_buffer != batch.buffer) {
         cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
         bound_buffer = batch.buffer;
       }
+      if (lit) {
+        // gl_InstanceIndex counts from first_instance: the offset makes it the draw's index.
+        const gpu::LitPushConstants push{
+            .F = glm::mat4(1.0f), .draw = static_cast<std::uint32_t>(batch.first_draw - batch.first_instance)};
+        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+      }
       cmd.draw(range.corner_count, batch.count, range.first_corner, batch.first_instance);
       ++draw_commands;
       continue;
     }
     for (std::uint32_t i = 0; i < batch.count; ++i) {
-      const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F};
-      cmd.pushConstants<gpu::PushConstants>(*pipeline.layout(), vk::ShaderStageFlagBits::eVertex, 0, push);
+      const std::size_t d = batch.first_draw + i;
+      if (lit) {
+        const gpu::LitPushConstants push{.F = list.draws[d].F, .draw = static_cast<std::uint32_t>(d)};
+        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+      } else {
+        const gpu::PushConstants push{.F = list.draws[d].F};
+        cmd.pushConstants<gpu::PushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+      }
       cmd.draw(range.corner_count, 1, range.first_corner, 0);
       ++draw_commands;
     }

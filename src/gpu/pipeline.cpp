@@ -1,10 +1,18 @@
 #include "gpu/pipeline.hpp"
 
+#include "shaders/lit_flat.frag.h"
+#include "shaders/lit_flat.vert.h"
+#include "shaders/lit_flat_instanced.vert.h"
+#include "shaders/lit_gouraud.frag.h"
+#include "shaders/lit_gouraud.vert.h"
+#include "shaders/lit_gouraud_instanced.vert.h"
 #include "shaders/triangle.frag.h"
 #include "shaders/triangle.vert.h"
 #include "shaders/triangle_instanced.vert.h"
 
 #include <array>
+#include <stdexcept>
+#include <vector>
 
 namespace twinraster::gpu {
 namespace {
@@ -81,15 +89,41 @@ vk::raii::RenderPass CreateRenderPass(const vk::raii::Device& device) {
                                       });
 }
 
-vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device,
-                                          const std::uint32_t* words, std::size_t bytes) {
+template <std::size_t N>
+vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device, const std::uint32_t (&words)[N]) {
   return vk::raii::ShaderModule(device,
-                                vk::ShaderModuleCreateInfo{.codeSize = bytes, .pCode = words});
+                                vk::ShaderModuleCreateInfo{.codeSize = sizeof words, .pCode = words});
+}
+
+vk::raii::ShaderModule VertexShader(const vk::raii::Device& device, Shading shading, bool instanced) {
+  switch (shading) {
+    case Shading::kFlat:
+      return instanced ? CreateShaderModule(device, lit_flat_instanced_vert_spv) : CreateShaderModule(device, lit_flat_vert_spv);
+    case Shading::kGouraud:
+      return instanced ? CreateShaderModule(device, lit_gouraud_instanced_vert_spv)
+                       : CreateShaderModule(device, lit_gouraud_vert_spv);
+    case Shading::kUnlit:
+      break;
+  }
+  return instanced ? CreateShaderModule(device, triangle_instanced_vert_spv) : CreateShaderModule(device, triangle_vert_spv);
+}
+
+vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading shading) {
+  switch (shading) {
+    case Shading::kFlat:
+      return CreateShaderModule(device, lit_flat_frag_spv);
+    case Shading::kGouraud:
+      return CreateShaderModule(device, lit_gouraud_frag_spv);
+    case Shading::kUnlit:
+      break;
+  }
+  return CreateShaderModule(device, triangle_frag_spv);
 }
 
 }  // namespace
 
 Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
+  for (int i = 0; i < 3 * 2 * 2 * 2; ++i) pipelines_.emplace_back(nullptr);
   render_pass_ = CreateRenderPass(device);
 
   const vk::DescriptorSetLayoutBinding colour_binding{
@@ -101,36 +135,47 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   colour_set_layout_ = vk::raii::DescriptorSetLayout(
       device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = 1, .pBindings = &colour_binding});
 
-  // F, for the vertex shader (read on the per-draw path only).
-  const vk::PushConstantRange push_range{
-      .stageFlags = vk::ShaderStageFlagBits::eVertex,
-      .offset = 0,
-      .size = sizeof(PushConstants),
+  const auto make_layout = [&](vk::DescriptorSetLayout set_layout, std::uint32_t push_bytes) {
+    const vk::PushConstantRange push_range{
+        .stageFlags = vk::ShaderStageFlagBits::eVertex, .offset = 0, .size = push_bytes};
+    return vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo{
+                                                .setLayoutCount = 1,
+                                                .pSetLayouts = &set_layout,
+                                                .pushConstantRangeCount = 1,
+                                                .pPushConstantRanges = &push_range,
+                                            });
   };
-  const vk::DescriptorSetLayout set_layout = *colour_set_layout_;
-  layout_ = vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo{
-                                                 .setLayoutCount = 1,
-                                                 .pSetLayouts = &set_layout,
-                                                 .pushConstantRangeCount = 1,
-                                                 .pPushConstantRanges = &push_range,
-                                             });
+  // F, for the vertex shader (read on the per-draw path only).
+  layout_ = make_layout(*colour_set_layout_, sizeof(PushConstants));
+
+  // The lit shaders read everything in the vertex stage.
+  std::array<vk::DescriptorSetLayoutBinding, 3> lit_bindings{};
+  for (std::uint32_t b = 0; b < lit_bindings.size(); ++b) {
+    lit_bindings[b] = {.binding = b,
+                       .descriptorType = vk::DescriptorType::eStorageBuffer,
+                       .descriptorCount = 1,
+                       .stageFlags = vk::ShaderStageFlagBits::eVertex};
+  }
+  lit_set_layout_ = vk::raii::DescriptorSetLayout(
+      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = lit_bindings.size(), .pBindings = lit_bindings.data()});
+  lit_layout_ = make_layout(*lit_set_layout_, sizeof(LitPushConstants));
 }
 
-const vk::raii::Pipeline& Pipeline::pipeline(FSource source, bool reversed_z, bool wireframe) {
-  vk::raii::Pipeline& slot =
-      pipelines_[source == FSource::kInstanceAttribute ? 1 : 0][reversed_z ? 1 : 0][wireframe ? 1 : 0];
-  if (!*slot) slot = Create(source, reversed_z, wireframe);
+const vk::raii::Pipeline& Pipeline::pipeline(Shading shading, FSource source, bool reversed_z, bool wireframe) {
+  if (shading != Shading::kUnlit && wireframe) throw std::logic_error("wireframe edges are not lit");
+  const std::size_t index = ((static_cast<std::size_t>(shading) * 2 + (source == FSource::kInstanceAttribute ? 1 : 0)) * 2 +
+                             (reversed_z ? 1 : 0)) * 2 + (wireframe ? 1 : 0);
+  vk::raii::Pipeline& slot = pipelines_[index];
+  if (!*slot) slot = Create(shading, source, reversed_z, wireframe);
   return slot;
 }
 
-vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z, bool wireframe) const {
+vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool reversed_z, bool wireframe) const {
   const vk::raii::Device& device = *device_;
   const bool instanced = source == FSource::kInstanceAttribute;
-  const vk::raii::ShaderModule vertex =
-      instanced ? CreateShaderModule(device, triangle_instanced_vert_spv, sizeof(triangle_instanced_vert_spv))
-                : CreateShaderModule(device, triangle_vert_spv, sizeof(triangle_vert_spv));
-  const vk::raii::ShaderModule fragment =
-      CreateShaderModule(device, triangle_frag_spv, sizeof(triangle_frag_spv));
+  const bool lit = shading != Shading::kUnlit;
+  const vk::raii::ShaderModule vertex = VertexShader(device, shading, instanced);
+  const vk::raii::ShaderModule fragment = FragmentShader(device, shading);
   const std::array stages = {
       vk::PipelineShaderStageCreateInfo{
           .stage = vk::ShaderStageFlagBits::eVertex, .module = *vertex, .pName = "main"},
@@ -138,27 +183,31 @@ vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z, bool wirefr
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
 
-  // Binding 0: the vec3 position of a triangle's corner, the only per-vertex attribute. Colours
-  // come per triangle from the storage buffer, found from the corner's number. Binding 1,
-  // instanced only: F, one mat4 per instance, a column per location.
-  const std::array bindings = {
-      vk::VertexInputBindingDescription{
-          .binding = 0, .stride = 3 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex},
-      vk::VertexInputBindingDescription{
-          .binding = 1, .stride = sizeof(glm::mat4), .inputRate = vk::VertexInputRate::eInstance},
-  };
-  std::array<vk::VertexInputAttributeDescription, 5> attributes{};
-  attributes[0] = {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0};
-  for (std::uint32_t column = 0; column < 4; ++column) {
-    attributes[1 + column] = {.location = 1 + column,
-                              .binding = 1,
-                              .format = vk::Format::eR32G32B32A32Sfloat,
-                              .offset = column * static_cast<std::uint32_t>(sizeof(glm::vec4))};
+  // Binding 0: the vec3 position of a triangle's corner. Unlit, it is the only per-vertex
+  // attribute: colours come per triangle from the storage buffer, found from the corner's number.
+  // Binding 1, instanced only: F, one mat4 per instance, a column per location. Binding 2, lit
+  // only: the corner's normal (location 5).
+  std::vector<vk::VertexInputBindingDescription> bindings = {
+      {.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}};
+  std::vector<vk::VertexInputAttributeDescription> attributes = {
+      {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}};
+  if (instanced) {
+    bindings.push_back({.binding = 1, .stride = sizeof(glm::mat4), .inputRate = vk::VertexInputRate::eInstance});
+    for (std::uint32_t column = 0; column < 4; ++column) {
+      attributes.push_back({.location = 1 + column,
+                            .binding = 1,
+                            .format = vk::Format::eR32G32B32A32Sfloat,
+                            .offset = column * static_cast<std::uint32_t>(sizeof(glm::vec4))});
+    }
+  }
+  if (lit) {
+    bindings.push_back({.binding = 2, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex});
+    attributes.push_back({.location = 5, .binding = 2, .format = vk::Format::eR32G32B32Sfloat, .offset = 0});
   }
   const vk::PipelineVertexInputStateCreateInfo vertex_input{
-      .vertexBindingDescriptionCount = instanced ? 2u : 1u,
+      .vertexBindingDescriptionCount = static_cast<std::uint32_t>(bindings.size()),
       .pVertexBindingDescriptions = bindings.data(),
-      .vertexAttributeDescriptionCount = instanced ? 5u : 1u,
+      .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size()),
       .pVertexAttributeDescriptions = attributes.data(),
   };
   const vk::PipelineInputAssemblyStateCreateInfo input_assembly{
@@ -206,7 +255,7 @@ vk::raii::Pipeline Pipeline::Create(FSource source, bool reversed_z, bool wirefr
                                 .pDepthStencilState = &depth_stencil,
                                 .pColorBlendState = &colour_blend,
                                 .pDynamicState = &dynamic,
-                                .layout = *layout_,
+                                .layout = *layout(lit),
                                 .renderPass = *render_pass_,
                                 .subpass = 0,
                             });

@@ -3,11 +3,14 @@
 // pipeline only when a draw list first needs it (lavapipe compiles shaders at pipeline creation).
 #pragma once
 
+#include "scene/scene.hpp"
+
 #include <glm/mat4x4.hpp>
 #include <vulkan/vulkan_raii.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace twinraster::gpu {
 
@@ -21,6 +24,14 @@ struct PushConstants {
 };
 static_assert(sizeof(PushConstants) == 64);
 
+// The lit shaders' push-constant block (triangle.vert with LIT): F, and the number that, added
+// to gl_InstanceIndex, is the draw's index in DrawList::draws (where its LitInstance is).
+struct LitPushConstants {
+  glm::mat4 F;
+  std::uint32_t draw = 0;
+};
+static_assert(sizeof(LitPushConstants) == 68);
+
 // Where the vertex shader reads F: a push constant per draw (one draw per instance, the
 // chapter's Listing 10-5), or a per-instance vertex attribute (one draw for a run of instances).
 enum class FSource { kPushConstant, kInstanceAttribute };
@@ -30,24 +41,27 @@ class Pipeline {
   explicit Pipeline(const vk::raii::Device& device);  // keeps a reference to `device`
 
   const vk::raii::RenderPass& render_pass() const { return render_pass_; }
-  const vk::raii::DescriptorSetLayout& colour_set_layout() const { return colour_set_layout_; }
-  const vk::raii::PipelineLayout& layout() const { return layout_; }
-  // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z). Created
-  // on first use.
-  // on first use. Wireframe: polygonMode LINE, 1 pixel wide (needs the fillModeNonSolid feature).
-  const vk::raii::Pipeline& pipeline(FSource source, bool reversed_z, bool wireframe);
+  // Unlit: binding 0, the triangle colours (fragment stage). Lit: binding 0, the base colours,
+  // 1, the LitInstances, 2, the lights (all vertex stage).
+  const vk::raii::DescriptorSetLayout& set_layout(bool lit) const { return lit ? lit_set_layout_ : colour_set_layout_; }
+  const vk::raii::PipelineLayout& layout(bool lit) const { return lit ? lit_layout_ : layout_; }
+  // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z).
+  // Wireframe: polygonMode LINE, 1 pixel wide (needs the fillModeNonSolid feature), unlit only.
+  // Created on first use.
+  const vk::raii::Pipeline& pipeline(Shading shading, FSource source, bool reversed_z, bool wireframe);
 
  private:
-  vk::raii::Pipeline Create(FSource source, bool reversed_z, bool wireframe) const;
+  vk::raii::Pipeline Create(Shading shading, FSource source, bool reversed_z, bool wireframe) const;
 
   const vk::raii::Device* device_;
   vk::raii::RenderPass render_pass_ = nullptr;
-  vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;  // binding 0: the triangle colours
+  vk::raii::DescriptorSetLayout colour_set_layout_ = nullptr;
   vk::raii::PipelineLayout layout_ = nullptr;
-  // [F source][reversed Z][wireframe]: identical but for the vertex input, the depth compare op
-  // and the polygon mode, which are baked into a Vulkan 1.0 pipeline.
-  vk::raii::Pipeline pipelines_[2][2][2] = {{{nullptr, nullptr}, {nullptr, nullptr}},
-                                            {{nullptr, nullptr}, {nullptr, nullptr}}};
+  vk::raii::DescriptorSetLayout lit_set_layout_ = nullptr;
+  vk::raii::PipelineLayout lit_layout_ = nullptr;
+  // One per (shading, F source, reversed Z, wireframe): identical but for the shaders, the vertex
+  // input, the depth compare op and the polygon mode, which are baked into a Vulkan 1.0 pipeline.
+  std::vector<vk::raii::Pipeline> pipelines_;
 };
 
 }  // namespace twinraster::gpu

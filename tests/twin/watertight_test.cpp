@@ -31,7 +31,10 @@ Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, c
   Coverage c{w, h, std::vector<int>(std::size_t{w} * h), std::vector<int>(std::size_t{w} * h)};
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!count_it(t)) continue;
-    DrawList one{w, h, kBackground, {}, {}};
+    DrawList one;
+    one.width = w;
+    one.height = h;
+    one.background = kBackground;
     DrawMesh single;
     for (std::uint32_t v : mesh.triangles[t]) single.positions.push_back(mesh.positions[v]);
     single.triangles = {{0, 1, 2}};

@@ -1,0 +1,28 @@
+// Stage 1 for a lit mesh: the light at one vertex, computed in float exactly as
+// shaders/triangle.vert (LIT) computes it, and the colour output's conversion to UNORM8.
+//   world = ((M[0]*p.x + M[1]*p.y) + M[2]*p.z) + M[3]          M: LitInstance::model
+//   n     = (N[0]*n.x + N[1]*n.y) + N[2]*n.z, then n / |n|       N: LitInstance::normal
+//   I     = ambient, then for each light in order, where n.l > 0:  I + intensity * (n.l / |l|)
+//   colour = (k / 255) * min(I, 1) per channel, k the base colour's byte
+// with every dot product summed ((x + y) + z) and every operation rounded to float (this library
+// is built without contraction; lavapipe's divide and square root are IEEE).
+#pragma once
+
+#include "chain/draw_list.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+
+namespace twinraster::cpu {
+
+glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance, const glm::vec3& position,
+                      const glm::vec3& normal, Rgb8 base);
+
+// A fragment shader output channel as the UNORM8 colour attachment stores it.
+std::uint8_t UnormByte(float c);
+
+// The lit colour as the RGBA8 word the framebuffer holds (alpha 255), as PackRgba.
+std::uint32_t PackUnorm(const glm::vec3& colour);
+
+}  // namespace twinraster::cpu
