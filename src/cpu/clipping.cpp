@@ -19,10 +19,17 @@ constexpr float kPlanes[kClipPlaneCount][4] = {
 };
 
 // Linear interpolation from `base` toward `other`, per component: base + t * (other - base).
-glm::vec4 Lerp(float t, const glm::vec4& base, const glm::vec4& other) {
-  glm::vec4 r(0.0f);
-  for (int k = 0; k < 4; ++k) r[k] = base[k] + t * (other[k] - base[k]);
+template <int N>
+glm::vec<N, float> Lerp(float t, const glm::vec<N, float>& base, const glm::vec<N, float>& other) {
+  glm::vec<N, float> r(0.0f);
+  for (int k = 0; k < N; ++k) r[k] = base[k] + t * (other[k] - base[k]);
   return r;
+}
+
+// The new vertex at t from `base` toward `other`: position and colour alike.
+void Interpolate(float t, const ClipVertex& base, const ClipVertex& other, ClipVertex& v) {
+  v.clip = Lerp(t, base.clip, other.clip);
+  v.colour = Lerp(t, base.colour, other.colour);
 }
 
 }  // namespace
@@ -51,15 +58,15 @@ ClipVertex IntersectEdge(const ClipVertex& prev, float d_prev, const ClipVertex&
   ClipVertex v;
   if (d_cur < 0.0f) {  // leaving: prev inside, cur outside
     if (-d_cur < d_prev) {
-      v.clip = Lerp(d_cur / denom, cur.clip, prev.clip);  // the outside vertex is nearer
+      Interpolate(d_cur / denom, cur, prev, v);  // the outside vertex is nearer
     } else {
-      v.clip = Lerp(-d_prev / denom, prev.clip, cur.clip);
+      Interpolate(-d_prev / denom, prev, cur, v);
     }
   } else {  // entering: prev outside, cur inside
     if (-d_prev < d_cur) {
-      v.clip = Lerp(-d_prev / denom, prev.clip, cur.clip);  // the outside vertex is nearer
+      Interpolate(-d_prev / denom, prev, cur, v);  // the outside vertex is nearer
     } else {
-      v.clip = Lerp(d_cur / denom, cur.clip, prev.clip);
+      Interpolate(d_cur / denom, cur, prev, v);
     }
   }
   v.window = ViewportTransformClipped(vp, v.clip);

@@ -7,12 +7,14 @@
 //    A plane's distance is the float dot product of the clip position with the plane vector, summed
 //    left to right. A new vertex is interpolated from the edge's endpoint nearer the plane (the
 //    inside one on a tie) toward the other: base + t * (other - base), t = |d_base| / |d_out -
-//    d_in|. Its window position uses the plain (non-fma) viewport formula.
+//    d_in|. Its window position uses the plain (non-fma) viewport formula. A smooth colour output is
+//    interpolated with the same base and t.
 //  - The polygon becomes the fan (p0, p[i-1], p[i]), i = 2 .. n-1.
 #pragma once
 
 #include "cpu/viewport_transform.hpp"
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <array>
@@ -46,6 +48,8 @@ struct ClipVertex {
   // vertex made where an edge leaves the volume starts an edge along the clip plane (false), one
   // made where it comes back in copies the flag of the outside vertex it was cut from.
   bool edge = true;
+  // A smooth (Gouraud) colour output, interpolated like the position; unused by unlit draws.
+  glm::vec3 colour{0.0f};
 };
 
 struct ClippedPolygon {

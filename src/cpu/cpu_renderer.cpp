@@ -11,6 +11,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace twinraster {
@@ -73,6 +74,13 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
               continue;
             }
             rows(t, row_begin, row_end, [&](int py, Span span) {
+              if constexpr (std::is_same_v<std::decay_t<decltype(t)>, TriangleSetup>) {
+                if (t.smooth) {
+                  ShadeSmoothSpan(fb, py, span, t.depth, scratch.colour_planes[p][t.colour]);
+                  tiles.MarkDrawn(py, span);
+                  return;
+                }
+              }
               ShadeSpan(fb, py, span, t.depth, t.colour);
               tiles.MarkDrawn(py, span);
             });

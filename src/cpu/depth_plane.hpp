@@ -17,6 +17,9 @@ struct DepthPlane {
 
 // v0, v1, v2 in the order triangle setup left them (after the winding swap).
 DepthPlane MakeDepthPlane(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2);
+// The same plane through values a0, a1, a2 at the three vertices instead of their z: llvmpipe
+// sets up every linearly interpolated input this way.
+DepthPlane MakePlane(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2, float a0, float a1, float a2);
 
 // Unclamped plane value at pixel (px, py): fmaf(dzdy, py, fmaf(dzdx, px, a0)).
 inline float PlaneDepth(const DepthPlane& p, float px, float py) {

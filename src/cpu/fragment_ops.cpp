@@ -1,5 +1,7 @@
 #include "cpu/fragment_ops.hpp"
 
+#include "cpu/lighting.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -88,6 +90,19 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
   ShadeRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
            static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy,
            fb.compare == DepthCompare::kGreater, colour);
+}
+
+void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {
+  const float y = static_cast<float>(py);
+  for (int px = span.begin; px < span.end; ++px) {
+    const std::size_t i = fb.index(px, py);
+    const float x = static_cast<float>(px);
+    const float z = ClampDepth(PlaneDepth(plane, x, y));
+    if (!DepthTest(fb.compare, z, fb.depth[i])) continue;
+    fb.depth[i] = z;
+    const std::uint32_t word = PackUnorm(ColourAt(colour, x, y));
+    std::memcpy(fb.colour.rgba.data() + 4 * i, &word, 4);
+  }
 }
 
 }  // namespace twinraster::cpu

@@ -29,29 +29,59 @@ ShadedVertex ShadeClipVertex(const glm::vec4& clip, const ViewportState& vp) {
   return s;
 }
 
+namespace {
+
+// Primitive assembly and clipping for one triangle: set_up(a, b, c) for the triangle itself, or
+// for each triangle of its clipped fan, or for none.
+template <class SetUp>
+void AssembleFan(const ClipVertex& a, unsigned a_out, const ClipVertex& b, unsigned b_out, const ClipVertex& c,
+                 unsigned c_out, const ViewportState& vp, SetUp&& set_up) {
+  const unsigned any_outside = a_out | b_out | c_out;
+  if (any_outside == 0) {
+    set_up(a, b, c);
+    return;
+  }
+  if ((a_out & b_out & c_out) != 0) return;  // entirely outside one plane
+
+  ClippedPolygon polygon;
+  ClipTriangle(a, b, c, any_outside, vp, polygon);
+  for (int i = 2; i < polygon.count; ++i) {
+    const auto& p = polygon.v;
+    set_up(p[0], p[static_cast<std::size_t>(i - 1)], p[static_cast<std::size_t>(i)]);
+  }
+}
+
+}  // namespace
+
 void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
                       const ViewportState& vp, const PixelRect& region,
                       std::vector<TriangleSetup>& out) {
-  const unsigned any_outside = v[0]->outcode | v[1]->outcode | v[2]->outcode;
-  const unsigned all_outside = v[0]->outcode & v[1]->outcode & v[2]->outcode;
   // Set up in place: a copy through the stack would cost store-forwarding stalls on every field.
-  const auto set_up = [&](const WindowPos& a, const WindowPos& b, const WindowPos& c) {
-    TriangleSetup& setup = out.emplace_back();
-    setup.colour = colour;
-    if (!SetUpTriangle(a, b, c, region, setup)) out.pop_back();
-  };
-  if (any_outside == 0) {
-    set_up(v[0]->v.window, v[1]->v.window, v[2]->v.window);
-    return;
-  }
-  if (all_outside != 0) return;  // entirely outside one plane
+  AssembleFan(v[0]->v, v[0]->outcode, v[1]->v, v[1]->outcode, v[2]->v, v[2]->outcode, vp,
+              [&](const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
+                TriangleSetup& setup = out.emplace_back();
+                setup.colour = colour;
+                if (!SetUpTriangle(a.window, b.window, c.window, region, setup)) out.pop_back();
+              });
+}
 
-  ClippedPolygon polygon;
-  ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon);
-  for (int i = 2; i < polygon.count; ++i) {
-    const auto& p = polygon.v;
-    set_up(p[0].window, p[static_cast<std::size_t>(i - 1)].window, p[static_cast<std::size_t>(i)].window);
-  }
+void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const std::array<glm::vec3, 3>& colours,
+                            const ViewportState& vp, const PixelRect& region, std::vector<TriangleSetup>& out,
+                            std::vector<ColourPlanes>& planes) {
+  std::array<ClipVertex, 3> corner = {v[0]->v, v[1]->v, v[2]->v};
+  for (std::size_t k = 0; k < 3; ++k) corner[k].colour = colours[k];
+  AssembleFan(corner[0], v[0]->outcode, corner[1], v[1]->outcode, corner[2], v[2]->outcode, vp,
+              [&](const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
+                TriangleSetup& setup = out.emplace_back();
+                if (!SetUpTriangle(a.window, b.window, c.window, region, setup)) {
+                  out.pop_back();
+                  return;
+                }
+                setup.smooth = true;
+                setup.colour = static_cast<std::uint32_t>(planes.size());
+                // In post-swap order, like the depth plane.
+                planes.push_back(setup.swapped ? MakeColourPlanes(a, c, b) : MakeColourPlanes(a, b, c));
+              });
 }
 
 void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
@@ -93,6 +123,7 @@ void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_
 std::size_t GeometryScratch::bytes() const {
   std::size_t total = vertices.capacity() * sizeof(ShadedVertex) + vertex_start.capacity() * sizeof(std::size_t);
   for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
+  for (const auto& part : colour_planes) total += part.capacity() * sizeof(ColourPlanes);
   for (const auto& part : lines) total += part.capacity() * sizeof(LineSetup);
   for (const auto& part : bins)
     for (const auto& bin : part) total += bin.capacity() * sizeof(std::uint32_t);
@@ -201,6 +232,7 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
   TriangleChunks& parts = scratch.triangles;
   LineChunks& line_parts = scratch.lines;
   parts.resize(wireframe ? 0 : triangle_parts);
+  scratch.colour_planes.resize(wireframe ? 0 : triangle_parts);
   line_parts.resize(wireframe ? triangle_parts : 0);
   scratch.bins.resize(triangle_parts);
   for (unsigned part = 0; part < triangle_parts; ++part) {
@@ -214,6 +246,7 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
     } else {
       parts[part].clear();
       parts[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
+      scratch.colour_planes[part].clear();
     }
   }
   // Bins the primitives of one part while they are still in cache (most touch one band).
@@ -246,6 +279,14 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                           LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
                       AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), vp, region,
                                        parts[part]);
+                    } else if (mesh.shading == Shading::kGouraud) {
+                      const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
+                      std::array<glm::vec3, 3> colours;
+                      for (std::size_t k = 0; k < 3; ++k) {
+                        colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], mesh.colours[t]);
+                      }
+                      AssembleSmoothTriangle({base + tri[0], base + tri[1], base + tri[2]}, colours, vp, region,
+                                             parts[part], scratch.colour_planes[part]);
                     } else {
                       AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
                                        region, parts[part]);

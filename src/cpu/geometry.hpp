@@ -6,6 +6,7 @@
 #pragma once
 
 #include "cpu/clipping.hpp"
+#include "cpu/colour_planes.hpp"
 #include "cpu/line_setup.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "cpu/viewport_transform.hpp"
@@ -32,6 +33,12 @@ ShadedVertex ShadeClipVertex(const glm::vec4& clip, const ViewportState& vp);  /
 void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
                       const ViewportState& vp, const PixelRect& region,
                       std::vector<TriangleSetup>& out);
+
+// The same for a Gouraud triangle whose corners have the given colours: each triangle it draws
+// gets its ColourPlanes appended to `planes`, and their index as its colour.
+void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const std::array<glm::vec3, 3>& colours,
+                            const ViewportState& vp, const PixelRect& region, std::vector<TriangleSetup>& out,
+                            std::vector<ColourPlanes>& planes);
 
 // A wireframe triangle: its edges as lavapipe's draw module emits them for polygonMode LINE, each
 // set up as a line and appended. Unclipped: v2→v0, v0→v1, v1→v2, whatever the winding, even at
@@ -67,6 +74,7 @@ struct GeometryScratch {
   std::vector<ShadedVertex> vertices;
   std::vector<std::size_t> vertex_start;  // per draw of the shaded chunk, into `vertices`
   TriangleChunks triangles;               // the result
+  std::vector<std::vector<ColourPlanes>> colour_planes;  // per part: its smooth triangles' planes
   LineChunks lines;                       // the result, for a wireframe draw list
   // bins[p][b]: indices into triangles[p] (lines[p] for a wireframe) of those whose box touches band b (kBandRows
   // rows), in order; binned as they are set up, while still in cache, so that each band's

@@ -56,8 +56,9 @@ struct TriangleSetup {
   std::array<std::int32_t, 3> x{}, y{};  // snapped vertices, in post-swap order
   PixelRect bounds;  // pixels that may be covered, inside the draw region
   DepthPlane depth;  // from the vertices in post-swap order
-  std::uint32_t colour = 0;
+  std::uint32_t colour = 0;  // RGBA8, or for a smooth triangle the index of its ColourPlanes
   bool swapped = false;  // the snapped area was negative, so vertices 1 and 2 were swapped
+  bool smooth = false;   // Gouraud: the colour is interpolated (colour_planes.hpp)
 };
 
 // The three edge functions, edge i running from vertex i to vertex i + 1 mod 3.

@@ -54,7 +54,7 @@ TEST_CASE("Lit spheres, flat and Gouraud: GPU image == CPU image", "[twin][light
 TEST_CASE("Random lit scenes: GPU image == CPU image in every one", "[twin][lighting][random]") {
   test::SharedGpu(gpu::Instancing::kNever);
   test::SharedGpu(gpu::Instancing::kAlways);
-  constexpr std::uint32_t kScenes = 300;
+  constexpr std::uint32_t kScenes = 1000;
   std::uint32_t failures = 0, drawn = 0;
   for (std::uint32_t seed = 1; seed <= kScenes; ++seed) {
     const Scene scene = test::RandomLitScene(seed);
