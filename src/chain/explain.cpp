@@ -1,12 +1,15 @@
 #include "chain/explain.hpp"
 
+#include "chain/light_trace.hpp"
 #include "chain/matrices.hpp"
+#include "chain/normals.hpp"
 #include "base/usage_error.hpp"
 #include "chain/vertex_trace.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <cstdio>
 
@@ -79,14 +82,42 @@ std::string GridText(const InstanceGrid& g) {
 }
 
 // Everything both formats print: the chain, and per selected instance its matrices and traces.
+// A traced vertex's light: which triangle corner's normal it shows (a vertex may have a
+// different normal in each triangle), and the trace.
+struct VertexLight {
+  std::size_t triangle = 0;
+  int corner = 0;
+  LightTrace trace;
+};
+
 struct InstanceExplanation {
   std::size_t index = 0;
   const Model* model = nullptr;
   const Transform* transform = nullptr;
   glm::dmat4 model_matrix{1.0};  // M_Model
   glm::dmat4 f{1.0};             // F = M_Projection · M_Camera · M_Model
+  std::optional<glm::dmat3> normal_matrix;  // lit models only
   std::vector<std::pair<std::size_t, VertexTrace>> vertices;
+  std::vector<std::optional<VertexLight>> lights;  // lights[i] belongs to vertices[i]
 };
+
+bool IsLit(const Scene& scene, const Model& model) {
+  return scene.lighting && !scene.wireframe && model.shading != Shading::kUnlit;
+}
+
+// The first triangle corner that uses vertex v, and that corner's normal.
+std::optional<VertexLight> LightAt(const Scene& scene, const InstanceExplanation& x, std::size_t v,
+                                   const std::vector<std::array<glm::dvec3, 3>>& normals) {
+  for (std::size_t t = 0; t < x.model->triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      if (x.model->triangles[t].v[static_cast<std::size_t>(k)] != v) continue;
+      return VertexLight{t, k,
+                         TraceLight(*scene.lighting, x.model_matrix, *x.normal_matrix, x.model->vertices[v],
+                                    normals[t][static_cast<std::size_t>(k)], x.model->triangles[t].colour)};
+    }
+  }
+  return std::nullopt;
+}
 
 struct Explanation {
   Chain chain;
@@ -96,6 +127,7 @@ struct Explanation {
 Explanation Explain(const Scene& scene, const ExplainOptions& options) {
   const Selection selection = Select(scene, options);
   Explanation e{SceneChain(scene), {}};
+  std::map<const Model*, std::vector<std::array<glm::dvec3, 3>>> normals;  // per lit model, once
   for (std::size_t i : selection.instances) {
     InstanceExplanation x;
     x.index = i;
@@ -103,8 +135,14 @@ Explanation Explain(const Scene& scene, const ExplainOptions& options) {
     x.transform = &scene.instances[i].transform;
     x.model_matrix = ModelMatrix(*x.transform);
     x.f = e.chain.projection * e.chain.camera * x.model_matrix;
+    const bool lit = IsLit(scene, *x.model);
+    if (lit) {
+      x.normal_matrix = NormalMatrix(x.model_matrix);
+      if (!normals.contains(x.model)) normals.emplace(x.model, CornerNormals(*x.model, x.model->shading));
+    }
     for (std::size_t v : selection.Vertices(*x.model)) {
       x.vertices.emplace_back(v, TraceVertex(scene, e.chain, x.model_matrix, x.model->vertices[v]));
+      x.lights.push_back(lit && x.normal_matrix ? LightAt(scene, x, v, normals.at(x.model)) : std::nullopt);
     }
     e.instances.push_back(std::move(x));
   }
@@ -157,6 +195,73 @@ std::string StepName(const TransformStep& step) {
   return "?";
 }
 
+void PrintMatrix3(std::ostream& out, const std::string& name, const glm::dmat3& m) {
+  out << "  " << name << " =\n";
+  for (int r = 0; r < 3; ++r) {
+    out << "    [";
+    for (int c = 0; c < 3; ++c) {
+      char cell[32];
+      std::snprintf(cell, sizeof cell, " %12s", Num(m[c][r]).c_str());
+      out << cell;
+    }
+    out << " ]\n";
+  }
+}
+
+nlohmann::ordered_json Rows3(const glm::dmat3& m) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({m[0][r], m[1][r], m[2][r]});
+  return rows;
+}
+
+const char* ShadingName(Shading shading) {
+  switch (shading) {
+    case Shading::kFlat: return "flat";
+    case Shading::kGouraud: return "gouraud";
+    case Shading::kUnlit: break;
+  }
+  return "unlit";
+}
+
+void PrintLightTrace(std::ostream& out, const Scene& scene, const Model& model, const VertexLight& v) {
+  const LightTrace& t = v.trace;
+  out << "    normal       " << Tuple(t.object_normal) << "   as corner " << v.corner << " of triangle " << v.triangle
+      << " uses it" << (model.shading == Shading::kFlat ? " (flat: the face normal; the triangle is lit at corner 0 only)" : "")
+      << "\n"
+      << "    world normal " << Tuple(t.world_normal) << "   = N · normal\n"
+      << "    unit normal  " << Tuple(t.unit_normal) << "   renormalised (M_Model · normal would point along "
+      << Tuple(t.wrong_normal) << ")\n"
+      << "    light        I = ambient " << Num(t.ambient);
+  for (std::size_t i = 0; i < t.terms.size(); ++i) {
+    const LightTerm& term = t.terms[i];
+    const bool point = scene.lighting->lights[i].kind == Light::Kind::kPoint;
+    out << "\n                 + light " << i << " (" << (point ? "point" : "directional") << "): l = "
+        << Tuple(term.l) << ", n·l = " << Num(term.n_dot_l) << (term.n_dot_l > 0 ? "" : " (faces away: 0)")
+        << ", term " << Num(term.contribution);
+  }
+  const Rgb8 base = model.triangles[v.triangle].colour;
+  out << "\n                 = " << Num(t.intensity) << "; colour = base (" << int{base.r} << ", " << int{base.g} << ", "
+      << int{base.b} << ") / 255 · min(I, 1) = " << Tuple(t.colour) << "\n";
+}
+
+nlohmann::ordered_json LightJson(const VertexLight& v) {
+  const LightTrace& t = v.trace;
+  nlohmann::ordered_json terms = nlohmann::ordered_json::array();
+  for (const LightTerm& term : t.terms) {
+    terms.push_back({{"l", Array(term.l)}, {"n_dot_l", term.n_dot_l}, {"contribution", term.contribution}});
+  }
+  return {{"triangle", v.triangle},
+          {"corner", v.corner},
+          {"normal", Array(t.object_normal)},
+          {"world_normal", Array(t.world_normal)},
+          {"unit_normal", Array(t.unit_normal)},
+          {"normal_by_model_matrix", Array(t.wrong_normal)},
+          {"ambient", t.ambient},
+          {"terms", terms},
+          {"intensity", t.intensity},
+          {"colour", Array(t.colour)}};
+}
+
 void PrintMatrix(std::ostream& out, const std::string& name, const glm::dmat4& m) {
   out << "  " << name << " =\n";
   for (int r = 0; r < 4; ++r) {
@@ -201,6 +306,21 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   PrintMatrix(out, "C_T⁻¹", Translation(-scene.camera.position));
   PrintMatrix(out, "M_Camera", chain.camera);
 
+  if (scene.lighting && !scene.wireframe) {
+    const Lighting& lighting = *scene.lighting;
+    out << "\nLighting (Computer Graphics from Scratch's diffuse model, in world space):\n"
+        << "  I = ambient + sum of intensity · max(0, n·l) / (|n| |l|), l toward the light; colour = base · min(I, 1)\n"
+        << "  ambient " << Num(lighting.ambient) << "\n";
+    for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
+      const Light& light = lighting.lights[i];
+      out << "  light " << i << ": "
+          << (light.kind == Light::Kind::kPoint ? "point at " : "directional, l = ") << Tuple(light.vector)
+          << ", intensity " << Num(light.intensity) << "\n";
+    }
+  } else if (scene.lighting) {
+    out << "\nLighting: not used (a wireframe draws edges in the models' own colours)\n";
+  }
+
   out << "\nInstances: " << scene.instances.size() << " in all";
   for (const InstanceGrid& g : scene.grids) {
     out << "\n  instances[" << g.written << "] of the file is a " << GridText(g) << ": " << g.copies()
@@ -242,8 +362,13 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
       PrintMatrix(out, "M_Model", x.model_matrix);
     }
     PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", x.f);
+    if (IsLit(scene, *x.model)) {
+      out << "  lit, " << ShadingName(x.model->shading) << " shading\n";
+      if (x.normal_matrix) PrintMatrix3(out, "N = (upper 3x3 of M_Model)⁻ᵀ, the normal matrix", *x.normal_matrix);
+    }
 
-    for (const auto& [v, tr] : x.vertices) {
+    for (std::size_t i = 0; i < x.vertices.size(); ++i) {
+      const auto& [v, tr] = x.vertices[i];
       out << "  vertex " << v << (tr.inside ? "" : "  (outside the clip volume: clipped when drawn)") << "\n"
           << "    object       " << Tuple(tr.object) << "\n"
           << "    world        " << Tuple(tr.world) << "   = M_Model · V\n"
@@ -253,6 +378,7 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
           << "    canvas       " << Tuple(tr.canvas) << "   = " << canvas_formula << ", +y up\n"
           << "    framebuffer  " << Tuple(glm::dvec2(tr.framebuffer)) << " depth " << Num(tr.framebuffer.z)
           << "   Vulkan: +y down, pixel (i, j) has its centre at (i + 0.5, j + 0.5)\n";
+      if (x.lights[i]) PrintLightTrace(out, scene, *x.model, *x.lights[i]);
     }
   }
   return out.str();
@@ -276,6 +402,17 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
   out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
   out["projection_matrix"] = Rows(chain.projection);
   out["camera_matrix"] = Rows(chain.camera);
+  out["lighting"] = nlohmann::ordered_json(nullptr);
+  if (scene.lighting && !scene.wireframe) {
+    nlohmann::ordered_json lights = nlohmann::ordered_json::array();
+    for (const Light& light : scene.lighting->lights) {
+      const bool point = light.kind == Light::Kind::kPoint;
+      lights.push_back({{"type", point ? "point" : "directional"},
+                        {point ? "position" : "direction", Array(light.vector)},
+                        {"intensity", light.intensity}});
+    }
+    out["lighting"] = {{"ambient", scene.lighting->ambient}, {"lights", lights}};
+  }
   out["instance_count"] = scene.instances.size();
   out["grids"] = nlohmann::ordered_json::array();
   for (const InstanceGrid& g : scene.grids) {
@@ -303,8 +440,11 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
     }
     entry["model_matrix"] = Rows(x.model_matrix);
     entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
+    entry["shading"] = IsLit(scene, *x.model) ? ShadingName(x.model->shading) : "unlit";
+    entry["normal_matrix"] = x.normal_matrix ? Rows3(*x.normal_matrix) : nlohmann::ordered_json(nullptr);
     entry["vertices"] = nlohmann::ordered_json::array();
-    for (const auto& [v, tr] : x.vertices) {
+    for (std::size_t i = 0; i < x.vertices.size(); ++i) {
+      const auto& [v, tr] = x.vertices[i];
       entry["vertices"].push_back({{"index", v},
                                    {"object", Array(tr.object)},
                                    {"world", Array(tr.world)},
@@ -313,7 +453,8 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
                                    {"ndc", Array(tr.ndc)},
                                    {"canvas", Array(tr.canvas)},
                                    {"framebuffer", Array(tr.framebuffer)},
-                                   {"inside_clip_volume", tr.inside}});
+                                   {"inside_clip_volume", tr.inside},
+                                   {"light", x.lights[i] ? LightJson(*x.lights[i]) : nlohmann::ordered_json(nullptr)}});
     }
     out["instances"].push_back(std::move(entry));
   }

@@ -123,7 +123,9 @@ TEST_CASE("Empty lists and meshes without triangles draw only the clear", "[gpu]
     list.draws.clear();
   }
   SECTION("a mesh without triangles, drawn twice") {
-    list.meshes = {DrawMesh{}, DrawMesh{{glm::vec3(0, 0, 0)}, {}, {}}};
+    DrawMesh one_vertex;
+    one_vertex.positions = {glm::vec3(0, 0, 0)};
+    list.meshes = {DrawMesh{}, one_vertex};
     list.draws = {DrawCall{0, glm::mat4(1.0f)}, DrawCall{1, glm::mat4(1.0f)}};
   }
   CHECK(AllPixels(gpu.Render(list), kBackground));

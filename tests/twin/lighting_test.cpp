@@ -1,12 +1,21 @@
 // Lit scenes on both backends: the twin lights each vertex with the vertex shader's float
 // operations and interpolates Gouraud colours as lavapipe does, so the images are identical.
 #include "chain/draw_list.hpp"
+#include "chain/light_trace.hpp"
+#include "chain/matrices.hpp"
+#include "chain/normals.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/image_counts.hpp"
+#include "support/test_support.hpp"
 #include "lit_scene.hpp"
 #include "twin_support.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
 #include <set>
 
 using namespace twinraster;
@@ -69,4 +78,89 @@ TEST_CASE("Random lit scenes: GPU image == CPU image in every one", "[twin][ligh
   INFO(drawn << " of " << kScenes << " scenes drew something");
   REQUIRE(drawn >= kScenes * 7 / 10);
   test::RequireNoValidationMessages();
+}
+
+namespace {
+
+// docs/normals.md's example: a square in the plane z = x, facing the camera, stretched 2x along x
+// (so its plane becomes z = x/2), lit by a headlight l = (0, 0, -1). The true normal is
+// (1, 0, -2)/√5 and gives I = 2/√5 = 0.894; M_Model itself would tilt it to (2, 0, -1)/√5, I = 0.447.
+Scene StretchedSquare() {
+  Scene scene;
+  scene.canvas = Canvas{.width = 64, .height = 64, .background = Rgb8{0, 0, 0}};
+  Model square;
+  square.name = "square";
+  square.vertices = {glm::dvec3(-1, -1, -1), glm::dvec3(1, -1, 1), glm::dvec3(1, 1, 1), glm::dvec3(-1, 1, -1)};
+  square.triangles = {Triangle{{0, 2, 1}, Rgb8{255, 255, 255}}, Triangle{{0, 3, 2}, Rgb8{255, 255, 255}}};
+  square.shading = Shading::kFlat;
+  scene.models.push_back(square);
+  Instance instance;
+  instance.transform.scale = glm::dvec3(2, 1, 1);
+  instance.transform.translation = glm::dvec3(0, 0, 6);
+  scene.instances.push_back(instance);
+  scene.lighting = Lighting{.ambient = 0, .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {0, 0, -1}, .intensity = 1}}};
+  return scene;
+}
+
+std::uint8_t RedAt(const Image& image, std::uint32_t x, std::uint32_t y) { return image.rgba[4 * (std::size_t{y} * image.width + x)]; }
+
+}  // namespace
+
+TEST_CASE("The normal matrix lights a stretched surface right where M_Model itself is visibly wrong", "[twin][lighting][normals]") {
+  const Scene scene = StretchedSquare();
+  DrawList right = BuildDrawList(scene);
+  REQUIRE(right.lighting.has_value());
+  // The wrong way: normals through M_Model's own upper 3x3.
+  DrawList wrong = right;
+  wrong.lighting->instances[0].normal = glm::mat3(glm::dmat3(ModelMatrix(scene.instances[0].transform)));
+
+  const test::TwinResult r = test::RenderTwins(right);
+  INFO(r.Describe());
+  REQUIRE(r.Equal());
+  const Image wrong_image = RenderOnCpu(wrong, CpuOptions{1});
+  // The centre pixel: 255 · 2/√5 = 228.1 with the inverse transpose, 255 · 1/√5 = 114.0 with M.
+  CHECK(int{RedAt(r.cpu, 32, 32)} == 228);
+  CHECK(int{RedAt(wrong_image, 32, 32)} == 114);
+
+  // explain's trace says the same, in double.
+  const LightTrace trace = TraceLight(*scene.lighting, ModelMatrix(scene.instances[0].transform),
+                                      *NormalMatrix(ModelMatrix(scene.instances[0].transform)),
+                                      scene.models[0].vertices[0], glm::normalize(glm::dvec3(1, 0, -1)), Rgb8{255, 255, 255});
+  CHECK(trace.intensity == Approx(2 / std::sqrt(5.0)).margin(1e-12));
+  CHECK(trace.wrong_normal.x == Approx(2 / std::sqrt(5.0)).margin(1e-12));
+  CHECK(trace.unit_normal.x == Approx(1 / std::sqrt(5.0)).margin(1e-12));
+}
+
+TEST_CASE("The normal matrix: inverse transpose of M_Model's upper 3x3", "[chain][lighting][normals]") {
+  const auto n = [](const Transform& t) { return NormalMatrix(ModelMatrix(t)); };
+  Transform stretch;
+  stretch.scale = glm::dvec3(2, 4, 0.5);
+  stretch.translation = glm::dvec3(7, 8, 9);  // translation plays no part
+  REQUIRE(n(stretch).has_value());
+  CHECK(*n(stretch) == glm::dmat3(glm::dvec3(0.5, 0, 0), glm::dvec3(0, 0.25, 0), glm::dvec3(0, 0, 2)));
+  Transform turn;
+  turn.rotation = Rotation(glm::dvec3(0, 1, 0), 30);
+  const glm::dmat3 r = *n(turn);  // a rotation is its own inverse transpose
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) CHECK(r[c][k] == Approx(turn.rotation[c][k]).margin(1e-15));
+  Transform mirror;
+  mirror.scale = glm::dvec3(-1, 1, 1);
+  CHECK(*n(mirror) == glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)));
+  Transform flat;
+  flat.scale = glm::dvec3(1, 0, 1);
+  CHECK_FALSE(n(flat).has_value());
+}
+
+TEST_CASE("Scenes without lighting build exactly the draw list they did before", "[chain][lighting]") {
+  for (const auto& file : test::ShippedScenes()) {
+    const Scene scene = LoadScene(file);
+    if (scene.lighting) continue;
+    const DrawList list = BuildDrawList(scene);
+    INFO(file.string());
+    CHECK_FALSE(list.lighting.has_value());
+    for (const DrawMesh& mesh : list.meshes) {
+      CHECK(mesh.shading == Shading::kUnlit);
+      CHECK(mesh.normals.empty());
+    }
+  }
 }
