@@ -1,6 +1,7 @@
 // Scenes with OBJ models and lighting: paths relative to the scene, colours and materials, the
-// shading rules, every new error.
+// shading rules, every new error; and an OBJ file on its own framed by SceneForObj.
 #include "scene/obj_file.hpp"
+#include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 
@@ -8,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec2.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -357,5 +360,89 @@ TEST_CASE("Scenes without lighting load as before: no lighting, every model unli
       REQUIRE(m.triangle_normals.empty());
       REQUIRE(m.source.empty());
     }
+  }
+}
+
+TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, front on, lit by a headlight", "[scene][obj]") {
+  const test::TempDir dir;
+  // A box from (2, -1, 5) to (4, 3, 6), off the origin and longer in y; a stray vertex far away
+  // that no face names must not move the camera.
+  std::string obj = "v 2 -1 5\nv 4 -1 5\nv 4 3 5\nv 2 3 5\nv 2 -1 6\nv 4 -1 6\nv 4 3 6\nv 2 3 6\nv 1000 1000 1000\n";
+  obj += "f 1 2 3 4\nf 5 6 7 8\nf 1 2 6 5\nf 4 3 7 8\nf 1 4 8 5\nf 2 3 7 6\n";
+  test::WriteFile(dir / "Box.OBJ", obj);
+  const Scene scene = LoadSceneOrObj(dir / "Box.OBJ");  // the extension in any case
+  REQUIRE(scene.name == "Box");
+  REQUIRE(scene.canvas.width == 800);
+  REQUIRE(scene.canvas.height == 800);
+  REQUIRE(scene.models.size() == 1);
+  REQUIRE(scene.models[0].shading == Shading::kFlat);  // no vn
+  REQUIRE(scene.models[0].source == (dir / "Box.OBJ").string());
+  REQUIRE(scene.instances.size() == 1);
+  REQUIRE(scene.lighting);
+  REQUIRE(scene.lighting->ambient == 0.1);
+  REQUIRE(scene.lighting->lights.size() == 1);
+  REQUIRE(scene.lighting->lights[0].kind == Light::Kind::kDirectional);
+  REQUIRE(scene.lighting->lights[0].intensity == 0.9);
+
+  // Model space to canvas pixels, by the chapter's chain done by hand.
+  const Transform& transform = scene.instances[0].transform;
+  const auto world = [&](glm::dvec3 p) { return transform.rotation * (p * transform.scale) + transform.translation; };
+  const auto camera = [&](glm::dvec3 p) { return glm::transpose(scene.camera.rotation) * (world(p) - scene.camera.position); };
+  const auto pixel = [&](glm::dvec3 p) {
+    const glm::dvec3 c = camera(p);
+    return glm::dvec2(scene.canvas.width / 2.0 + c.x * scene.viewport.distance / c.z * scene.canvas.width / scene.viewport.width,
+                      scene.canvas.height / 2.0 - c.y * scene.viewport.distance / c.z * scene.canvas.height / scene.viewport.height);
+  };
+  double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9;
+  for (const double x : {2.0, 4.0}) {
+    for (const double y : {-1.0, 3.0}) {
+      for (const double z : {5.0, 6.0}) {
+        const glm::dvec3 corner(x, y, z);
+        const double depth = camera(corner).z;
+        REQUIRE(depth > scene.depth.near);
+        REQUIRE(depth < scene.depth.far);
+        const glm::dvec2 p = pixel(corner);
+        left = std::min(left, p.x), right = std::max(right, p.x), top = std::min(top, p.y), bottom = std::max(bottom, p.y);
+      }
+    }
+  }
+  // Inside the canvas with a margin, and large in it (framed, not a speck in the distance).
+  REQUIRE(left > 40);
+  REQUIRE(top > 40);
+  REQUIRE(right < 760);
+  REQUIRE(bottom < 760);
+  REQUIRE(bottom - top > 400);
+  // Centred on the box's centre.
+  const glm::dvec2 centre = pixel({3, 1, 5.5});
+  REQUIRE(std::abs(centre.x - 400) < 1e-9);
+  REQUIRE(std::abs(centre.y - 400) < 1e-9);
+  // tinyrenderer's view of a right-handed OBJ: +X to the right, +Y up, and the +Z face (the
+  // model's front) nearer the camera than the -Z face.
+  REQUIRE(pixel({4, 1, 5.5}).x > pixel({2, 1, 5.5}).x);
+  REQUIRE(pixel({3, 3, 5.5}).y < pixel({3, -1, 5.5}).y);
+  REQUIRE(camera({3, 1, 6}).z < camera({3, 1, 5}).z);
+  // The camera is up, right and in front of the model, as tinyrenderer's eye (1, 1, 3).
+  const glm::dvec3 eye_in_model = scene.camera.position / transform.scale;
+  const glm::dvec3 from_centre = glm::normalize(eye_in_model - glm::dvec3(3, 1, 5.5));
+  REQUIRE(glm::length(from_centre - glm::normalize(glm::dvec3(1, 1, 3))) < 1e-12);
+  // The headlight shines from the camera: l, toward the light, points at the eye.
+  REQUIRE(glm::length(glm::normalize(scene.lighting->lights[0].vector) - glm::normalize(scene.camera.position - world({3, 1, 5.5}))) < 1e-12);
+}
+
+TEST_CASE("SceneForObj: Gouraud shading when the OBJ has normals, and LoadSceneOrObj loads other files as scenes", "[scene][obj]") {
+  const test::TempDir dir;
+  test::WriteFile(dir / "quad.obj", kQuadWithNormalsObj);
+  const Scene scene = SceneForObj(dir / "quad.obj");
+  REQUIRE(scene.models[0].shading == Shading::kGouraud);
+  REQUIRE(scene.models[0].triangle_normals.size() == 2);
+  const Scene json = LoadSceneOrObj(test::SourcePath("scenes/cgfs-scene.json"));
+  REQUIRE(json.name == "cgfs-scene");
+  REQUIRE(!json.lighting);
+  try {
+    (void)LoadSceneOrObj(dir / "none.obj");
+    FAIL("no error");
+  } catch (const SceneError& e) {
+    REQUIRE(e.file() == (dir / "none.obj").string());
+    REQUIRE(e.problem() == "no such file");
   }
 }
