@@ -25,6 +25,15 @@ void CheckScene(const twinraster::Scene& scene) {
     for (const twinraster::Triangle& triangle : model.triangles) {
       for (const std::uint32_t v : triangle.v) Check(v < model.vertices.size());
     }
+    Check(model.triangle_normals.empty() || model.triangle_normals.size() == model.triangles.size());
+    for (const auto& corners : model.triangle_normals) {
+      for (const std::uint32_t n : corners) Check(n == twinraster::kNoNormal || n < model.normals.size());
+    }
+    Check(scene.lighting || model.shading == twinraster::Shading::kUnlit);
+  }
+  if (scene.lighting) {
+    Check(scene.lighting->ambient >= 0);
+    for (const twinraster::Light& light : scene.lighting->lights) Check(light.intensity >= 0);
   }
   Check(scene.instances.size() <= twinraster::kMaxInstances);
   for (const twinraster::Instance& instance : scene.instances) Check(instance.model < scene.models.size());

@@ -17,6 +17,7 @@ packages=(
   catch2                         # unit tests (Catch2 v2 on Debian 12)
   nlohmann-json3-dev             # scene files: the locating parser behind every error message
   libsimdjson-dev                # scene files: the fast parser
+  libtinyobjloader-dev           # OBJ meshes a scene names (or render mesh.obj)
   libcli11-dev                   # the command line
   clang libclang-rt-14-dev       # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
   llvm                           # llvm-symbolizer: file:line in sanitizer and fuzzer reports

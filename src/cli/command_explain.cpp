@@ -39,7 +39,11 @@ CommandRun AddExplainCommand(CLI::App& app) {
       app, "explain", "print a scene's matrices and trace its vertices to the screen",
       "The matrices are row-major with column vectors on the right, as the chapter writes them.\n"
       "Exit codes: 0 done, 2 bad input or usage, 4 internal error.");
-  command->add_option("SCENE", a->scene, "the scene file (JSON), or - to read it from standard input")->required();
+  command
+      ->add_option("SCENE", a->scene,
+                   "the scene file (JSON) or an OBJ mesh (.obj, in the scene render gives it),\n"
+                   "or - to read the scene from standard input")
+      ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
   ExpectIndex(command->add_option("--vertex", a->vertex, "only vertex V of each instance (counted from 0)")->type_name("V"));
   command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/1, docs/json-output.md)");

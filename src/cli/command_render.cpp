@@ -318,7 +318,11 @@ CommandRun AddRenderCommand(CLI::App& app) {
       "earlier files untouched. On a terminal, progress shows on standard error.\n"
       "Exit codes: 0 done (both: identical images), 1 the images differ, 2 bad input or usage,\n"
       "3 no usable Vulkan device (--backend cpu needs none), 4 internal error.");
-  command->add_option("SCENE", a->scenes, "scene files (JSON), or - to read one from standard input")->required();
+  command
+      ->add_option("SCENE", a->scenes,
+                   "scene files (JSON) or OBJ meshes (.obj: framed, lit by a headlight), or - to\n"
+                   "read one scene from standard input")
+      ->required();
   command
       ->add_option("-o,--output", a->output,
                    "gpu, cpu: write OUT.png; both: OUT-gpu.png, OUT-cpu.png and, when\n"

@@ -2,6 +2,7 @@
 
 #include "base/usage_error.hpp"
 #include "image/staged_file.hpp"
+#include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 
 #include <unistd.h>
@@ -23,7 +24,7 @@ constexpr const char* kStdinName = "<stdin>";
 bool IsStandardStream(std::string_view argument) { return argument == "-"; }
 
 Scene LoadSceneArgument(const std::string& argument) {
-  if (!IsStandardStream(argument)) return LoadScene(argument);
+  if (!IsStandardStream(argument)) return LoadSceneOrObj(argument);
   std::string text;
   char buffer[1 << 16];
   for (;;) {

@@ -1,5 +1,6 @@
-// Files and streams named on the command line: SCENE is a file or - (standard input); an output
-// PNG is a .png file (written whole, then renamed into place) or - (standard output).
+// Files and streams named on the command line: SCENE is a scene file, an OBJ file (framed by a
+// default scene) or - (a scene on standard input); an output PNG is a .png file (written whole,
+// then renamed into place) or - (standard output).
 #pragma once
 
 #include "scene/scene.hpp"
@@ -12,7 +13,9 @@ namespace twinraster {
 // "-" as SCENE or as an output: the standard stream, as in most command-line tools.
 bool IsStandardStream(std::string_view argument);
 
-// Reads the scene file, or standard input for "-" (named <stdin> in errors); throws SceneError.
+// Reads the scene file, the OBJ file (a name ending in .obj, in any case: SceneForObj), or a scene
+// on standard input for "-" (named <stdin> in errors, its OBJ paths relative to the current
+// directory); throws SceneError.
 Scene LoadSceneArgument(const std::string& argument);
 
 // Throws UsageError unless `name` ends in .png (in any case): "<option> <name>: ...".

@@ -69,7 +69,8 @@ struct Model {
   std::vector<glm::dvec3> vertices;
   std::vector<Triangle> triangles;
   // An OBJ's vn, and which of them each triangle corner names (kNoNormal where none); both empty
-  // for a model written as JSON vertices. The chain computes the normals a lit model lacks.
+  // for a model written as JSON vertices, and triangle_normals also when no corner names a vn.
+  // The chain computes the normals a lit model lacks.
   std::vector<glm::dvec3> normals;
   std::vector<std::array<std::uint32_t, 3>> triangle_normals;
   Shading shading = Shading::kUnlit;

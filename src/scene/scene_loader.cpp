@@ -2,6 +2,8 @@
 
 #include "scene/json_document.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/lighting_reader.hpp"
+#include "scene/model_reader.hpp"
 #include "scene/rotation.hpp"
 
 #include <simdjson.h>
@@ -20,35 +22,6 @@
 namespace twinraster {
 
 namespace {
-
-
-const std::map<std::string, Rgb8, std::less<>>& NamedColours() {
-  // The chapter's six cube colours, plus the neutral ones a scene's background needs.
-  static const std::map<std::string, Rgb8, std::less<>> colours = {
-      {"red", {255, 0, 0}},       {"green", {0, 255, 0}},   {"blue", {0, 0, 255}},
-      {"yellow", {255, 255, 0}},  {"purple", {255, 0, 255}}, {"cyan", {0, 255, 255}},
-      {"white", {255, 255, 255}}, {"black", {0, 0, 0}},     {"gray", {128, 128, 128}},
-  };
-  return colours;
-}
-
-Rgb8 ReadColour(const JsonReader& r) {
-  if (r.IsString()) {
-    const std::string name = r.String();
-    const auto it = NamedColours().find(name);
-    if (it != NamedColours().end()) return it->second;
-    std::vector<std::string> names;
-    for (const auto& entry : NamedColours()) names.push_back(entry.first);
-    const std::string suggestion = ClosestMatch(name, names);
-    r.Fail("unknown colour \"" + name + "\"" +
-           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
-           "; use a name or [r, g, b] with 0..255");
-  }
-  if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + r.TypeName());
-  r.ExpectArray(3);
-  const auto channel = [&](std::size_t i) { return static_cast<std::uint8_t>(r[i].Integer(0, 255)); };
-  return Rgb8{channel(0), channel(1), channel(2)};
-}
 
 glm::dvec3 ReadAxis(const JsonReader& r) {
   if (r.IsString()) {
@@ -173,38 +146,27 @@ Camera ReadCamera(const JsonReader& r) {
   return CameraLookingAt(eye, center, up);
 }
 
-Model ReadModel(const JsonReader& r, const std::string& name) {
-  r.ExpectObject({"vertices", "triangles"});
-  Model model;
-  model.name = name;
-  const JsonReader vertices = r.Required("vertices");
-  const std::size_t vertex_count = vertices.ExpectArray();
-  model.vertices.reserve(vertex_count);
-  vertices.ForEachElement([&](const JsonReader& v) { model.vertices.push_back(v.Vec3()); });
-
-  const JsonReader triangles = r.Required("triangles");
-  model.triangles.reserve(triangles.ExpectArray());
-  triangles.ForEachElement([&](const JsonReader& t) {
-    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + t.TypeName());
-    t.ExpectArray(4);
-    Triangle triangle;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const JsonReader index = t[k];
-      if (vertex_count == 0) index.Fail("the model has no vertices");
-      triangle.v[k] = static_cast<std::uint32_t>(index.Integer(0, static_cast<std::int64_t>(vertex_count) - 1));
-    }
-    triangle.colour = ReadColour(t[3]);
-    model.triangles.push_back(triangle);
-  });
-  return model;
-}
-
 // Model names to indices, looked up once per instance.
 using ModelIndex = std::map<std::string, std::size_t, std::less<>>;
 
+// A lit model's normals go to world space by the normal matrix, the inverse transpose of M_Model's
+// upper 3x3, which exists unless some scale factor is 0 (rotations and translations never make
+// M_Model singular). `scale` is where the factors were written.
+void ExpectNonZeroScale(const JsonReader& scale, const glm::dvec3& factors, const Model& model) {
+  for (glm::length_t k = 0; k < 3; ++k) {
+    if (factors[k] != 0) continue;
+    const std::string problem = "a lit model (\"" + model.name + "\", " + ShadingName(model.shading) +
+                                " shading) cannot be scaled by 0: the normal matrix, the inverse transpose of M_Model, "
+                                "does not exist for a zero scale (use a non-zero scale, or \"shading\": \"unlit\")";
+    if (scale.IsArray()) scale[static_cast<std::size_t>(k)].Fail(problem);
+    scale.Fail(problem);
+  }
+}
+
 // "transform": [{"rotation": ...}, {"translation": [...]}, {"scale": ...}]: steps applied in the
-// order written, each an object with exactly one of the three keys.
-std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonReader& list) {
+// order written, each an object with exactly one of the three keys. `lit_model`: the instance's
+// model if it is lit, whose scales must not be 0.
+std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonReader& list, const Model* lit_model) {
   auto steps = std::make_shared<std::vector<TransformStep>>();
   list.ForEachElement([&](const JsonReader& r) {
     r.ExpectObject({"scale", "rotation", "translation"});
@@ -217,6 +179,7 @@ std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonR
     if (auto scale = r.Find("scale")) {
       step.kind = TransformStep::Kind::kScale;
       step.vector = ReadScale(*scale);
+      if (lit_model) ExpectNonZeroScale(*scale, step.vector, *lit_model);
     } else if (auto rotation = r.Find("rotation")) {
       step.kind = TransformStep::Kind::kRotation;
       step.rotation = ReadRotation(*rotation);
@@ -229,7 +192,8 @@ std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonR
   return steps;
 }
 
-Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, const ModelIndex& index) {
+// `lit_scene`: the scene has "lighting".
+Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, const ModelIndex& index, bool lit_scene) {
   r.ExpectObject({"model", "transform", "grid"});
   Instance instance;
   const JsonReader model = r.Required("model");
@@ -243,9 +207,10 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
                (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
   }
   instance.model = found->second;
+  const Model* lit_model = lit_scene && models[instance.model].shading != Shading::kUnlit ? &models[instance.model] : nullptr;
   if (auto transform = r.Find("transform")) {
     if (transform->IsArray()) {
-      instance.transform.steps = ReadTransformSteps(*transform);
+      instance.transform.steps = ReadTransformSteps(*transform, lit_model);
       return instance;
     }
     if (!transform->IsObject()) {
@@ -253,7 +218,10 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
                       transform->TypeName());
     }
     transform->ExpectObject({"scale", "rotation", "translation"});
-    if (auto scale = transform->Find("scale")) instance.transform.scale = ReadScale(*scale);
+    if (auto scale = transform->Find("scale")) {
+      instance.transform.scale = ReadScale(*scale);
+      if (lit_model) ExpectNonZeroScale(*scale, instance.transform.scale, *lit_model);
+    }
     if (auto rotation = transform->Find("rotation")) instance.transform.rotation = ReadRotation(*rotation);
     if (auto translation = transform->Find("translation")) instance.transform.translation = translation->Vec3();
   }
@@ -336,7 +304,8 @@ bool NeedsLocatingParser(simdjson::dom::element root) {
   return NeedsLocatingParser(root, 1, keys);
 }
 
-Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name) {
+// `directory`: where the paths of OBJ files start.
+Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name, const std::filesystem::path& directory) {
   const std::string_view view(text.data(), text.size());
   RejectBinaryText(view, file_name);
   simdjson::dom::parser parser;
@@ -347,7 +316,7 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem
 
   const JsonReader root(document, file_name);
-  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe"});
+  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe", "lighting"});
   if (auto comment = root.Find("comment")) comment->String();
 
   Scene scene;
@@ -357,12 +326,15 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   if (auto depth = root.Find("depth")) scene.depth = ReadDepth(*depth);
   if (auto wireframe = root.Find("wireframe")) scene.wireframe = wireframe->Boolean();
   scene.camera = ReadCamera(root.Required("camera"));
+  // Before the models: whether the scene is lit decides their shading.
+  if (auto lighting = root.Find("lighting")) scene.lighting = ReadLighting(*lighting);
+  const bool lit = scene.lighting.has_value();
 
   const JsonReader models = root.Required("models");
   ModelIndex index;
   for (const std::string_view name : models.Keys()) {
     index.emplace(std::string(name), scene.models.size());
-    scene.models.push_back(ReadModel(*models.Find(name), std::string(name)));
+    scene.models.push_back(ReadModel(*models.Find(name), std::string(name), directory, lit));
   }
 
   const JsonReader instances = root.Required("instances");
@@ -373,7 +345,7 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   scene.instances.reserve(written);
   std::size_t at = 0;
   instances.ForEachElement([&](const JsonReader& r) {
-    const Instance instance = ReadInstance(r, scene.models, index);
+    const Instance instance = ReadInstance(r, scene.models, index, lit);
     if (auto grid_reader = r.Find("grid")) {
       // Room for this grid, and one instance for each written instance still to come.
       const std::size_t later = written - at - 1;
@@ -395,8 +367,8 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
 
 }  // namespace
 
-Scene ParseScene(std::string_view json_text, const std::string& file_name) {
-  return ReadScene(simdjson::padded_string(json_text), file_name);
+Scene ParseScene(std::string_view json_text, const std::string& file_name, const std::filesystem::path& directory) {
+  return ReadScene(simdjson::padded_string(json_text), file_name, directory);
 }
 
 Scene LoadScene(const std::filesystem::path& file) {
@@ -413,7 +385,7 @@ Scene LoadScene(const std::filesystem::path& file) {
   if (const simdjson::error_code error = simdjson::padded_string::load(file.string()).get(text); error != simdjson::SUCCESS) {
     throw SceneError(file.string(), "(file)", std::string("cannot read the file: ") + simdjson::error_message(error));
   }
-  return ReadScene(text, file.string());
+  return ReadScene(text, file.string(), file.parent_path());
 }
 
 }  // namespace twinraster

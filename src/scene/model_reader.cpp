@@ -1,0 +1,161 @@
+#include "scene/model_reader.hpp"
+
+#include "scene/obj_file.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace twinraster {
+
+namespace {
+
+const std::map<std::string, Rgb8, std::less<>>& NamedColours() {
+  // The chapter's six cube colours, plus the neutral ones a scene's background needs.
+  static const std::map<std::string, Rgb8, std::less<>> colours = {
+      {"red", {255, 0, 0}},       {"green", {0, 255, 0}},   {"blue", {0, 0, 255}},
+      {"yellow", {255, 255, 0}},  {"purple", {255, 0, 255}}, {"cyan", {0, 255, 255}},
+      {"white", {255, 255, 255}}, {"black", {0, 0, 0}},     {"gray", {128, 128, 128}},
+  };
+  return colours;
+}
+
+constexpr std::pair<const char*, Shading> kShadings[] = {
+    {"unlit", Shading::kUnlit}, {"flat", Shading::kFlat}, {"gouraud", Shading::kGouraud}};
+
+Shading ReadShading(const JsonReader& r, bool lit) {
+  const std::string name = r.String();
+  const auto* found = std::find_if(std::begin(kShadings), std::end(kShadings), [&](const auto& s) { return name == s.first; });
+  if (found == std::end(kShadings)) {
+    const std::string suggestion = ClosestMatch(name, {"unlit", "flat", "gouraud"});
+    r.Fail("expected \"unlit\", \"flat\" or \"gouraud\", found \"" + name + "\"" +
+           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
+  }
+  if (!lit && found->second != Shading::kUnlit) {
+    r.Fail("\"" + name + "\" shading needs the scene's \"lighting\"; without it every model is unlit");
+  }
+  return found->second;
+}
+
+Model ReadVertexModel(const JsonReader& r, const std::string& name) {
+  Model model;
+  model.name = name;
+  const JsonReader vertices = r.Required("vertices");
+  const std::size_t vertex_count = vertices.ExpectArray();
+  model.vertices.reserve(vertex_count);
+  vertices.ForEachElement([&](const JsonReader& v) { model.vertices.push_back(v.Vec3()); });
+
+  const JsonReader triangles = r.Required("triangles");
+  model.triangles.reserve(triangles.ExpectArray());
+  triangles.ForEachElement([&](const JsonReader& t) {
+    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + t.TypeName());
+    t.ExpectArray(4);
+    Triangle triangle;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const JsonReader index = t[k];
+      if (vertex_count == 0) index.Fail("the model has no vertices");
+      triangle.v[k] = static_cast<std::uint32_t>(index.Integer(0, static_cast<std::int64_t>(vertex_count) - 1));
+    }
+    triangle.colour = ReadColour(t[3]);
+    model.triangles.push_back(triangle);
+  });
+  return model;
+}
+
+// "materials": {"name": colour, ...}; every name must be one the file uses (usemtl), so that a
+// misspelt one is caught instead of silently leaving its triangles in the model's colour.
+std::map<std::string, Rgb8, std::less<>> ReadMaterials(const JsonReader& r, const std::vector<std::string>& used) {
+  std::map<std::string, Rgb8, std::less<>> colours;
+  for (const std::string_view name : r.Keys()) {
+    const JsonReader entry = *r.Find(name);
+    if (std::find(used.begin(), used.end(), name) == used.end()) {
+      std::string problem = "the OBJ file never uses material \"" + std::string(name) + "\"";
+      if (used.empty()) {
+        problem += ": it has no usemtl lines";
+      } else {
+        const std::string suggestion = ClosestMatch(name, used);
+        if (!suggestion.empty()) problem += " (did you mean \"" + suggestion + "\"?)";
+        std::string list;
+        for (const std::string& u : used) list += (list.empty() ? "" : ", ") + u;
+        problem += "; it uses " + list;
+      }
+      entry.Fail(problem);
+    }
+    colours.emplace(name, ReadColour(entry));
+  }
+  return colours;
+}
+
+Model ReadObjModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory) {
+  const JsonReader obj = r.Required("obj");
+  const std::string written = obj.String();
+  if (written.empty()) obj.Fail("expected the path of an OBJ file, found \"\"");
+  const std::filesystem::path file = directory / std::filesystem::path(written);
+  // Named as the scene wrote it, and where that led from the scene's directory.
+  if (const std::optional<std::string> problem = ObjFileProblem(file)) {
+    const std::string looked = file.string() == written ? "" : " (looked for " + file.string() + ")";
+    obj.Fail("OBJ file \"" + written + "\"" + looked + ": " + *problem);
+  }
+  ObjMesh mesh = ReadObjFile(file);  // its errors name the file as opened, and the line
+  const std::optional<JsonReader> colour_reader = r.Find("colour");
+  const Rgb8 colour = colour_reader ? ReadColour(*colour_reader) : kDefaultObjColour;
+  std::map<std::string, Rgb8, std::less<>> material_colours;
+  if (const std::optional<JsonReader> materials = r.Find("materials")) material_colours = ReadMaterials(*materials, mesh.materials);
+  Model model = ObjModel(std::move(mesh), name, colour, material_colours);
+  model.source = written;
+  return model;
+}
+
+}  // namespace
+
+Rgb8 ReadColour(const JsonReader& r) {
+  if (r.IsString()) {
+    const std::string name = r.String();
+    const auto it = NamedColours().find(name);
+    if (it != NamedColours().end()) return it->second;
+    std::vector<std::string> names;
+    for (const auto& entry : NamedColours()) names.push_back(entry.first);
+    const std::string suggestion = ClosestMatch(name, names);
+    r.Fail("unknown colour \"" + name + "\"" +
+           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
+           "; use a name or [r, g, b] with 0..255");
+  }
+  if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + r.TypeName());
+  r.ExpectArray(3);
+  const auto channel = [&](std::size_t i) { return static_cast<std::uint8_t>(r[i].Integer(0, 255)); };
+  return Rgb8{channel(0), channel(1), channel(2)};
+}
+
+const char* ShadingName(Shading shading) {
+  for (const auto& [name, s] : kShadings) {
+    if (s == shading) return name;
+  }
+  return "?";
+}
+
+Model ReadModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory, bool lit) {
+  r.ExpectObject({"vertices", "triangles", "obj", "colour", "materials", "shading"});
+  const std::optional<JsonReader> obj = r.Find("obj");
+  if (!obj) {
+    for (const char* key : {"colour", "materials"}) {
+      if (auto found = r.Find(key)) {
+        found->Fail("only for a model read from an OBJ file (\"obj\"); a model written as \"vertices\" gives each "
+                    "triangle its colour");
+      }
+    }
+  } else {
+    for (const char* key : {"vertices", "triangles"}) {
+      if (auto found = r.Find(key)) found->Fail("a model is read from \"obj\" or written as \"vertices\" and \"triangles\", not both");
+    }
+  }
+  // Checked before an OBJ file is read: a mistake here costs nothing.
+  const std::optional<JsonReader> shading = r.Find("shading");
+  const std::optional<Shading> asked = shading ? std::optional(ReadShading(*shading, lit)) : std::nullopt;
+
+  Model model = obj ? ReadObjModel(r, name, directory) : ReadVertexModel(r, name);
+  const bool has_normals = !model.triangle_normals.empty();
+  model.shading = asked.value_or(!lit ? Shading::kUnlit : has_normals ? Shading::kGouraud : Shading::kFlat);
+  return model;
+}
+
+}  // namespace twinraster
