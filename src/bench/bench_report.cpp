@@ -166,16 +166,19 @@ std::string BenchSummary(const BenchResult& result) {
 std::string BenchTable(const BenchResult& result) {
   std::ostringstream out;
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s\n", "scene", "method", "thr",
-                "vertex ms", "frame ms", "vertex err px", "image err", "z-fight");
+  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s %10s\n", "scene", "method", "thr",
+                "vertex ms", "frame ms", "vertex err px", "image err", "z-fight", "colour err");
   out << line;
   for (const BenchRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s\n", r.scene.c_str(), r.method.c_str(),
+    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %10s\n", r.scene.c_str(), r.method.c_str(),
                   r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(), Fixed(r.frame_ms, 2).c_str(),
                   Sci(r.vertex_error_px).c_str(), static_cast<unsigned long long>(r.image_error_px),
-                  r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-");
+                  r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-",
+                  r.colour_error ? std::to_string(*r.colour_error).c_str() : "-");
     out << line;
   }
+  out << "colour err: lit scenes only, the largest channel difference (0-255) from the truth's colours, over the\n"
+         "pixels where the method shows the same triangle as the truth\n";
   out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n\n";
   out << BenchSummary(result);
   return out.str();
@@ -184,13 +187,15 @@ std::string BenchTable(const BenchResult& result) {
 std::string BenchCsv(const BenchResult& result) {
   std::ostringstream out;
   out << "scene,method,threads,width,height,vertices,triangles,vertex_ms,frame_ms,vertex_error_px,image_error_px,"
-         "z_fighting_px\n";
+         "z_fighting_px,colour_error,colour_pixels\n";
   out.precision(9);
   for (const BenchRow& r : result.rows) {
     out << r.scene << ',' << r.method << ',' << r.threads << ',' << r.width << ',' << r.height << ',' << r.vertices
         << ',' << r.triangles << ',' << (r.vertex_ms < 0 ? std::string() : std::to_string(r.vertex_ms)) << ','
         << r.frame_ms << ',' << (r.vertex_error_px < 0 ? std::string() : Sci(r.vertex_error_px)) << ','
-        << r.image_error_px << ',' << (r.z_fighting_px ? std::to_string(*r.z_fighting_px) : std::string()) << '\n';
+        << r.image_error_px << ',' << (r.z_fighting_px ? std::to_string(*r.z_fighting_px) : std::string()) << ','
+        << (r.colour_error ? std::to_string(*r.colour_error) : std::string()) << ','
+        << (r.colour_error ? std::to_string(r.colour_pixels) : std::string()) << '\n';
   }
   return out.str();
 }
@@ -210,6 +215,8 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
     row["vertex_ms"] = r.vertex_ms < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_ms);
     row["vertex_error_px"] = r.vertex_error_px < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_error_px);
     row["z_fighting_px"] = r.z_fighting_px ? nlohmann::ordered_json(*r.z_fighting_px) : nlohmann::ordered_json(nullptr);
+    row["colour_error"] = r.colour_error ? nlohmann::ordered_json(*r.colour_error) : nlohmann::ordered_json(nullptr);
+    row["colour_pixels"] = r.colour_error ? nlohmann::ordered_json(r.colour_pixels) : nlohmann::ordered_json(nullptr);
     j["rows"].push_back(row);
   }
   return j;

@@ -18,7 +18,7 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result);
 std::string BenchCsv(const BenchResult& result);
 // BenchJson's "format": a consumer checks it; any change to the keys or their meaning gets a new
 // number (docs/json-output.md, docs/schemas/bench.schema.json).
-inline constexpr const char* kBenchJsonFormat = "twinraster.bench/1";
+inline constexpr const char* kBenchJsonFormat = "twinraster.bench/2";
 nlohmann::ordered_json BenchJson(const BenchResult& result);
 // One point per (scene, method): vertex-stage time per million vertices (x, log) against vertex
 // error in pixels (y, log), a colour per method.

@@ -137,11 +137,24 @@ BenchResult RunBench(const BenchOptions& options) {
     if (options.on_row) options.on_row(result.rows.back(), result.rows.size(), total_rows);
   };
   for (const std::filesystem::path& file : files) {
-    const Scene scene = LoadScene(file);
-    DrawList list = BuildDrawList(scene);
-    list.wireframe = false;  // the bench compares filled images with the truth, whatever the scene asks
+    Scene scene = LoadScene(file);
+    scene.wireframe = false;  // the bench compares filled (and lit) images with the truth, whatever the scene asks
+    const DrawList list = BuildDrawList(scene);
     const ExactClipPositions exact = ExactClipSpace(scene);
-    const Image truth = RenderTruth(list, exact);
+    const ExactLight light(scene);
+    const TruthImage truth_surfaces = RenderTruthSurfaces(list, exact, &light);
+    const Image& truth = truth_surfaces.image;
+    // Lit scenes: how far a method's colours are from the truth's, triangle by triangle (which
+    // triangle a method shows where: its positions rasterized once more with SurfaceList).
+    const std::optional<DrawList> surface_list = list.lighting ? SurfaceList(list) : std::nullopt;
+    const auto measure_colour = [&](BenchRow& row, const Image& image, const ClipPositions* clip) {
+      if (!surface_list) return;
+      const Image surfaces = clip ? RasterizeClipSpace(*surface_list, *clip, CpuOptions{cores})
+                                  : RenderOnCpu(*surface_list, CpuOptions{cores});
+      const ColourError error = SameSurfaceColourError(image, surfaces, truth_surfaces);
+      row.colour_error = error.max_channel;
+      row.colour_pixels = error.pixels;
+    };
 
     BenchRow base;
     base.scene = std::filesystem::relative(file, options.scenes_dir).replace_extension().generic_string();
@@ -166,6 +179,7 @@ BenchResult RunBench(const BenchOptions& options) {
       });
       row.image_error_px = CompareImages(image, truth).differing_pixels;
       row.z_fighting_px = ZFighting(file, image, truth);
+      measure_colour(row, image, &clip);
       add_row(row);
     }
 
@@ -186,6 +200,7 @@ BenchResult RunBench(const BenchOptions& options) {
         });
         row.image_error_px = CompareImages(image, truth).differing_pixels;
         row.z_fighting_px = ZFighting(file, image, truth);
+        measure_colour(row, image, nullptr);  // lavapipe covers what the twin covers, bit for bit
         add_row(row);
       }
     }

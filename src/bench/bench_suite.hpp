@@ -23,6 +23,10 @@ struct BenchRow {
   double vertex_error_px = -1;  // max distance from the truth's framebuffer positions (-1: not measured)
   std::uint64_t image_error_px = 0;   // pixels that differ from the truth image
   std::optional<std::uint64_t> z_fighting_px;  // depth scenes: far plate showing where the near one should
+  // Lit scenes: the largest channel difference (0..255) from the truth's colours inside its
+  // triangles (error_metrics.hpp), and over how many pixels.
+  std::optional<int> colour_error;
+  std::uint64_t colour_pixels = 0;
 };
 
 struct BenchOptions {

@@ -24,4 +24,47 @@ double VertexErrorPixels(const ClipPositions& clip, const ExactClipPositions& tr
   return worst;
 }
 
+ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const TruthImage& truth) {
+  ColourError error;
+  if (image.width != truth.image.width || image.height != truth.image.height || surfaces.width != image.width ||
+      surfaces.height != image.height || truth.surfaces.size() != std::size_t{image.width} * image.height) {
+    return error;
+  }
+  for (std::size_t p = 0; p < truth.surfaces.size(); ++p) {
+    const std::size_t i = 4 * p;
+    const std::uint64_t shown = std::uint64_t{surfaces.rgba[i]} | std::uint64_t{surfaces.rgba[i + 1]} << 8 |
+                                std::uint64_t{surfaces.rgba[i + 2]} << 16;
+    if (truth.surfaces[p] == 0 || shown != truth.surfaces[p]) continue;
+    for (std::size_t c = 0; c < 3; ++c) {
+      error.max_channel = std::max(error.max_channel, std::abs(int{image.rgba[i + c]} - int{truth.image.rgba[i + c]}));
+    }
+    ++error.pixels;
+  }
+  return error;
+}
+
+std::optional<DrawList> SurfaceList(const DrawList& list) {
+  DrawList ids;
+  ids.width = list.width;
+  ids.height = list.height;
+  ids.background = Rgb8{0, 0, 0};  // surface 0
+  ids.reversed_z = list.reversed_z;
+  std::uint64_t next = 1;
+  for (const DrawCall& draw : list.draws) {
+    const DrawMesh& mesh = list.meshes[draw.mesh];
+    if (next + mesh.triangles.size() > (std::uint64_t{1} << 24)) return std::nullopt;
+    DrawMesh copy;
+    copy.positions = mesh.positions;
+    copy.triangles = mesh.triangles;
+    copy.colours.reserve(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t, ++next) {
+      copy.colours.push_back(Rgb8{static_cast<std::uint8_t>(next), static_cast<std::uint8_t>(next >> 8),
+                                  static_cast<std::uint8_t>(next >> 16)});
+    }
+    ids.draws.push_back(DrawCall{static_cast<std::uint32_t>(ids.meshes.size()), draw.F});
+    ids.meshes.push_back(std::move(copy));
+  }
+  return ids;
+}
+
 }  // namespace twinraster

@@ -129,7 +129,7 @@ CommandRun AddBenchCommand(CLI::App& app) {
                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll),
               "method", methods);
   command->add_option("--scenes", a->scenes, "the suite's directory (default: scenes)")->type_name("DIR");
-  command->add_flag("--json", a->json, "print the results as JSON (twinraster.bench/1, docs/json-output.md)");
+  command->add_flag("--json", a->json, "print the results as JSON (twinraster.bench/2, docs/json-output.md)");
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error");
   command->add_flag("--scale", a->scale,
                     "instead of the suite: cubes written out one instance each, at growing counts,\n"

@@ -3,6 +3,7 @@
 // -w <= y <= w, 0 <= z <= w. Nothing is rounded to float.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <vector>
@@ -23,5 +24,16 @@ ClipPolygon ClipAgainstPlane(const ClipPolygon& polygon, int plane);
 // The triangle's part inside the view volume, as a polygon to draw as the fan (p0, p[i-1], p[i]).
 // Empty if nothing is inside or a coordinate is not finite.
 ClipPolygon ClipToViewVolume(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
+
+// A vertex with a Gouraud colour: the colour is interpolated along with the clip position (linear
+// in clip space is exactly what perspective-correct interpolation needs).
+struct LitVertex {
+  glm::dvec4 clip{0.0};
+  glm::dvec3 colour{0.0};
+};
+using LitPolygon = std::vector<LitVertex>;
+
+// ClipToViewVolume for a triangle with corner colours.
+LitPolygon ClipToViewVolume(const LitVertex& a, const LitVertex& b, const LitVertex& c);
 
 }  // namespace twinraster::truth

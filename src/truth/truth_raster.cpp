@@ -49,7 +49,23 @@ double InterpolateDepth(const std::array<glm::dvec3, 3>& v, const std::array<dou
   return std::clamp(z, 0.0, 1.0);
 }
 
-void WriteFragment(TruthTarget& target, int px, int py, double z, Rgb8 colour) {
+// A lit colour at a covered centre: perspective-correct, Σ b_i c_i / w_i over Σ b_i / w_i, with
+// the window-space weights b_i; then to UNORM8 by rounding to nearest (no float anywhere).
+Rgb8 InterpolateColour(const WindowTriangle& t, const std::array<double, 3>& weights) {
+  glm::dvec3 sum(0.0);
+  double norm = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    sum += (*t.colours)[k] * (weights[k] / t.w[k]);
+    norm += weights[k] / t.w[k];
+  }
+  const auto unorm = [](double c) {
+    return static_cast<std::uint8_t>(std::nearbyint(std::clamp(c, 0.0, 1.0) * 255.0));
+  };
+  const glm::dvec3 c = sum / norm;
+  return Rgb8{unorm(c.x), unorm(c.y), unorm(c.z)};
+}
+
+void WriteFragment(TruthTarget& target, int px, int py, double z, Rgb8 colour, std::uint64_t surface) {
   const std::size_t i = target.index(px, py);
   if (!DepthPasses(z, target.depth[i], target.reversed_z)) return;
   target.depth[i] = z;
@@ -58,12 +74,16 @@ void WriteFragment(TruthTarget& target, int px, int py, double z, Rgb8 colour) {
   p[1] = colour.g;
   p[2] = colour.b;
   p[3] = 255;
+  if (!target.surfaces.empty()) target.surfaces[i] = surface;
 }
 
 }  // namespace
 
-TruthTarget::TruthTarget(std::uint32_t width, std::uint32_t height, Rgb8 background, bool reversed)
-    : colour(width, height), depth(std::size_t{width} * height, reversed ? 0.0 : 1.0), reversed_z(reversed) {
+TruthTarget::TruthTarget(std::uint32_t width, std::uint32_t height, Rgb8 background, bool reversed, bool keep_surfaces)
+    : colour(width, height),
+      depth(std::size_t{width} * height, reversed ? 0.0 : 1.0),
+      reversed_z(reversed),
+      surfaces(keep_surfaces ? std::size_t{width} * height : 0, 0) {
   for (std::size_t i = 0; i < depth.size(); ++i) {
     std::uint8_t* p = &colour.rgba[i * 4];
     p[0] = background.r;
@@ -84,14 +104,19 @@ bool DepthPasses(double fragment, double stored, bool reversed_z) {
 }
 
 void DrawTriangle(TruthTarget& target, const WindowTriangle& triangle) {
-  std::array<glm::dvec3, 3> v = triangle.v;
+  WindowTriangle t = triangle;
+  std::array<glm::dvec3, 3>& v = t.v;
   if (!IsFinite(v[0]) || !IsFinite(v[1]) || !IsFinite(v[2])) return;
 
   // Orientation, as the twin's setup does: zero area draws nothing, negative swaps vertices 1 and 2
   // so that the inside is where all three edge functions are positive.
   const int area_sign = EvaluateEdge(Xy(v[0]), Xy(v[1]), Xy(v[2])).sign;
   if (area_sign == 0) return;
-  if (area_sign < 0) std::swap(v[1], v[2]);
+  if (area_sign < 0) {
+    std::swap(v[1], v[2]);
+    std::swap(t.w[1], t.w[2]);
+    if (t.colours) std::swap((*t.colours)[1], (*t.colours)[2]);
+  }
 
   std::array<Edge, 3> edges;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -108,7 +133,8 @@ void DrawTriangle(TruthTarget& target, const WindowTriangle& triangle) {
       const glm::dvec2 centre{px + 0.5, py + 0.5};
       std::array<double, 3> weights;
       if (!CoversCentre(edges, centre, weights)) continue;
-      WriteFragment(target, px, py, InterpolateDepth(v, weights), triangle.colour);
+      const Rgb8 colour = t.colours ? InterpolateColour(t, weights) : t.colour;
+      WriteFragment(target, px, py, InterpolateDepth(v, weights), colour, t.surface);
     }
   }
 }

@@ -1,6 +1,6 @@
 // The truth's per-triangle stages after the viewport transform: coverage at pixel centres with
 // exact edge-function signs and the twin's top-left rule, depth interpolated in double, and the
-// fragment operations (depth test, depth write, flat colour write).
+// fragment operations (depth test, depth write, colour write: flat, or lit and interpolated).
 #pragma once
 
 #include "image/image.hpp"
@@ -11,14 +11,20 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace twinraster::truth {
 
-// Framebuffer positions (x, y, depth) of one triangle, and its flat colour.
+// Framebuffer positions (x, y, depth) of one triangle, and its flat colour; or, lit, each
+// corner's colour (0..1) with its clip w, interpolated perspective-correctly (a flat-lit triangle
+// gives all three corners the same colour).
 struct WindowTriangle {
   std::array<glm::dvec3, 3> v;
   Rgb8 colour;
+  std::optional<std::array<glm::dvec3, 3>> colours;
+  std::array<double, 3> w{1.0, 1.0, 1.0};
+  std::uint64_t surface = 0;  // which surface this is, for TruthTarget::surfaces (not 0)
 };
 
 // Colour and a double depth buffer, cleared for the list's depth mode (standard or reversed Z).
@@ -26,8 +32,10 @@ struct TruthTarget {
   Image colour;
   std::vector<double> depth;
   bool reversed_z = false;  // clear 0, GREATER; otherwise clear 1, LESS
+  // Per pixel, the WindowTriangle::surface that wrote it (0: background); empty unless asked for.
+  std::vector<std::uint64_t> surfaces;
 
-  TruthTarget(std::uint32_t width, std::uint32_t height, Rgb8 background, bool reversed);
+  TruthTarget(std::uint32_t width, std::uint32_t height, Rgb8 background, bool reversed, bool keep_surfaces = false);
   std::size_t index(int px, int py) const { return std::size_t(py) * colour.width + std::size_t(px); }
 };
 

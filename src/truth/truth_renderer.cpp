@@ -1,6 +1,8 @@
 #include "truth/truth_renderer.hpp"
 
+#include "chain/light_trace.hpp"
 #include "chain/matrices.hpp"
+#include "chain/normals.hpp"
 #include "truth/truth_clipping.hpp"
 #include "truth/truth_raster.hpp"
 
@@ -14,8 +16,9 @@ namespace {
 
 // The renderers' checks (ValidateDrawList), plus that `clip` has one position per mesh vertex of
 // every draw.
-void ValidateInputs(const DrawList& list, const ExactClipPositions& clip) {
+void ValidateInputs(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light) {
   ValidateDrawList(list);
+  if (list.lighting && light == nullptr) throw std::invalid_argument("the list is lit, but the truth was given no light");
   if (list.wireframe) {
     // Lines have no exact pixel set to compare with: their width is a rasterization rule.
     throw std::invalid_argument("the truth draws filled triangles only, and this list is a wireframe");
@@ -35,7 +38,7 @@ void ValidateInputs(const DrawList& list, const ExactClipPositions& clip) {
 
 // Clipping, then the viewport transform of the polygon's vertices, then the fan, drawn in order.
 void DrawClipTriangle(truth::TruthTarget& target, const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c,
-                      Rgb8 colour) {
+                      Rgb8 colour, std::uint64_t surface) {
   const truth::ClipPolygon polygon = truth::ClipToViewVolume(a, b, c);
   std::vector<glm::dvec3> window;
   window.reserve(polygon.size());
@@ -43,8 +46,62 @@ void DrawClipTriangle(truth::TruthTarget& target, const glm::dvec4& a, const glm
     window.push_back(ExactFramebuffer(p, target.colour.width, target.colour.height));
   }
   for (std::size_t i = 2; i < window.size(); ++i) {
-    truth::DrawTriangle(target, truth::WindowTriangle{{window[0], window[i - 1], window[i]}, colour});
+    truth::WindowTriangle t;
+    t.v = {window[0], window[i - 1], window[i]};
+    t.colour = colour;
+    t.surface = surface;
+    truth::DrawTriangle(target, t);
   }
+}
+
+// The same for a lit triangle: the corner colours are clipped along with the positions.
+void DrawLitTriangle(truth::TruthTarget& target, const std::array<truth::LitVertex, 3>& v, std::uint64_t surface) {
+  const truth::LitPolygon polygon = truth::ClipToViewVolume(v[0], v[1], v[2]);
+  std::vector<glm::dvec3> window;
+  window.reserve(polygon.size());
+  for (const truth::LitVertex& p : polygon) {
+    window.push_back(ExactFramebuffer(p.clip, target.colour.width, target.colour.height));
+  }
+  for (std::size_t i = 2; i < window.size(); ++i) {
+    const std::size_t k[3] = {0, i - 1, i};
+    truth::WindowTriangle t;
+    t.v = {window[k[0]], window[k[1]], window[k[2]]};
+    t.colours = std::array<glm::dvec3, 3>{polygon[k[0]].colour, polygon[k[1]].colour, polygon[k[2]].colour};
+    t.w = {polygon[k[0]].clip.w, polygon[k[1]].clip.w, polygon[k[2]].clip.w};
+    t.surface = surface;
+    truth::DrawTriangle(target, t);
+  }
+}
+
+TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light, bool surfaces) {
+  ValidateInputs(list, clip, light);
+  truth::TruthTarget target(list.width, list.height, list.background, list.reversed_z, surfaces);
+  // Draws in list order, triangles in index order, a clipped triangle's fan in fan order.
+  std::uint64_t first_triangle = 0;  // of draw d, counting every draw's
+  for (std::size_t d = 0; d < list.draws.size(); ++d) {
+    const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
+    const std::vector<glm::dvec4>& positions = clip[d];
+    const std::uint64_t first_surface = first_triangle + 1;
+    first_triangle += mesh.triangles.size();
+    const std::vector<std::array<glm::dvec3, 3>> colours =
+        mesh.shading != Shading::kUnlit ? light->CornerColours(d) : std::vector<std::array<glm::dvec3, 3>>{};
+    if (mesh.shading != Shading::kUnlit && colours.size() != mesh.triangles.size()) {
+      throw std::invalid_argument("draw " + std::to_string(d) + " is lit, but the truth's light does not light it");
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      const std::uint64_t surface = first_surface + t;
+      if (colours.empty()) {
+        DrawClipTriangle(target, positions[tri[0]], positions[tri[1]], positions[tri[2]], mesh.colours[t], surface);
+      } else {
+        DrawLitTriangle(target,
+                        {truth::LitVertex{positions[tri[0]], colours[t][0]}, truth::LitVertex{positions[tri[1]], colours[t][1]},
+                         truth::LitVertex{positions[tri[2]], colours[t][2]}},
+                        surface);
+      }
+    }
+  }
+  return {std::move(target.colour), std::move(target.surfaces)};
 }
 
 }  // namespace
@@ -71,19 +128,44 @@ glm::dvec3 ExactFramebuffer(glm::dvec4 clip, std::uint32_t width, std::uint32_t 
   return {(clip.x / clip.w + 1.0) * w / 2.0, (clip.y / clip.w + 1.0) * h / 2.0, clip.z / clip.w};
 }
 
-Image RenderTruth(const DrawList& list, const ExactClipPositions& clip) {
-  ValidateInputs(list, clip);
-  truth::TruthTarget target(list.width, list.height, list.background, list.reversed_z);
-  // Draws in list order, triangles in index order, a clipped triangle's fan in fan order.
-  for (std::size_t d = 0; d < list.draws.size(); ++d) {
-    const DrawMesh& mesh = list.meshes[list.draws[d].mesh];
-    const std::vector<glm::dvec4>& positions = clip[d];
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto& tri = mesh.triangles[t];
-      DrawClipTriangle(target, positions[tri[0]], positions[tri[1]], positions[tri[2]], mesh.colours[t]);
+ExactLight::ExactLight(const Scene& scene) : scene_(&scene), normals_(scene.models.size()) {
+  if (!scene.lighting || scene.wireframe) return;
+  for (std::size_t m = 0; m < scene.models.size(); ++m) {
+    if (scene.models[m].shading != Shading::kUnlit) normals_[m] = CornerNormals(scene.models[m], scene.models[m].shading);
+  }
+}
+
+std::vector<std::array<glm::dvec3, 3>> ExactLight::CornerColours(std::size_t instance) const {
+  const Scene& scene = *scene_;
+  if (instance >= scene.instances.size()) throw std::invalid_argument("no instance " + std::to_string(instance));
+  const Model& model = scene.models[scene.instances[instance].model];
+  const std::vector<std::array<glm::dvec3, 3>>& normals = normals_[scene.instances[instance].model];
+  if (normals.empty() && !model.triangles.empty()) return {};
+  const glm::dmat4 m = ModelMatrix(scene.instances[instance].transform);
+  const std::optional<glm::dmat3> n = NormalMatrix(m);
+  if (!n) throw std::invalid_argument("instance " + std::to_string(instance) + " of a lit model has a zero scale");
+  std::vector<std::array<glm::dvec3, 3>> colours(model.triangles.size());
+  for (std::size_t t = 0; t < model.triangles.size(); ++t) {
+    const Triangle& tri = model.triangles[t];
+    const auto at = [&](std::size_t k) {
+      return TraceLight(*scene.lighting, m, *n, model.vertices[tri.v[k]], normals[t][k], tri.colour).colour;
+    };
+    if (model.shading == Shading::kFlat) {
+      const glm::dvec3 c = at(0);  // lit once, at the provoking vertex
+      colours[t] = {c, c, c};
+    } else {
+      colours[t] = {at(0), at(1), at(2)};
     }
   }
-  return std::move(target.colour);
+  return colours;
+}
+
+Image RenderTruth(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light) {
+  return Render(list, clip, light, false).image;
+}
+
+TruthImage RenderTruthSurfaces(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light) {
+  return Render(list, clip, light, true);
 }
 
 }  // namespace twinraster

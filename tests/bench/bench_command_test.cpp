@@ -18,7 +18,7 @@ TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen sce
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["format"] == "twinraster.bench/1");
+  REQUIRE(j["format"] == "twinraster.bench/2");
   // Four methods, then the CPU twin and lavapipe with one thread and with every core.
   REQUIRE(j["rows"].size() >= 6);
   REQUIRE(j["rows"][0]["scene"] == "hard/far-1e7");
@@ -34,7 +34,7 @@ TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen sce
   REQUIRE(svg.rfind("<svg", 0) == 0);
   REQUIRE(svg.find("<circle") != std::string::npos);
   const auto file = nlohmann::json::parse(test::ReadFile(dir / "bench.json"));
-  REQUIRE(file["format"] == "twinraster.bench/1");
+  REQUIRE(file["format"] == "twinraster.bench/2");
   REQUIRE(file["rows"].size() == j["rows"].size());
 }
 

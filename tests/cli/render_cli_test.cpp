@@ -305,7 +305,7 @@ TEST_CASE("On a terminal, render and bench show progress on standard error, and 
   const test::CliResult no_rows = test::RunCliInTerminal(bench_quiet);
   REQUIRE(no_rows.exit_code == 0);
   REQUIRE(no_rows.out.find("[1/") == std::string::npos);
-  REQUIRE(no_rows.out.find("\"format\": \"twinraster.bench/1\"") != std::string::npos);
+  REQUIRE(no_rows.out.find("\"format\": \"twinraster.bench/2\"") != std::string::npos);
 }
 
 TEST_CASE("render with several scenes writes each into -o DIR, keeps going past a bad one, exits with the worst code",

@@ -8,7 +8,7 @@
 #include "scene/scene_loader.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
-#include "lit_scene.hpp"
+#include "support/lit_scene.hpp"
 #include "twin_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-#include "lit_scene.hpp"
+#include "support/lit_scene.hpp"
 
 #include "scene/rotation.hpp"
 
