@@ -39,11 +39,6 @@ glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance,
                    (static_cast<float>(base.b) / 255.0f) * scale);
 }
 
-std::uint8_t UnormByte(float c) {
-  const float clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // NaN becomes 0
-  return static_cast<std::uint8_t>(std::lrint(clamped * 255.0f));
-}
-
 std::uint32_t PackUnorm(const glm::vec3& colour) {
   return std::bit_cast<std::uint32_t>(
       std::array<std::uint8_t, 4>{UnormByte(colour.x), UnormByte(colour.y), UnormByte(colour.z), 255});

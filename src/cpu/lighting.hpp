@@ -19,8 +19,14 @@ namespace twinraster::cpu {
 glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance, const glm::vec3& position,
                       const glm::vec3& normal, Rgb8 base);
 
-// A fragment shader output channel as the UNORM8 colour attachment stores it.
-std::uint8_t UnormByte(float c);
+// A fragment shader output channel as the UNORM8 colour attachment stores it: clamped to [0, 1]
+// (NaN to 0), times 255, rounded half to even. Adding and taking away 1.5 · 2^23 rounds a float
+// in [0, 255] to an integer exactly as lrintf does, in a form the compiler can vectorize.
+inline std::uint8_t UnormByte(float c) {
+  const float clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+  constexpr float kRound = 12582912.0f;  // 1.5 · 2^23
+  return static_cast<std::uint8_t>(static_cast<int>((clamped * 255.0f + kRound) - kRound));
+}
 
 // The lit colour as the RGBA8 word the framebuffer holds (alpha 255), as PackRgba.
 std::uint32_t PackUnorm(const glm::vec3& colour);
