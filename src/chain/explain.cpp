@@ -149,9 +149,14 @@ Explanation Explain(const Scene& scene, const ExplainOptions& options) {
   return e;
 }
 
-nlohmann::ordered_json Rows(const glm::dmat4& m) {
+template <int N>
+nlohmann::ordered_json Rows(const glm::mat<N, N, double>& m) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+  for (int r = 0; r < N; ++r) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::array();
+    for (int c = 0; c < N; ++c) row.push_back(m[c][r]);
+    rows.push_back(std::move(row));
+  }
   return rows;
 }
 
@@ -193,25 +198,6 @@ std::string StepName(const TransformStep& step) {
     case TransformStep::Kind::kTranslation: return "I_T";
   }
   return "?";
-}
-
-void PrintMatrix3(std::ostream& out, const std::string& name, const glm::dmat3& m) {
-  out << "  " << name << " =\n";
-  for (int r = 0; r < 3; ++r) {
-    out << "    [";
-    for (int c = 0; c < 3; ++c) {
-      char cell[32];
-      std::snprintf(cell, sizeof cell, " %12s", Num(m[c][r]).c_str());
-      out << cell;
-    }
-    out << " ]\n";
-  }
-}
-
-nlohmann::ordered_json Rows3(const glm::dmat3& m) {
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (int r = 0; r < 3; ++r) rows.push_back({m[0][r], m[1][r], m[2][r]});
-  return rows;
 }
 
 const char* ShadingName(Shading shading) {
@@ -262,11 +248,13 @@ nlohmann::ordered_json LightJson(const VertexLight& v) {
           {"colour", Array(t.colour)}};
 }
 
-void PrintMatrix(std::ostream& out, const std::string& name, const glm::dmat4& m) {
+// A 4x4 (or the 3x3 normal matrix) as rows, the way the chapter prints matrices.
+template <int N>
+void PrintMatrix(std::ostream& out, const std::string& name, const glm::mat<N, N, double>& m) {
   out << "  " << name << " =\n";
-  for (int r = 0; r < 4; ++r) {
+  for (int r = 0; r < N; ++r) {
     out << "    [";
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < N; ++c) {
       char cell[32];
       std::snprintf(cell, sizeof cell, " %12s", Num(m[c][r]).c_str());
       out << cell;
@@ -364,7 +352,7 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
     PrintMatrix(out, "F = M_Projection · M_Camera · M_Model", x.f);
     if (IsLit(scene, *x.model)) {
       out << "  lit, " << ShadingName(x.model->shading) << " shading\n";
-      if (x.normal_matrix) PrintMatrix3(out, "N = (upper 3x3 of M_Model)⁻ᵀ, the normal matrix", *x.normal_matrix);
+      if (x.normal_matrix) PrintMatrix(out, "N = (upper 3x3 of M_Model)⁻ᵀ, the normal matrix", *x.normal_matrix);
     }
 
     for (std::size_t i = 0; i < x.vertices.size(); ++i) {
@@ -441,7 +429,7 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
     entry["model_matrix"] = Rows(x.model_matrix);
     entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
     entry["shading"] = IsLit(scene, *x.model) ? ShadingName(x.model->shading) : "unlit";
-    entry["normal_matrix"] = x.normal_matrix ? Rows3(*x.normal_matrix) : nlohmann::ordered_json(nullptr);
+    entry["normal_matrix"] = x.normal_matrix ? Rows(*x.normal_matrix) : nlohmann::ordered_json(nullptr);
     entry["vertices"] = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < x.vertices.size(); ++i) {
       const auto& [v, tr] = x.vertices[i];

@@ -87,6 +87,17 @@ def main():
              ["explain", os.path.join(scenes, "catlike-grid.json"), "--json"], None, 0,
              lambda d: d["instance_count"] == 1000 and len(d["instances"]) == 16 and d["grids"][0]["copies"] == 1000
              and d["instances"][11]["grid_copy"] == {"instance": 0, "ijk": [1, 1, 0]}),
+            ("explain of a lit scene: the normal matrix and each vertex's light", "explain",
+             ["explain", os.path.join(scenes, "normals-stretched-square.json"), "--json", "--vertex", "0"], None, 0,
+             lambda d: d["lighting"]["ambient"] == 0 and d["instances"][0]["shading"] == "flat"
+             and d["instances"][0]["normal_matrix"][0][0] == 0.5
+             and abs(d["instances"][0]["vertices"][0]["light"]["intensity"] - 2 / 5 ** 0.5) < 1e-12),
+            ("explain of an OBJ file on its own", "explain",
+             ["explain", os.path.join(scenes, "meshes", "gem.obj"), "--json", "--vertex", "0"], None, 0,
+             lambda d: d["scene"] == "gem" and d["lighting"] is not None and d["instances"][0]["shading"] == "flat"),
+            ("render of a lit scene on both backends", "render",
+             ["render", os.path.join(scenes, "lit-gouraud.json"), "--json", "-o", out("lit.png")], None, 0,
+             lambda d: d["differing_pixels"] == 0),
             ("render --backend gpu", "render", ["render", transforms, "--json", "--backend", "gpu", "-o", out("g.png")],
              None, 0, lambda d: d["backends"]["cpu"] is None and d["differing_pixels"] is None),
             ("render --backend cpu", "render", ["render", transforms, "--json", "--backend", "cpu", "-o", out("c.png")],
