@@ -64,16 +64,17 @@ struct GpuRenderer::Impl {
 GpuRenderer::Impl::Impl(const GpuOptions& options)
     : instancing(options.instancing), instances_per_buffer(options.instances_per_buffer), context(options), pipeline(context.device()) {
   const vk::raii::Device& device = context.device();
-  // The unlit set's one storage buffer and the lit set's three.
-  const vk::DescriptorPoolSize pool_size{.type = vk::DescriptorType::eStorageBuffer,
-                                         .descriptorCount = 4};
+  // The unlit set's one storage buffer and the lit set's three (one with a dynamic offset).
+  const std::array pool_sizes = {
+      vk::DescriptorPoolSize{.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 3},
+      vk::DescriptorPoolSize{.type = vk::DescriptorType::eStorageBufferDynamic, .descriptorCount = 1}};
   descriptor_pool = vk::raii::DescriptorPool(
       device, vk::DescriptorPoolCreateInfo{
                   // vk::raii::DescriptorSet frees itself, which needs this flag.
                   .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                   .maxSets = 2,
-                  .poolSizeCount = 1,
-                  .pPoolSizes = &pool_size,
+                  .poolSizeCount = pool_sizes.size(),
+                  .pPoolSizes = pool_sizes.data(),
               });
   const std::array set_layouts = {*pipeline.set_layout(false), *pipeline.set_layout(true)};
   const vk::DescriptorSetAllocateInfo set_info{
@@ -119,19 +120,17 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
                                                     list.height);
   }
   // Safe to rewrite: the previous frame that read the set has finished (we waited for it).
-  const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer) {
-    const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = VK_WHOLE_SIZE};
-    context.device().updateDescriptorSets(vk::WriteDescriptorSet{.dstSet = *set,
-                                                                 .dstBinding = binding,
-                                                                 .descriptorCount = 1,
-                                                                 .descriptorType = vk::DescriptorType::eStorageBuffer,
-                                                                 .pBufferInfo = &info},
-                                          nullptr);
+  const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer,
+                         vk::DeviceSize range = VK_WHOLE_SIZE, vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
+    const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = range};
+    context.device().updateDescriptorSets(
+        vk::WriteDescriptorSet{.dstSet = *set, .dstBinding = binding, .descriptorCount = 1, .descriptorType = type, .pBufferInfo = &info},
+        nullptr);
   };
   point(colour_set, 0, meshes.colours());
   if (lights) {
     point(lit_set, 0, meshes.colours());
-    point(lit_set, 1, lights->instances());
+    point(lit_set, 1, lights->instances(), lights->instance_range(), vk::DescriptorType::eStorageBufferDynamic);
     point(lit_set, 2, lights->lights());
   }
   const std::size_t draw_commands = Record(list, plan, meshes, instances, lights ? &*lights : nullptr);
@@ -200,7 +199,9 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
   // two equally deep fragments stays. An instanced draw keeps that order too: its instances are
   // rasterized in instance order.
   std::optional<std::pair<Shading, gpu::FSource>> bound;
-  std::optional<bool> bound_lit;  // which layout's descriptor set is bound
+  // The descriptor set bound: none yet, the unlit one, or the lit one showing LitInstance range k.
+  constexpr std::int64_t kNoSet = -2, kUnlitSet = -1;
+  std::int64_t bound_set = kNoSet;
   std::optional<std::uint32_t> bound_buffer;
   std::size_t draw_commands = 0;
   for (const gpu::DrawBatch& batch : plan.batches) {
@@ -215,37 +216,59 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                        *pipeline.pipeline(shading, source, list.reversed_z, list.wireframe));
       bound = std::pair{shading, source};
     }
-    if (bound_lit != lit) {
-      // The lit and unlit layouts differ, so switching between them unbinds the set.
-      cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, lit ? *lit_set : *colour_set, nullptr);
-      bound_lit = lit;
+    if (batch.instanced && bound_buffer != batch.buffer) {
+      cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
+      bound_buffer = batch.buffer;
     }
-    if (batch.instanced) {
-      if (bound_buffer != batch.buffer) {
-        cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
-        bound_buffer = batch.buffer;
+    if (!lit) {
+      if (bound_set != kUnlitSet) {
+        // The lit and unlit layouts differ, so switching between them unbinds the set.
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, *colour_set, nullptr);
+        bound_set = kUnlitSet;
       }
-      if (lit) {
-        // gl_InstanceIndex counts from first_instance: the offset makes it the draw's index.
-        const gpu::LitPushConstants push{
-            .F = glm::mat4(1.0f), .draw = static_cast<std::uint32_t>(batch.first_draw - batch.first_instance)};
-        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+      if (batch.instanced) {
+        cmd.draw(range.corner_count, batch.count, range.first_corner, batch.first_instance);
+        ++draw_commands;
+        continue;
       }
-      cmd.draw(range.corner_count, batch.count, range.first_corner, batch.first_instance);
-      ++draw_commands;
+      for (std::uint32_t i = 0; i < batch.count; ++i) {
+        const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F};
+        cmd.pushConstants<gpu::PushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+        cmd.draw(range.corner_count, 1, range.first_corner, 0);
+        ++draw_commands;
+      }
       continue;
     }
-    for (std::uint32_t i = 0; i < batch.count; ++i) {
-      const std::size_t d = batch.first_draw + i;
-      if (lit) {
-        const gpu::LitPushConstants push{.F = list.draws[d].F, .draw = static_cast<std::uint32_t>(d)};
-        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-      } else {
-        const gpu::PushConstants push{.F = list.draws[d].F};
-        cmd.pushConstants<gpu::PushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+    // Lit: the shader finds a draw's LitInstance at push.draw + gl_InstanceIndex within the
+    // bound range, so a batch is drawn in pieces that do not cross a range's end.
+    for (std::uint32_t drawn = 0; drawn < batch.count;) {
+      const std::size_t d = batch.first_draw + drawn;
+      const auto lit_range = static_cast<std::uint32_t>(d / gpu::kLitInstancesPerRange);
+      const std::size_t range_begin = std::size_t{lit_range} * gpu::kLitInstancesPerRange;
+      const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(batch.count - drawn, range_begin + gpu::kLitInstancesPerRange - d));
+      if (bound_set != std::int64_t{lit_range}) {
+        const auto offset = static_cast<std::uint32_t>(range_begin * gpu::kLitInstanceBytes);
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, *lit_set, offset);
+        bound_set = lit_range;
       }
-      cmd.draw(range.corner_count, 1, range.first_corner, 0);
-      ++draw_commands;
+      if (batch.instanced) {
+        // gl_InstanceIndex counts from firstInstance: the offset makes the sum the draw's index
+        // in the range (unsigned arithmetic wraps, in C++ and in GLSL alike).
+        const std::uint32_t first_instance = batch.first_instance + drawn;
+        const gpu::LitPushConstants push{.F = glm::mat4(1.0f),
+                                         .draw = static_cast<std::uint32_t>(d - range_begin) - first_instance};
+        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+        cmd.draw(range.corner_count, n, range.first_corner, first_instance);
+        ++draw_commands;
+      } else {
+        for (std::uint32_t i = 0; i < n; ++i) {
+          const gpu::LitPushConstants push{.F = list.draws[d + i].F, .draw = static_cast<std::uint32_t>(d + i - range_begin)};
+          cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+          cmd.draw(range.corner_count, 1, range.first_corner, 0);
+          ++draw_commands;
+        }
+      }
+      drawn += n;
     }
   }
   cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing

@@ -2,10 +2,9 @@
 
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
-#include <stdexcept>
-#include <string>
 
 namespace twinraster::gpu {
 namespace {
@@ -16,7 +15,7 @@ struct Std430Instance {
   std::array<glm::vec4, 4> model;   // mat4x3: the columns, w unused
   std::array<glm::vec4, 3> normal;  // mat3
 };
-static_assert(sizeof(Std430Instance) == 112);
+static_assert(sizeof(Std430Instance) == kLitInstanceBytes);
 struct Std430Light {
   glm::vec3 vector;
   float intensity;
@@ -32,21 +31,16 @@ std::uint64_t Corners(const DrawList& list) {
   return triangles * 3;
 }
 
-vk::DeviceSize InstanceBytes(const DrawList& list, const vk::PhysicalDeviceLimits& limits) {
-  const vk::DeviceSize bytes = vk::DeviceSize{list.draws.size()} * sizeof(Std430Instance);
-  if (bytes > limits.maxStorageBufferRange) {
-    throw std::invalid_argument("a lit scene draws at most " +
-                                std::to_string(limits.maxStorageBufferRange / sizeof(Std430Instance)) +
-                                " instances on this device, not " + std::to_string(list.draws.size()));
-  }
-  return bytes;
-}
+static_assert(kLitInstancesPerRange * kLitInstanceBytes <= (vk::DeviceSize{1} << 27),
+              "a range must fit the smallest maxStorageBufferRange Vulkan allows");
 
 }  // namespace
 
 LightBuffers::LightBuffers(const VulkanContext& context, const DrawList& list)
     : normals_(context, Corners(list) * sizeof(glm::vec3), vk::BufferUsageFlagBits::eVertexBuffer),
-      instances_(context, InstanceBytes(list, context.limits()), vk::BufferUsageFlagBits::eStorageBuffer),
+      instances_(context, vk::DeviceSize{list.draws.size()} * kLitInstanceBytes, vk::BufferUsageFlagBits::eStorageBuffer),
+      instance_range_(std::min<vk::DeviceSize>(std::max<std::size_t>(list.draws.size(), 1), kLitInstancesPerRange) *
+                      kLitInstanceBytes),
       lights_(context, kLightsHeader + list.lighting->lights.size() * sizeof(Std430Light),
               vk::BufferUsageFlagBits::eStorageBuffer) {
   // Corner normals in the corner buffer's order; an unlit mesh's corners get zeros (unread).

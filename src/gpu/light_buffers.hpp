@@ -7,20 +7,30 @@
 #include "gpu/host_buffer.hpp"
 #include "gpu/vulkan_context.hpp"
 
+#include <cstdint>
+
 namespace twinraster::gpu {
+
+// One storage-buffer binding shows the shader this many LitInstances, draws
+// [k · kLitInstancesPerRange, (k + 1) · kLitInstancesPerRange) for a dynamic offset k: 112 MiB,
+// inside the 128 MiB every Vulkan device allows in one binding, so a lit scene of any size is
+// drawn range by range.
+inline constexpr std::uint32_t kLitInstancesPerRange = 1u << 20;
+inline constexpr vk::DeviceSize kLitInstanceBytes = 112;  // std430 LitInstance: mat4x3 + mat3
 
 class LightBuffers {
  public:
-  // Throws std::invalid_argument if the list's instances do not fit one storage-buffer binding.
   LightBuffers(const VulkanContext& context, const DrawList& list);
 
   vk::Buffer normals() const { return normals_.buffer(); }      // vec3 per corner (binding 2)
   vk::Buffer instances() const { return instances_.buffer(); }  // LitInstance per draw
+  vk::DeviceSize instance_range() const { return instance_range_; }  // the binding's size
   vk::Buffer lights() const { return lights_.buffer(); }
 
  private:
   HostBuffer normals_;
   HostBuffer instances_;
+  vk::DeviceSize instance_range_;
   HostBuffer lights_;
 };
 

@@ -148,11 +148,12 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   // F, for the vertex shader (read on the per-draw path only).
   layout_ = make_layout(*colour_set_layout_, sizeof(PushConstants));
 
-  // The lit shaders read everything in the vertex stage.
+  // The lit shaders read everything in the vertex stage; the LitInstances (binding 1) through a
+  // dynamic offset, one range of kLitInstancesPerRange draws at a time (light_buffers.hpp).
   std::array<vk::DescriptorSetLayoutBinding, 3> lit_bindings{};
   for (std::uint32_t b = 0; b < lit_bindings.size(); ++b) {
     lit_bindings[b] = {.binding = b,
-                       .descriptorType = vk::DescriptorType::eStorageBuffer,
+                       .descriptorType = b == 1 ? vk::DescriptorType::eStorageBufferDynamic : vk::DescriptorType::eStorageBuffer,
                        .descriptorCount = 1,
                        .stageFlags = vk::ShaderStageFlagBits::eVertex};
   }

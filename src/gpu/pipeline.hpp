@@ -42,7 +42,8 @@ class Pipeline {
 
   const vk::raii::RenderPass& render_pass() const { return render_pass_; }
   // Unlit: binding 0, the triangle colours (fragment stage). Lit: binding 0, the base colours,
-  // 1, the LitInstances, 2, the lights (all vertex stage).
+  // 1, the LitInstances (through a dynamic offset: light_buffers.hpp), 2, the lights (all vertex
+  // stage).
   const vk::raii::DescriptorSetLayout& set_layout(bool lit) const { return lit ? lit_set_layout_ : colour_set_layout_; }
   const vk::raii::PipelineLayout& layout(bool lit) const { return lit ? lit_layout_ : layout_; }
   // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z).

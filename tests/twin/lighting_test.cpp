@@ -5,6 +5,7 @@
 #include "chain/matrices.hpp"
 #include "chain/normals.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
@@ -163,4 +164,35 @@ TEST_CASE("Scenes without lighting build exactly the draw list they did before",
       CHECK(mesh.normals.empty());
     }
   }
+}
+
+TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by range, still == the twin", "[twin][lighting][large]") {
+  // 1,050,000 lit cubes: more than gpu::kLitInstancesPerRange (2^20), so both the per-draw and the
+  // instanced path cross a range's end in the middle of a run of instances.
+  Scene scene = LoadScene(test::SourcePath("scenes/one-million-cubes.json"));
+  REQUIRE(scene.grids.size() == 1);
+  Instance cube = scene.instances[scene.grids[0].first];
+  scene.instances.clear();
+  scene.grids.clear();
+  for (int i = 0; i < 105; ++i)
+    for (int j = 0; j < 100; ++j)
+      for (int k = 0; k < 100; ++k) {
+        Instance copy = cube;
+        copy.transform.translation += glm::dvec3(i - 52, j - 49.5, k - 49.5);
+        scene.instances.push_back(copy);
+      }
+  scene.canvas.width = 480;
+  scene.canvas.height = 270;
+  scene.models[0].shading = Shading::kFlat;
+  scene.lighting = Lighting{.ambient = 0.2, .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {1, 2, -3}, .intensity = 0.8}}};
+  const DrawList list = BuildDrawList(scene);
+  REQUIRE(list.draws.size() > (std::size_t{1} << 20));
+  const test::TwinResult r = test::RenderTwins(list);
+  INFO(r.Describe());
+  REQUIRE(r.Equal());
+  // And the light is really there: the same cubes unlit are another picture.
+  scene.lighting.reset();
+  scene.models[0].shading = Shading::kUnlit;
+  REQUIRE(CompareImages(r.cpu, RenderOnCpu(BuildDrawList(scene))).differing_pixels > 10000);
+  test::RequireNoValidationMessages();
 }
