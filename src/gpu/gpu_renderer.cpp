@@ -244,8 +244,13 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
     for (std::uint32_t drawn = 0; drawn < batch.count;) {
       const std::size_t d = batch.first_draw + drawn;
       const auto lit_range = static_cast<std::uint32_t>(d / gpu::kLitInstancesPerRange);
-      const std::size_t range_begin = std::size_t{lit_range} * gpu::kLitInstancesPerRange;
-      const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(batch.count - drawn, range_begin + gpu::kLitInstancesPerRange - d));
+      const std::size_t range_end = std::size_t{lit_range + 1} * gpu::kLitInstancesPerRange;
+      // The binding shows kLitInstancesPerRange draws from range_begin; the last range's window
+      // is moved back to end with the buffer (an offset plus the range may not pass its end).
+      const std::size_t range_begin = std::min<std::size_t>(
+          std::size_t{lit_range} * gpu::kLitInstancesPerRange,
+          list.draws.size() > gpu::kLitInstancesPerRange ? list.draws.size() - gpu::kLitInstancesPerRange : 0);
+      const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(batch.count - drawn, range_end - d));
       if (bound_set != std::int64_t{lit_range}) {
         const auto offset = static_cast<std::uint32_t>(range_begin * gpu::kLitInstanceBytes);
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, *lit_set, offset);

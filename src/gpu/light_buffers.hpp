@@ -11,10 +11,10 @@
 
 namespace twinraster::gpu {
 
-// One storage-buffer binding shows the shader this many LitInstances, draws
-// [k · kLitInstancesPerRange, (k + 1) · kLitInstancesPerRange) for a dynamic offset k: 112 MiB,
-// inside the 128 MiB every Vulkan device allows in one binding, so a lit scene of any size is
-// drawn range by range.
+// One storage-buffer binding shows the shader this many LitInstances (112 MiB, inside the 128 MiB
+// every Vulkan device allows in one binding), from a dynamic offset: range k holds draws
+// [k · kLitInstancesPerRange, (k + 1) · kLitInstancesPerRange), and the renderer draws a lit scene
+// of any size range by range (the last range's window ends with the buffer).
 inline constexpr std::uint32_t kLitInstancesPerRange = 1u << 20;
 inline constexpr vk::DeviceSize kLitInstanceBytes = 112;  // std430 LitInstance: mat4x3 + mat3
 
