@@ -93,6 +93,7 @@ void ValidateDrawList(const DrawList& list) {
                                   std::to_string(list.meshes.size()));
     }
   }
+  if (list.lighting && list.wireframe) throw std::invalid_argument("a wireframe list has no lighting: edges are not lit");
   if (list.lighting && list.lighting->instances.size() != list.draws.size()) {
     throw std::invalid_argument("lighting has " + std::to_string(list.lighting->instances.size()) +
                                 " instances for " + std::to_string(list.draws.size()) + " draws");

@@ -3,6 +3,7 @@
 #include "chain/draw_list.hpp"
 #include "chain/matrices.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/chapter_cube.hpp"
 #include "support/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -49,4 +50,37 @@ TEST_CASE("ValidateDrawList names what a renderer could not draw", "[draw-list]"
   list = good;
   list.meshes[0].colours.pop_back();
   REQUIRE(message(list) == "mesh 0 has 12 triangles but 11 colours");
+}
+
+TEST_CASE("ValidateDrawList: lighting must cover every draw and every lit mesh, and never a wireframe", "[chain][lighting]") {
+  Scene scene;
+  scene.canvas = Canvas{.width = 8, .height = 8};
+  Model cube = test::ChapterCube();
+  cube.shading = Shading::kFlat;
+  scene.models.push_back(cube);
+  scene.instances.push_back(Instance{});
+  scene.lighting = Lighting{.ambient = 0.5, .lights = {}};
+  const DrawList lit = BuildDrawList(scene);
+  REQUIRE(lit.lighting.has_value());
+  REQUIRE_NOTHROW(ValidateDrawList(lit));
+  REQUIRE(lit.meshes[0].normals.size() == lit.meshes[0].triangles.size());
+
+  DrawList fewer = lit;
+  fewer.lighting->instances.clear();
+  CHECK_THROWS_WITH(ValidateDrawList(fewer), Catch::Contains("lighting has 0 instances for 1 draws"));
+  DrawList no_normals = lit;
+  no_normals.meshes[0].normals.pop_back();
+  CHECK_THROWS_WITH(ValidateDrawList(no_normals), Catch::Contains("corner normals"));
+  DrawList no_lighting = lit;
+  no_lighting.lighting.reset();
+  CHECK_THROWS_WITH(ValidateDrawList(no_lighting), Catch::Contains("is lit but the list has no lighting"));
+  DrawList wireframe = lit;
+  wireframe.wireframe = true;
+  CHECK_THROWS_WITH(ValidateDrawList(wireframe), Catch::Contains("edges are not lit"));
+
+  // A wireframe scene builds an unlit list: edges in the models' own colours.
+  scene.wireframe = true;
+  const DrawList edges = BuildDrawList(scene);
+  CHECK_FALSE(edges.lighting.has_value());
+  CHECK(edges.meshes[0].shading == Shading::kUnlit);
 }
