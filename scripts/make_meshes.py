@@ -5,13 +5,16 @@ triangles and n-gons, two materials, partly negative indices), terrain.obj (a he
 v//vn) and knot.obj (a (2,3) torus knot tube, triangles, v//vn). Every mesh is computed here from
 formulas; nothing is copied from anywhere.
 
-Rerun with `python3 scripts/make_meshes.py` (from any directory). The output is deterministic,
-byte for byte, and committed, so this only needs to run again when a mesh changes. Before writing,
+Rerun with `python3 scripts/make_meshes.py` (from any directory; `--out DIR` writes into DIR
+instead, which a CTest test uses to check that the committed meshes are this script's output).
+The output is deterministic, byte for byte, and committed, so this only needs to run again when a
+mesh changes. Before writing,
 the script reads each file back from its own text and checks it: every face is counter-clockwise
 seen from outside (the geometric normal (b - a) x (c - a) of every triangle of its fan, and for
 quads of the other diagonal's split too, points the same way as the corners' vn), closed meshes are
 closed and consistently wound (every edge used once each way, positive volume); then it prints one
 summary line per file."""
+import argparse
 import math
 import os
 
@@ -139,7 +142,7 @@ def write(name, text, closed=True):
         summary = check_obj(path, text, closed)
     else:
         summary = f"{path}: {len(text.encode())} bytes"
-    with open(os.path.join(ROOT, path), "w", newline="\n") as f:
+    with open(os.path.join(OUT_DIR, name), "w", newline="\n") as f:
         f.write(text)
     print(summary)
 
@@ -375,8 +378,13 @@ def knot():
     write("knot.obj", "\n".join(lines) + "\n")
 
 
+OUT_DIR = os.path.join(ROOT, OUT)
+
 if __name__ == "__main__":
-    os.makedirs(os.path.join(ROOT, OUT), exist_ok=True)
+    parser = argparse.ArgumentParser(description="Writes the project's OBJ meshes.")
+    parser.add_argument("--out", help="the directory to write into (default: scenes/meshes)")
+    OUT_DIR = os.path.abspath(parser.parse_args().out or OUT_DIR)
+    os.makedirs(OUT_DIR, exist_ok=True)
     torus()
     sphere()
     gem()
