@@ -166,19 +166,20 @@ std::string BenchSummary(const BenchResult& result) {
 std::string BenchTable(const BenchResult& result) {
   std::ostringstream out;
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s %10s\n", "scene", "method", "thr",
-                "vertex ms", "frame ms", "vertex err px", "image err", "z-fight", "colour err");
+  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s %19s\n", "scene", "method", "thr",
+                "vertex ms", "frame ms", "vertex err px", "image err", "z-fight", "colour err (pixels)");
   out << line;
   for (const BenchRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %10s\n", r.scene.c_str(), r.method.c_str(),
+    const std::string colour =
+        r.colour_error ? std::to_string(*r.colour_error) + " (" + std::to_string(r.colour_pixels) + ")" : "-";
+    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(), r.method.c_str(),
                   r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(), Fixed(r.frame_ms, 2).c_str(),
                   Sci(r.vertex_error_px).c_str(), static_cast<unsigned long long>(r.image_error_px),
-                  r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-",
-                  r.colour_error ? std::to_string(*r.colour_error).c_str() : "-");
+                  r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-", colour.c_str());
     out << line;
   }
   out << "colour err: lit scenes only, the largest channel difference (0-255) from the truth's colours, over the\n"
-         "pixels where the method shows the same triangle as the truth\n";
+         "pixels where the method shows the same triangle as the truth (how many in brackets)\n";
   out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n\n";
   out << BenchSummary(result);
   return out.str();
@@ -226,11 +227,16 @@ std::string BenchChartSvg(const BenchResult& result) {
   // Log axes; an error of exactly 0 is drawn on the bottom edge, at the floor value.
   constexpr double kErrorFloor = 1e-9;
   const double width = 760, height = 480, left = 80, right = 200, top = 30, bottom = 60;
-  struct Point { double x, y; std::string method, scene; };
+  struct Point { double x, y; std::string method, title; };
   std::vector<Point> points;
   for (const BenchRow& r : result.rows) {
     if (r.vertex_ms < 0 || r.vertex_error_px < 0 || r.vertices == 0) continue;
-    points.push_back({r.vertex_ms * 1e6 / double(r.vertices), std::max(r.vertex_error_px, kErrorFloor), r.method, r.scene});
+    // The tooltip names the point; on a lit scene it also gives the colour error the chart cannot.
+    std::string title = r.scene + " " + r.method;
+    if (r.colour_error) {
+      title += ", colour error " + std::to_string(*r.colour_error) + " over " + std::to_string(r.colour_pixels) + " pixels";
+    }
+    points.push_back({r.vertex_ms * 1e6 / double(r.vertices), std::max(r.vertex_error_px, kErrorFloor), r.method, title});
   }
   if (points.empty()) return "<svg xmlns=\"http://www.w3.org/2000/svg\"/>\n";
   double x_min = 1e300, x_max = 0, y_max = kErrorFloor * 10;
@@ -267,7 +273,7 @@ std::string BenchChartSvg(const BenchResult& result) {
       << ") rotate(-90)\" text-anchor=\"middle\">max vertex error, pixels</text>\n";
   for (const Point& p : points) {
     svg << "<circle cx=\"" << sx(p.x) << "\" cy=\"" << sy(p.y) << "\" r=\"4\" fill-opacity=\"0.7\" fill=\""
-        << colours.at(p.method) << "\"><title>" << p.scene << " " << p.method << "</title></circle>\n";
+        << colours.at(p.method) << "\"><title>" << p.title << "</title></circle>\n";
   }
   double legend_y = top + 10;
   for (const auto& [method, colour] : colours) {
