@@ -132,6 +132,10 @@ def main():
              ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
               scenes, "--json", "-q"], None, 0,
              lambda d: d["summary"]["cpu_twin_over_lavapipe"] == [] and d["summary"]["far_1e7_vertex_error_px"]["compose-f32"] is None),
+            ("bench, a lit scene: every row's colour error", "bench",
+             ["bench", "--runs", "1", "--only", "lit-flat", "--methods", "compose-f32,cpu-twin", "--scenes", scenes,
+              "--json", "-q"], None, 0,
+             lambda d: all(r["colour_error"] is not None and r["colour_pixels"] > 0 for r in d["rows"])),
         ]
         # The second and third images compare: another scene of the same size, and a smaller one.
         setup = [
