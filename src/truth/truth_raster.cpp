@@ -51,8 +51,8 @@ double InterpolateDepth(const std::array<glm::dvec3, 3>& v, const std::array<dou
 
 // A lit colour at a covered centre: perspective-correct, Σ b_i c_i / w_i over Σ b_i / w_i, with
 // the window-space weights b_i; then to UNORM8 as round(clamp(c, 0, 1) · 255), to nearest with
-// ties to even (nearbyint in the default rounding mode), no float anywhere. An exact tie needs
-// c · 255 = k + 1/2 exactly in double, which light almost never produces: ties are no matter.
+// ties to even (nearbyint in the default rounding mode), no float anywhere. The tie rule shows
+// only where c · 255 is k + 1/2 exactly in double; there float renderers may round either way.
 Rgb8 InterpolateColour(const WindowTriangle& t, const std::array<double, 3>& weights) {
   glm::dvec3 sum(0.0);
   double norm = 0;
