@@ -85,14 +85,16 @@ std::array<glm::dvec3, 3> HandCornerColours(const Scene& scene, std::size_t t, N
 glm::dvec3 ClipWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width, std::uint32_t height) {
   const double xn = 2.0 * (px + 0.5) / width - 1.0, yn = 2.0 * (py + 0.5) / height - 1.0;
   glm::dmat3 a;
-  for (int i = 0; i < 3; ++i) a[i] = glm::dvec3(clip[i].x - xn * clip[i].w, clip[i].y - yn * clip[i].w, 1.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    a[static_cast<glm::length_t>(i)] = glm::dvec3(clip[i].x - xn * clip[i].w, clip[i].y - yn * clip[i].w, 1.0);
+  }
   return glm::inverse(a) * glm::dvec3(0, 0, 1);
 }
 
 // The same weights for colours interpolated linearly on the screen (not perspective-correct).
 glm::dvec3 ScreenWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width, std::uint32_t height) {
   std::array<glm::dvec4, 3> projected;
-  for (int i = 0; i < 3; ++i) projected[i] = glm::dvec4(clip[i].x / clip[i].w, clip[i].y / clip[i].w, 0.0, 1.0);
+  for (std::size_t i = 0; i < 3; ++i) projected[i] = glm::dvec4(clip[i].x / clip[i].w, clip[i].y / clip[i].w, 0.0, 1.0);
   return ClipWeights(projected, px, py, width, height);
 }
 
