@@ -33,8 +33,8 @@ Rgb8 SurfaceColour(std::uint32_t n) {
   return Rgb8{static_cast<std::uint8_t>(n), static_cast<std::uint8_t>(n >> 8), static_cast<std::uint8_t>(n >> 16)};
 }
 
-// A square of two triangles facing the camera at (x, y, 5), half-size 1, lit flat by a light
-// along the view and ambient; `instances` copies side by side.
+// Squares of two triangles facing the camera, one at each of `where` (half-size 1), lit flat by
+// a light along the view and `ambient`.
 Scene LitSquares(const std::vector<glm::dvec3>& where, double ambient) {
   Scene scene;
   scene.canvas = Canvas{.width = 96, .height = 64, .background = Rgb8{0, 0, 0}};
