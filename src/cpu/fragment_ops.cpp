@@ -66,28 +66,20 @@ void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, fl
   }
 }
 
-// ShadeRow for a Gouraud triangle: every pixel's colour is computed (ColourAt, then UnormByte) and
+// ShadeRow for a Gouraud triangle: every pixel's colour is computed (ColourAt, then PackUnorm) and
 // written where the depth test passes, without branches, so that the compiler vectorizes it.
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
 __attribute__((target_clones("fma", "default")))
 #endif
 void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const DepthPlane& plane,
                     const ColourPlanes& colour, bool greater) {
-  const DepthPlane z_plane = plane, r = colour.colour_oow[0], g = colour.colour_oow[1], b = colour.colour_oow[2],
-                   w_plane = colour.oow;
   for (int px = begin; px < end; ++px) {
     const float x = static_cast<float>(px);
-    float z = std::fma(z_plane.dzdy, py, std::fma(z_plane.dzdx, x, z_plane.a0));  // PlaneDepth
-    z = z < 1.0f ? z : 1.0f;                                                         // ClampDepth
-    z = z > 0.0f ? z : 0.0f;
+    const float z = ClampDepth(PlaneDepth(plane, x, py));
     const float stored = depth[px];
     const bool pass = greater ? z > stored : z < stored;  // DepthTest
     depth[px] = pass ? z : stored;
-    const float w = 1.0f / std::fma(w_plane.dzdy, py, std::fma(w_plane.dzdx, x, w_plane.a0));  // ColourAt
-    const std::uint32_t word =
-        std::uint32_t{UnormByte(std::fma(r.dzdy, py, std::fma(r.dzdx, x, r.a0)) * w)} |
-        std::uint32_t{UnormByte(std::fma(g.dzdy, py, std::fma(g.dzdx, x, g.a0)) * w)} << 8 |
-        std::uint32_t{UnormByte(std::fma(b.dzdy, py, std::fma(b.dzdx, x, b.a0)) * w)} << 16 | 0xFF000000u;
+    const std::uint32_t word = PackUnorm(ColourAt(colour, x, py));
     std::uint32_t old;
     std::memcpy(&old, rgba + 4 * px, 4);
     const std::uint32_t written = pass ? word : old;

@@ -1,7 +1,5 @@
 #include "cpu/lighting.hpp"
 
-#include <array>
-#include <bit>
 #include <cmath>
 
 namespace twinraster::cpu {
@@ -37,11 +35,6 @@ glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance,
   const float scale = intensity < 1.0f ? intensity : 1.0f;
   return glm::vec3((static_cast<float>(base.r) / 255.0f) * scale, (static_cast<float>(base.g) / 255.0f) * scale,
                    (static_cast<float>(base.b) / 255.0f) * scale);
-}
-
-std::uint32_t PackUnorm(const glm::vec3& colour) {
-  return std::bit_cast<std::uint32_t>(
-      std::array<std::uint8_t, 4>{UnormByte(colour.x), UnormByte(colour.y), UnormByte(colour.z), 255});
 }
 
 }  // namespace twinraster::cpu

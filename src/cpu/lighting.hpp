@@ -12,6 +12,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <bit>
 #include <cstdint>
 
 namespace twinraster::cpu {
@@ -29,6 +31,9 @@ inline std::uint8_t UnormByte(float c) {
 }
 
 // The lit colour as the RGBA8 word the framebuffer holds (alpha 255), as PackRgba.
-std::uint32_t PackUnorm(const glm::vec3& colour);
+inline std::uint32_t PackUnorm(const glm::vec3& colour) {
+  return std::bit_cast<std::uint32_t>(
+      std::array<std::uint8_t, 4>{UnormByte(colour.x), UnormByte(colour.y), UnormByte(colour.z), 255});
+}
 
 }  // namespace twinraster::cpu
