@@ -5,31 +5,15 @@
 // as the bench draws it).
 #include "chain/draw_list.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
+#include "support/image_hashes.hpp"
 #include "truth/truth_renderer.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <cstdint>
-#include <filesystem>
 #include <map>
 #include <string>
-#include <vector>
 
 using namespace twinraster;
-
-namespace {
-
-std::uint64_t Fnv1a(const std::vector<std::uint8_t>& bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const std::uint8_t b : bytes) {
-    h ^= b;
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
-}  // namespace
 
 TEST_CASE("Truth: unlit scenes render byte for byte as before the truth learnt light", "[truth][lighting]") {
   const std::map<std::string, std::uint64_t> before = {
@@ -70,25 +54,20 @@ TEST_CASE("Truth: unlit scenes render byte for byte as before the truth learnt l
       {"hard/zero-negative-scale", 0xf8396ca81a4f80f3ull},
       {"lookat", 0x228471f6469ca600ull},
   };
-  std::size_t checked = 0;
-  for (const auto& file : test::ShippedScenes()) {
-    const std::string name =
-        std::filesystem::relative(file, test::SourcePath("scenes")).replace_extension().generic_string();
-    const auto it = before.find(name);
-    if (it == before.end()) continue;  // a lit scene, or one added since
-    INFO(name);
-    Scene scene = LoadScene(file);
-    REQUIRE_FALSE(scene.lighting.has_value());
-    scene.wireframe = false;  // the truth draws filled triangles only
-    const DrawList list = BuildDrawList(scene);
-    const ExactClipPositions clip = ExactClipSpace(scene);
-    CHECK(Fnv1a(RenderTruth(list, clip).rgba) == it->second);
-    // Neither a light (which lights nothing here) nor asking for the surfaces changes a byte.
-    const ExactLight light(scene);
-    const TruthImage with_surfaces = RenderTruthSurfaces(list, clip, &light);
-    CHECK(Fnv1a(with_surfaces.image.rgba) == it->second);
-    CHECK(with_surfaces.surfaces.size() == std::size_t{list.width} * list.height);
-    ++checked;
-  }
+  const std::size_t checked =
+      test::ForEachRecordedScene(before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
+        INFO(name);
+        Scene scene = LoadScene(file);
+        REQUIRE_FALSE(scene.lighting.has_value());
+        scene.wireframe = false;  // the truth draws filled triangles only
+        const DrawList list = BuildDrawList(scene);
+        const ExactClipPositions clip = ExactClipSpace(scene);
+        CHECK(test::ImageHash(RenderTruth(list, clip)) == hash);
+        // Neither a light (which lights nothing here) nor asking for the surfaces changes a byte.
+        const ExactLight light(scene);
+        const TruthImage with_surfaces = RenderTruthSurfaces(list, clip, &light);
+        CHECK(test::ImageHash(with_surfaces.image) == hash);
+        CHECK(with_surfaces.surfaces.size() == std::size_t{list.width} * list.height);
+      });
   REQUIRE(checked == before.size());  // every recorded scene is still shipped, and was checked
 }

@@ -5,29 +5,14 @@
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
+#include "support/image_hashes.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <cstdint>
-#include <filesystem>
 #include <map>
 #include <string>
 
 using namespace twinraster;
-
-namespace {
-
-std::uint64_t Fnv1a(const std::vector<std::uint8_t>& bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const std::uint8_t b : bytes) {
-    h ^= b;
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
-}  // namespace
 
 TEST_CASE("Unlit scenes render byte for byte as they did before lighting existed", "[twin][lighting]") {
   const std::map<std::string, std::uint64_t> before = {
@@ -68,16 +53,12 @@ TEST_CASE("Unlit scenes render byte for byte as they did before lighting existed
       {"hard/zero-negative-scale", 0xfaac7a5f12e15661ull},
       {"lookat", 0x228471f6469ca600ull},
   };
-  std::size_t checked = 0;
-  for (const auto& file : test::ShippedScenes()) {
-    std::string name = std::filesystem::relative(file, test::SourcePath("scenes")).replace_extension().generic_string();
-    const auto it = before.find(name);
-    if (it == before.end()) continue;  // a lit scene, or one added since
-    INFO(name);
-    const Scene scene = LoadScene(file);
-    REQUIRE_FALSE(scene.lighting.has_value());
-    CHECK(Fnv1a(RenderOnCpu(BuildDrawList(scene)).rgba) == it->second);
-    ++checked;
-  }
+  const std::size_t checked =
+      test::ForEachRecordedScene(before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
+        INFO(name);
+        const Scene scene = LoadScene(file);
+        REQUIRE_FALSE(scene.lighting.has_value());
+        CHECK(test::ImageHash(RenderOnCpu(BuildDrawList(scene))) == hash);
+      });
   REQUIRE(checked == before.size());  // every recorded scene is still shipped, and was checked
 }
