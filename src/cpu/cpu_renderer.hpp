@@ -3,6 +3,7 @@
 #pragma once
 
 #include "chain/draw_list.hpp"
+#include "cpu/raster_rules.hpp"
 #include "image/image.hpp"
 
 #include <glm/vec4.hpp>
@@ -21,6 +22,8 @@ struct CpuOptions {
   // Skip triangles hidden in a 16x16 tile by what is already drawn (cpu/depth_tiles.hpp). Exact,
   // so the image is the same without; off only to measure what it saves and to test that.
   bool depth_tiles = true;
+  // Which lavapipe's arithmetic to copy (cpu/twin_rules.hpp chooses it for a device and CPU path).
+  cpu::RasterRules rules{};
 };
 
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,

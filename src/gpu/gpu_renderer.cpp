@@ -320,6 +320,11 @@ Image GpuRenderer::Render(const DrawList& list, GpuTimings* timings) {
 
 std::string GpuRenderer::DeviceName() const { return impl_ ? impl_->context.device_name() : ""; }
 
+const DeviceIdentity& GpuRenderer::Device() const {
+  static const DeviceIdentity none;
+  return impl_ ? impl_->context.identity() : none;
+}
+
 const std::vector<std::string>& GpuRenderer::ValidationMessages() const {
   static const std::vector<std::string> none;
   return impl_ ? impl_->context.messages() : none;

@@ -34,6 +34,17 @@ struct GpuTimings {
   std::size_t instanced_draws = 0;  // draws of the list that were drawn instanced
 };
 
+// Who drew the image: what the twin needs to pick its rules (which Mesa, which vector width), and
+// what a report names. From vkGetPhysicalDeviceProperties2 with VkPhysicalDeviceDriverProperties;
+// the driver fields stay empty on a device older than Vulkan 1.2 without VK_KHR_driver_properties.
+struct DeviceIdentity {
+  std::string name;         // deviceName, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string driver_name;  // driverName, e.g. "llvmpipe"
+  std::string driver_info;  // driverInfo, e.g. "Mesa 22.3.6 (LLVM 15.0.6)"
+  std::uint32_t vendor_id = 0, device_id = 0, driver_id = 0, driver_version = 0, api_version = 0;
+  std::uint32_t subpixel_bits = 0;  // limits.subPixelPrecisionBits
+};
+
 // No usable Vulkan device, or the validation layer is missing; the message says what to install.
 class GpuUnavailable : public std::runtime_error {
  public:
@@ -55,6 +66,7 @@ class GpuRenderer {
   Image Render(const DrawList& list, GpuTimings* timings = nullptr);
 
   std::string DeviceName() const;
+  const DeviceIdentity& Device() const;
 
   // Every message the validation layer's debug messenger received (warnings and errors, including
   // synchronization validation); always empty without GpuOptions::validation.

@@ -72,6 +72,31 @@ std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
   return names.empty() ? "none" : names;
 }
 
+bool DeviceHasExtension(const vk::raii::PhysicalDevice& device, std::string_view name) {
+  for (const vk::ExtensionProperties& e : device.enumerateDeviceExtensionProperties()) {
+    if (name == e.extensionName.data()) return true;
+  }
+  return false;
+}
+
+DeviceIdentity Identify(const vk::raii::PhysicalDevice& device, const vk::PhysicalDeviceProperties& p) {
+  DeviceIdentity id;
+  id.name = p.deviceName.data();
+  id.vendor_id = p.vendorID, id.device_id = p.deviceID, id.driver_version = p.driverVersion;
+  id.api_version = p.apiVersion;
+  id.subpixel_bits = p.limits.subPixelPrecisionBits;
+  // VkPhysicalDeviceDriverProperties is core from Vulkan 1.2, an extension before it.
+  if (VK_API_VERSION_MINOR(p.apiVersion) >= 2 || VK_API_VERSION_MAJOR(p.apiVersion) > 1 ||
+      DeviceHasExtension(device, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
+    const auto chain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>();
+    const auto& driver = chain.get<vk::PhysicalDeviceDriverProperties>();
+    id.driver_name = driver.driverName.data();
+    id.driver_info = driver.driverInfo.data();
+    id.driver_id = static_cast<std::uint32_t>(driver.driverID);
+  }
+  return id;
+}
+
 }  // namespace
 
 // The loader is linked in (Vulkan::Vulkan), so we hand vulkan.hpp its entry point directly rather
@@ -124,7 +149,9 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
       .applicationVersion = 1,
       .pEngineName = "twinraster",
       .engineVersion = 1,
-      .apiVersion = VK_API_VERSION_1_0,  // everything used here is core Vulkan 1.0
+      // Drawing needs only core Vulkan 1.0; 1.1 makes vkGetPhysicalDeviceProperties2 core, which
+      // reads the driver's name and version (DeviceIdentity).
+      .apiVersion = VK_API_VERSION_1_1,
   };
   const vk::InstanceCreateInfo instance_info{
       .pNext = options.validation ? &validation_features : nullptr,
@@ -182,6 +209,7 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   queue_family_ = chosen_family;
   properties_ = physical_device_.getProperties();
   memory_properties_ = physical_device_.getMemoryProperties();
+  identity_ = Identify(physical_device_, properties_);
 
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queue_info{

@@ -23,6 +23,7 @@ class VulkanContext {
   std::uint32_t queue_family() const { return queue_family_; }
   const vk::PhysicalDeviceLimits& limits() const { return properties_.limits; }
   std::string device_name() const { return properties_.deviceName; }
+  const DeviceIdentity& identity() const { return identity_; }
   const std::vector<std::string>& messages() const { return messages_; }
   bool wireframe() const { return wireframe_; }  // polygonMode LINE (fillModeNonSolid) enabled
 
@@ -44,6 +45,7 @@ class VulkanContext {
   vk::raii::Device device_ = nullptr;
   vk::raii::Queue queue_ = nullptr;
   bool wireframe_ = false;
+  DeviceIdentity identity_;
 };
 
 }  // namespace twinraster::gpu

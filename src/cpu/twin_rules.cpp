@@ -1,0 +1,111 @@
+#include "cpu/twin_rules.hpp"
+
+#include <array>
+#include <regex>
+#include <string_view>
+
+namespace twinraster::cpu {
+namespace {
+
+// The default release: the one the twin was first written against (Debian 12's).
+constexpr std::string_view kDefaultMesa = "22.3.6";
+
+// One row per lavapipe the twin has been proven against, image for image, by the GPU == CPU tests
+// (docs/lavapipe-paths.md). A release is named exactly: another point release may have changed the
+// arithmetic, and only a test run can say it has not.
+struct KnownLavapipe {
+  std::string_view mesa;
+  std::string_view llvm_major;     // LLVM's major version the release was proven with
+  std::string_view instruction_set;  // CpuPath::InstructionSet()
+  int vector_bits;
+  RasterRules rules;
+};
+
+constexpr RasterRules kFma256{.fused_multiply_add = true, .vector_bits = 256};
+
+constexpr std::array kKnown = {
+    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kFma256},
+};
+
+// "15.0.6" -> "15"; "15" stays.
+std::string Major(const std::string& version) { return version.substr(0, version.find('.')); }
+
+const KnownLavapipe* Find(const LavapipeRelease& release, const CpuPath& path) {
+  for (const KnownLavapipe& known : kKnown) {
+    if (known.mesa == release.mesa && known.llvm_major == Major(release.llvm) &&
+        known.instruction_set == path.InstructionSet() && known.vector_bits == release.vector_bits) {
+      return &known;
+    }
+  }
+  return nullptr;
+}
+
+std::string PathText(const CpuPath& path, int vector_bits) {
+  CpuPath shown = path;
+  shown.vector_bits = vector_bits;
+  return shown.Text();
+}
+
+}  // namespace
+
+std::optional<LavapipeRelease> ParseLavapipe(const std::string& device_name, const std::string& driver_info) {
+  static const std::regex name_pattern(R"(^llvmpipe \(LLVM ([0-9.]+), ([0-9]+) bits\)$)");
+  static const std::regex info_pattern(R"(^Mesa ([0-9]+\.[0-9]+\.[0-9]+)(-devel)?\b)");
+  std::smatch name, info;
+  if (!std::regex_search(device_name, name, name_pattern)) return std::nullopt;
+  if (!std::regex_search(driver_info, info, info_pattern)) return std::nullopt;
+  LavapipeRelease release;
+  release.mesa = info[1].str() + info[2].str();
+  release.llvm = name[1].str();
+  release.vector_bits = std::stoi(name[2].str());
+  return release;
+}
+
+TwinRules ChooseTwinRules(const std::string& device_name, const std::string& driver_info, const CpuPath& path) {
+  TwinRules twin;
+  twin.device = device_name;
+  twin.path = path;
+  if (device_name.empty()) {
+    // No device: the default release, on the path lavapipe would take here.
+    LavapipeRelease assumed{std::string(kDefaultMesa), "", path.vector_bits};
+    for (const KnownLavapipe& known : kKnown) {
+      if (known.mesa == kDefaultMesa) assumed.llvm = known.llvm_major;
+    }
+    if (const KnownLavapipe* known = Find(assumed, path)) {
+      twin.exact = true;
+      twin.rules = known->rules;
+      twin.release = assumed;
+      twin.text = "lavapipe rules, Mesa " + assumed.mesa + " (assumed: no device was asked), " + path.Text();
+      return twin;
+    }
+    twin.text = "no bit-exact rules for Mesa " + assumed.mesa + " on " + path.Text();
+    return twin;
+  }
+  twin.release = ParseLavapipe(device_name, driver_info);
+  if (!twin.release) {
+    twin.text = "no bit-exact rules for " + device_name +
+                (driver_info.empty() ? "" : " (" + driver_info + ")") + ": the twin copies lavapipe only";
+    return twin;
+  }
+  const LavapipeRelease& release = *twin.release;
+  const std::string where = PathText(path, release.vector_bits);
+  if (const KnownLavapipe* known = Find(release, path)) {
+    twin.exact = true;
+    twin.rules = known->rules;
+    twin.text = "lavapipe rules, Mesa " + release.mesa + ", " + where;
+    return twin;
+  }
+  twin.text = "no bit-exact rules for Mesa " + release.mesa + " (LLVM " + release.llvm + ") on " + where;
+  return twin;
+}
+
+std::string KnownRulesText() {
+  std::string text;
+  for (const KnownLavapipe& known : kKnown) {
+    text += "lavapipe rules, Mesa " + std::string(known.mesa) + " (LLVM " + std::string(known.llvm_major) + "), " +
+            std::string(known.instruction_set) + ", " + std::to_string(known.vector_bits) + "-bit\n";
+  }
+  return text;
+}
+
+}  // namespace twinraster::cpu

@@ -1,0 +1,43 @@
+// The rules the twin follows for one lavapipe: the release read from the device (driverInfo and
+// the "LLVM x, N bits" in its name), the CPU path read from this machine (lavapipe_path.hpp), and
+// the twin's table of the pairs it copies bit for bit. Any other driver or path is named as such
+// ("no bit-exact rules for ..."), never compared as if it were known.
+#pragma once
+
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/raster_rules.hpp"
+
+#include <optional>
+#include <string>
+
+namespace twinraster::cpu {
+
+// What a lavapipe device says of itself.
+struct LavapipeRelease {
+  std::string mesa;  // "22.3.6", from driverInfo "Mesa 22.3.6 (LLVM 15.0.6)"
+  std::string llvm;  // "15.0.6", from the device name "llvmpipe (LLVM 15.0.6, 256 bits)"
+  int vector_bits = 0;
+};
+
+// Empty when the device is not lavapipe (or says too little to tell its release).
+std::optional<LavapipeRelease> ParseLavapipe(const std::string& device_name, const std::string& driver_info);
+
+struct TwinRules {
+  bool exact = false;  // the twin has bit-exact rules for this driver and path
+  RasterRules rules;   // what the twin follows: the matched rules, or the defaults when not exact
+  std::string device;  // the device's name, empty when none was asked (--backend cpu)
+  std::optional<LavapipeRelease> release;
+  CpuPath path;
+  // "lavapipe rules, Mesa 25.0.7, x86-64 SSE4.1, 128-bit", or
+  // "no bit-exact rules for Mesa 25.1.2 (LLVM 19.1.7): ...".
+  std::string text;
+};
+
+// `device_name` and `driver_info` empty: no device was asked; the twin follows its default release
+// on this machine's path and says so.
+TwinRules ChooseTwinRules(const std::string& device_name, const std::string& driver_info, const CpuPath& path);
+
+// The releases and paths the table knows, one line each, for --version and the docs.
+std::string KnownRulesText();
+
+}  // namespace twinraster::cpu
