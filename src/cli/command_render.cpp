@@ -1,7 +1,8 @@
 // `twinraster render SCENE...`: draws each scene on lavapipe, on the CPU twin or both, or (--rules
 // book) as the chapter's demos draw it; writes the PNGs (staged: all of a scene's or none, or one
-// PNG to standard output) and compares the images. Several scenes share one Vulkan device and
-// pipeline, and write into one directory.
+// PNG to standard output) and compares the images. The Vulkan work runs in a child process, which
+// several scenes share (with its device and pipeline) until the driver crashes; they write into
+// one directory.
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
 #include "book/book_renderer.hpp"
@@ -12,7 +13,10 @@
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
+#include "gpu/isolated_gpu.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 #include "scene/scene_error.hpp"
@@ -41,6 +45,7 @@ struct RenderArguments {
   bool wireframe = false;  // --wireframe: as if every scene said "wireframe": true
   bool json = false;
   std::string device;
+  double timeout_seconds = 600;  // the GPU process's time limit; 0: none
   unsigned threads = 0;
   bool quiet = false;
 };
@@ -48,9 +53,15 @@ struct RenderArguments {
 struct BackendRun {
   std::string name;    // "gpu" or "cpu"
   std::string detail;  // device name, or thread count
-  std::string output;  // a file, or "-" for standard output
+  std::string driver;  // gpu: the driver's own version string (driverInfo)
+  std::string output;  // a file, or "-" for standard output; empty when nothing was drawn
   Image image;
   double setup_ms = 0, draw_ms = 0, readback_ms = 0, png_ms = 0;
+  double isolation_ms = 0;  // gpu: the child process's cost (fork, pipe, shared pixels, wait)
+  // gpu: "rendered", "crashed" or "timed out"; `problem` says how, with the scene.
+  std::string status = "rendered";
+  std::string problem;
+  bool Drawn() const { return status == "rendered"; }
 };
 
 // "out.png" -> "out-gpu.png"
@@ -62,34 +73,51 @@ std::string Suffixed(const std::string& out, const std::string& suffix) {
   return p.string();
 }
 
-// The Vulkan device and pipeline are made for the first scene and kept for the others, so that
-// its set-up time includes them and later scenes' do not.
-BackendRun RenderGpu(const DrawList& list, const std::string& device, std::optional<GpuRenderer>& gpu,
-                     Progress& progress) {
-  BackendRun run{"gpu", "", {}, {}};
-  Stopwatch clock;
+// The Vulkan work runs in a child process (gpu/isolated_gpu.hpp): a driver that crashes or hangs
+// costs this scene its GPU image, not the run. The child and its device serve every scene of a
+// batch until one crashes; the next scene then gets a fresh one.
+BackendRun RenderGpu(const DrawList& list, const RenderArguments& a, const std::string& scene_argument,
+                     std::optional<GpuProcess>& gpu, Progress& progress, DeviceIdentity& device) {
+  BackendRun run;
+  run.name = "gpu";
+  progress.Status("gpu: drawing on Vulkan...");
   if (!gpu) {
-    progress.Status("gpu: starting Vulkan...");
-    GpuOptions options;
-    options.device = device;
+    IsolationOptions options;
+    options.gpu.device = a.device;
+    options.timeout_seconds = a.timeout_seconds;
     gpu.emplace(options);
   }
-  GpuRenderer& renderer = *gpu;
-  const double device_ms = clock.Milliseconds();
-  run.detail = renderer.DeviceName();
-  progress.Status("gpu: drawing on " + run.detail + "...");
-  GpuTimings t;
-  run.image = renderer.Render(list, &t);
+  IsolatedGpuResult r = gpu->Render(list);
+  device = r.device;
+  run.detail = r.device.name.empty() ? "no device" : r.device.name;
+  run.driver = r.device.driver_info;
+  switch (r.outcome) {
+    case GpuOutcome::kRendered:
+      break;
+    case GpuOutcome::kUnavailable:
+      throw GpuUnavailable(r.problem);  // exit 3, as before any child existed
+    case GpuOutcome::kBadList:
+      throw std::invalid_argument(r.problem);
+    case GpuOutcome::kCrashed:
+    case GpuOutcome::kTimedOut:
+      run.status = r.outcome == GpuOutcome::kCrashed ? "crashed" : "timed out";
+      run.problem = r.problem + " on " + (IsStandardStream(scene_argument) ? "<stdin>" : scene_argument);
+      return run;
+  }
+  run.image = std::move(r.image);
   // Set-up is everything before the draw: instance, device and pipeline, then buffers.
-  run.setup_ms = device_ms + t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
+  run.setup_ms = r.device_ms + r.timings.setup_ms, run.draw_ms = r.timings.draw_ms;
+  run.readback_ms = r.timings.readback_ms, run.isolation_ms = r.isolation_ms;
   return run;
 }
 
-BackendRun RenderCpu(const DrawList& list, unsigned threads, Progress& progress) {
-  BackendRun run{"cpu", "", {}, {}};
+BackendRun RenderCpu(const DrawList& list, unsigned threads, const cpu::RasterRules& rules, Progress& progress) {
+  BackendRun run;
+  run.name = "cpu";
   progress.Status("cpu: drawing...");
   CpuOptions options;
   options.threads = threads;
+  options.rules = rules;
   CpuTimings t;
   run.image = RenderOnCpu(list, options, &t);
   run.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
@@ -99,7 +127,8 @@ BackendRun RenderCpu(const DrawList& list, unsigned threads, Progress& progress)
 
 // The chapter's demos draw on one thread, straight into the image: all of it is drawing.
 BackendRun RenderBook(const Scene& scene, const std::string& scene_argument, Progress& progress) {
-  BackendRun run{"cpu", "book rules: the chapter's demos, 1 thread", {}, {}};
+  BackendRun run;
+  run.name = "cpu", run.detail = "book rules: the chapter's demos, 1 thread";
   progress.Status("cpu: drawing by the book's rules...");
   Stopwatch clock;
   try {
@@ -114,19 +143,45 @@ BackendRun RenderBook(const Scene& scene, const std::string& scene_argument, Pro
 }
 
 nlohmann::ordered_json RunJson(const BackendRun* run) {
+  using Json = nlohmann::ordered_json;
   if (!run) return nullptr;  // the backend was not asked for
-  return {{"output", run->output},
+  const auto or_null = [](const std::string& text) { return text.empty() ? Json(nullptr) : Json(text); };
+  return {{"status", run->status},
+          {"problem", or_null(run->problem)},
+          {"output", or_null(run->output)},
           {"device", run->detail},
+          {"driver", or_null(run->driver)},
           {"timings_ms",
-           {{"setup", run->setup_ms}, {"draw", run->draw_ms}, {"readback", run->readback_ms}, {"png", run->png_ms}}}};
+           {{"setup", run->setup_ms},
+            {"draw", run->draw_ms},
+            {"readback", run->readback_ms},
+            {"png", run->png_ms},
+            {"isolation", run->isolation_ms}}}};
+}
+
+nlohmann::ordered_json TwinJson(const std::optional<cpu::TwinRules>& twin) {
+  using Json = nlohmann::ordered_json;
+  if (!twin) return nullptr;
+  const auto release_field = [&](const std::string cpu::LavapipeRelease::*field) {
+    return twin->release ? Json((*twin->release).*field) : Json(nullptr);
+  };
+  return {{"exact", twin->exact},
+          {"text", twin->text},
+          {"mesa", release_field(&cpu::LavapipeRelease::mesa)},
+          {"llvm", release_field(&cpu::LavapipeRelease::llvm)},
+          {"cpu_path", twin->path.Text()},
+          {"instruction_set", twin->path.InstructionSet()},
+          {"vector_bits", twin->release ? twin->release->vector_bits : twin->path.vector_bits}};
 }
 
 std::string RunText(const BackendRun& run) {
+  if (!run.Drawn()) return run.name + ": " + run.problem + "; no " + run.name + " image";
   std::ostringstream s;
   s.precision(3);
   s << std::fixed << run.name << ": " << (IsStandardStream(run.output) ? "standard output" : run.output) << "  ("
     << run.detail << ")  setup " << run.setup_ms << " ms, draw " << run.draw_ms << " ms, readback " << run.readback_ms
     << " ms, png " << run.png_ms << " ms";
+  if (run.name == "gpu") s << ", process " << run.isolation_ms << " ms";
   return s.str();
 }
 
@@ -183,7 +238,7 @@ void CheckOutput(const RenderArguments& a) {
 
 // One scene, from reading it to its report. `directory`: where several scenes' files go.
 int RenderScene(const RenderArguments& a, const std::string& scene_argument, const std::optional<std::string>& directory,
-                std::optional<GpuRenderer>& gpu, Progress& progress) {
+                std::optional<GpuProcess>& gpu, Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
   Stopwatch load_clock;
   Scene scene = LoadSceneArgument(scene_argument);
@@ -197,19 +252,29 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   std::size_t triangles = 0;
   for (const Instance& instance : scene.instances) triangles += scene.models[instance.model].triangles.size();
 
-  // Render everything before writing anything: a run that fails writes no file at all.
+  // Render everything before writing anything: a run that fails writes no file at all. A GPU
+  // process that crashes or times out is a result: the twin still draws and its image is written.
   std::vector<BackendRun> runs;
+  std::optional<cpu::TwinRules> twin;
   if (book) {
     runs.push_back(RenderBook(scene, scene_argument, progress));
   } else {
-    if (a.backend != "cpu") runs.push_back(RenderGpu(list, a.device, gpu, progress));  // GpuUnavailable: exit 3
-    if (a.backend != "gpu") runs.push_back(RenderCpu(list, a.threads, progress));
+    DeviceIdentity device;
+    if (a.backend != "cpu") runs.push_back(RenderGpu(list, a, scene_argument, gpu, progress, device));  // GpuUnavailable: exit 3
+    if (a.backend != "gpu") {
+      // The twin copies the lavapipe that drew (or, with no device asked, its default release).
+      twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
+      runs.push_back(RenderCpu(list, a.threads, twin->rules, progress));
+    }
   }
-  for (BackendRun& run : runs) run.output = a.backend == "both" ? Suffixed(out, run.name) : out;
+  for (BackendRun& run : runs) {
+    if (run.Drawn()) run.output = a.backend == "both" ? Suffixed(out, run.name) : out;
+  }
+  const bool gpu_failed = std::any_of(runs.begin(), runs.end(), [](const BackendRun& r) { return !r.Drawn(); });
 
   std::optional<Comparison> comparison;
   const std::string diff_file = to_stdout ? "" : Suffixed(out, "diff");
-  if (runs.size() == 2) {
+  if (runs.size() == 2 && !gpu_failed) {
     progress.Status("comparing gpu and cpu...");
     comparison = CompareImages(runs[0].image, runs[1].image);
   }
@@ -219,6 +284,7 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   std::vector<StagedFile> staged;
   std::string png_bytes;  // for -o -
   for (BackendRun& run : runs) {
+    if (!run.Drawn()) continue;
     Stopwatch clock;
     if (to_stdout) png_bytes = EncodePng(run.image, a.png_level);
     else staged.push_back(StagePng(run.output, run.image, a.png_level));
@@ -233,7 +299,7 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     std::filesystem::remove(diff_file, ignored);
   }
   progress.Clear();
-  if (to_stdout) WriteStandardOutput(png_bytes);
+  if (to_stdout && !png_bytes.empty()) WriteStandardOutput(png_bytes);
 
   const auto find_run = [&](const char* name) -> const BackendRun* {
     for (const BackendRun& run : runs)
@@ -256,6 +322,7 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     j["max_channel_difference"] = comparison ? Json(comparison->max_channel_difference) : Json(nullptr);
     j["diff"] = wrote_diff ? Json(diff_file) : Json(nullptr);
     j["backends"] = {{"gpu", RunJson(find_run("gpu"))}, {"cpu", RunJson(find_run("cpu"))}};
+    j["twin_rules"] = TwinJson(twin);
     // One scene: the object, indented. Several: JSON Lines, one object per scene as it finishes.
     std::cout << (directory ? j.dump() : j.dump(2)) << "\n" << std::flush;
   } else if (!(to_stdout && a.quiet)) {
@@ -268,11 +335,17 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
          << " triangles, " << scene.canvas.width << " x " << scene.canvas.height << ", loaded in " << load_ms << " ms";
     report << work.str() << "\n";
     for (const BackendRun& run : runs) report << RunText(run) << "\n";
+    if (twin) report << "twin: " << twin->text << "\n";
     if (comparison) {
       report << "gpu vs cpu: " << ComparisonText(runs[0].image, runs[1].image, *comparison)
-             << (wrote_diff ? ", diff in " + diff_file : "") << "\n";
+             << (wrote_diff ? ", diff in " + diff_file : "")
+             << (!comparison->Equal() && twin && !twin->exact ? " (the twin has no rules for this driver: not a verdict)" : "")
+             << "\n";
+    } else if (runs.size() == 2) {
+      report << "gpu vs cpu: not compared, there is no gpu image\n";
     }
   }
+  if (gpu_failed) return kExitGpuFailed;
   return comparison && !comparison->Equal() ? kExitImagesDiffer : kExitOk;
 }
 
@@ -280,15 +353,16 @@ int Render(RenderArguments& a) {
   ResolveRules(a);
   CheckOutput(a);
   Progress progress = Progress::OnStandardError(a.quiet);
-  std::optional<GpuRenderer> gpu;
+  std::optional<GpuProcess> gpu;
   if (a.scenes.size() == 1) return RenderScene(a, a.scenes.front(), std::nullopt, gpu, progress);
 
   const std::string directory = a.output.value_or(".");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw FileError(directory + ": cannot create the directory: " + error.message());
-  // Each scene on its own: a bad scene or an unwritable output is reported and the others still
-  // render; the exit code is the worst of them. No Vulkan device ends the run (exit 3).
+  // Each scene on its own: a bad scene, an unwritable output or a crashed GPU process is reported
+  // and the others still render; the exit code is the worst of them. No Vulkan device ends the run
+  // (exit 3).
   int worst = kExitOk;
   for (const std::string& scene : a.scenes) {
     int code = kExitOk;
@@ -316,8 +390,11 @@ CommandRun AddRenderCommand(CLI::App& app) {
       app, "render", "draw a scene on Vulkan, on the CPU twin, or on both and compare; or as the book's demos do",
       "Each PNG is written whole to a temporary file and renamed into place: a failed run leaves\n"
       "earlier files untouched. On a terminal, progress shows on standard error.\n"
+      "The Vulkan work runs in a child process: when the driver crashes or passes --timeout, the\n"
+      "report says so, the twin's image is still written, and later scenes still render.\n"
       "Exit codes: 0 done (both: identical images), 1 the images differ, 2 bad input or usage,\n"
-      "3 no usable Vulkan device (--backend cpu needs none), 4 internal error.");
+      "3 no usable Vulkan device (--backend cpu needs none), 4 internal error, 5 the Vulkan\n"
+      "driver crashed or timed out (the twin's image and the report were still written).");
   command
       ->add_option("SCENE", a->scenes,
                    "scene files (JSON) or OBJ meshes (.obj: framed, lit by a headlight), or - to\n"
@@ -350,9 +427,15 @@ CommandRun AddRenderCommand(CLI::App& app) {
   command->add_flag("--wireframe", a->wireframe,
                     "draw triangle edges only (Vulkan's polygonMode LINE, 1 pixel, depth-tested), as\n"
                     "if the scene said \"wireframe\": true; the twin follows lavapipe's line rules");
-  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/1, docs/json-output.md)");
+  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/2, docs/json-output.md)");
   command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
       ->type_name("NAME");
+  command
+      ->add_option("--timeout", a->timeout_seconds,
+                   "seconds the Vulkan driver may take for one scene before it is stopped and\n"
+                   "the scene reported as timed out (default 600; 0: no limit)")
+      ->type_name("SECONDS")
+      ->check(CLI::NonNegativeNumber);
   ExpectIndex(command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
   return [a, backend] {

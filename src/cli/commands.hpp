@@ -17,6 +17,7 @@ enum ExitCode : int {
   kExitBadInput = 2,
   kExitNoVulkan = 3,
   kExitInternalError = 4,
+  kExitGpuFailed = 5,  // the Vulkan driver crashed or timed out; everything else was still done
 };
 
 // Runs a parsed command and returns the exit code; throws SceneError, FileError, UsageError or

@@ -21,6 +21,11 @@ except ImportError:
 
 # A camera at the origin and a vertex in its plane (camera z = 0): clip w is 0, so the divided
 # coordinates are not finite and print as null, which the explain schema must allow.
+# The GPU process made to fail on purpose (the test-only variable of gpu/isolated_gpu.hpp).
+GPU_CRASH = "render whose Vulkan driver crashes: the twin's image and the report still written"
+GPU_HANG = "render whose Vulkan driver hangs past --timeout"
+ENVIRONMENTS = {GPU_CRASH: {"TWINRASTER_TEST_GPU_FAULT": "abort"}, GPU_HANG: {"TWINRASTER_TEST_GPU_FAULT": "hang"}}
+
 W_ZERO_SCENE = {
     "canvas": {"width": 8, "height": 6},
     "viewport": {"width": 1, "height": 1, "distance": 1},
@@ -104,7 +109,16 @@ def main():
              None, 0, lambda d: d["backends"]["gpu"] is None and d["diff"] is None),
             ("render --backend both", "render", ["render", transforms, "--json", "-o", out("b.png")], None, 0,
              lambda d: d["rules"] == "vulkan" and d["differing_pixels"] == 0
-             and d["backends"]["gpu"]["output"] == out("b-gpu.png")),
+             and d["backends"]["gpu"]["output"] == out("b-gpu.png") and d["backends"]["gpu"]["status"] == "rendered"
+             and d["backends"]["gpu"]["driver"].startswith("Mesa ") and d["twin_rules"]["exact"]
+             and d["twin_rules"]["text"].startswith("lavapipe rules, Mesa " + d["twin_rules"]["mesa"])),
+            (GPU_CRASH, "render", ["render", transforms, "--json", "-o", out("crash.png")], None, 5,
+             lambda d: d["backends"]["gpu"]["status"] == "crashed" and d["backends"]["gpu"]["output"] is None
+             and "(SIGABRT)" in d["backends"]["gpu"]["problem"] and d["backends"]["cpu"]["output"] == out("crash-cpu.png")
+             and d["differing_pixels"] is None and d["twin_rules"] is not None),
+            (GPU_HANG, "render", ["render", transforms, "--json", "--timeout", "1", "--backend", "gpu",
+             "-o", out("hang.png")], None, 5,
+             lambda d: d["backends"]["gpu"]["status"] == "timed out" and d["twin_rules"] is None),
             ("render --rules book", "render", ["render", transforms, "--json", "--rules", "book", "-o", out("book.png")],
              None, 0, lambda d: d["rules"] == "book" and d["backends"]["gpu"] is None
              and d["backends"]["cpu"]["output"] == out("book.png") and d["differing_pixels"] is None),
@@ -157,7 +171,8 @@ def main():
             validator = validators[schema_name]
             failures_before = len(failures)
             run = subprocess.run([args.exe] + arguments, input=stdin.encode() if stdin else None,
-                                 capture_output=True, stdin=None if stdin else subprocess.DEVNULL)
+                                 capture_output=True, stdin=None if stdin else subprocess.DEVNULL,
+                                 env={**os.environ, **ENVIRONMENTS.get(what, {})})
             if run.returncode != expected_exit:
                 failures.append(f"{what}: exit code {run.returncode}, expected {expected_exit}: {run.stderr.decode()}")
                 continue

@@ -1,0 +1,70 @@
+// Draws DrawLists with GpuRenderer in a child process, so that a Vulkan driver that crashes or
+// hangs becomes a result the caller reports, not the end of the caller (as Mesa's deqp-runner
+// isolates its test groups).
+#pragma once
+
+#include "chain/draw_list.hpp"
+#include "gpu/gpu_renderer.hpp"
+#include "image/image.hpp"
+
+#include <memory>
+#include <string>
+
+namespace twinraster {
+
+enum class GpuOutcome {
+  kRendered,     // `image` holds the frame
+  kUnavailable,  // no usable Vulkan device (GpuUnavailable in the child); `problem` says why
+  kBadList,      // the renderer refused the list (std::invalid_argument); `problem` says why
+  kCrashed,      // the child died (`signal`, e.g. "SIGABRT"), or failed in a way it cannot go on from
+  kTimedOut,     // the child passed the time limit and was killed
+};
+
+struct IsolatedGpuResult {
+  GpuOutcome outcome = GpuOutcome::kCrashed;
+  Image image;
+  // Known once the child has its device, so also when a draw then crashes; empty name when the
+  // child died before that.
+  DeviceIdentity device;
+  GpuTimings timings;
+  double device_ms = 0;  // instance, device and pipelines: the child's first list only
+  std::string signal;    // kCrashed by a signal: "SIGABRT", "SIGSEGV", ...
+  std::string problem;   // what went wrong, in words, for every outcome but kRendered
+  // Wall time this process spent on the list minus what the child measured drawing it: fork or
+  // sending the list, the pipe, the pixels coming back. What isolation costs.
+  double isolation_ms = 0;
+};
+
+struct IsolationOptions {
+  GpuOptions gpu;
+  double timeout_seconds = 0;  // per list; 0: wait as long as the child takes
+};
+
+// One child process with one GpuRenderer, kept for every list while it lives. The first list (and
+// the first after a crash) is inherited by a fresh child copy-on-write, so a single render sends
+// nothing; later lists go to the living child through a pipe, so its device and pipelines are
+// made once. This process never loads the Vulkan driver.
+//
+// For tests only: TWINRASTER_TEST_GPU_FAULT=abort or =hang makes the child abort, or sleep
+// forever, once it has its device and before it draws.
+class GpuProcess {
+ public:
+  explicit GpuProcess(IsolationOptions options);
+  ~GpuProcess();  // kills the child
+  GpuProcess(const GpuProcess&) = delete;
+  GpuProcess& operator=(const GpuProcess&) = delete;
+
+  // Throws only std::system_error when the operating system refuses a pipe or a process.
+  IsolatedGpuResult Render(const DrawList& list);
+
+ private:
+  struct Child;
+  IsolationOptions options_;
+  std::unique_ptr<Child> child_;  // none before the first list and after a crash
+  DeviceIdentity device_;         // the living child's
+};
+
+// One list in a child of its own.
+IsolatedGpuResult RenderIsolated(const DrawList& list, const IsolationOptions& options);
+
+}  // namespace twinraster
