@@ -21,7 +21,7 @@ class Encoder {
   void Vector(const std::vector<T>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     Value(std::uint64_t{values.size()});
-    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    if (!values.empty()) bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
   std::string bytes;
 };
@@ -39,7 +39,7 @@ class Decoder {
     Value(n);
     if (n > (bytes_.size() - at_) / sizeof(T)) throw std::invalid_argument("draw list bytes: a vector runs past the end");
     values.resize(n);
-    std::memcpy(values.data(), Take(n * sizeof(T)), n * sizeof(T));
+    if (n > 0) std::memcpy(values.data(), Take(n * sizeof(T)), n * sizeof(T));  // an empty vector's data() may be null
   }
   bool Done() const { return at_ == bytes_.size(); }
 

@@ -18,6 +18,21 @@ const std::string kTransforms = test::SourcePath("scenes/cgfs-transforms.json").
 const std::string kLookAt = test::SourcePath("scenes/lookat.json").string();
 const std::string kDegenerate = test::SourcePath("scenes/hard/degenerate.json").string();
 
+// The crash below is glibc's malloc finding its heap corrupted; under AddressSanitizer the
+// executable allocates with ASan's allocator instead, which does not notice (Mesa is not
+// instrumented), and the driver draws on.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kGlibcMalloc = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kGlibcMalloc = false;
+#else
+constexpr bool kGlibcMalloc = true;
+#endif
+#else
+constexpr bool kGlibcMalloc = true;
+#endif
+
 }  // namespace
 
 TEST_CASE("render: a Vulkan driver that aborts is reported, and the twin's image is still written",
@@ -78,7 +93,7 @@ TEST_CASE("render: lavapipe's own crash at 128-bit vectors costs one scene its G
   CHECK(std::filesystem::exists(dir / "degenerate-cpu.png"));
   CHECK(second["backends"]["gpu"]["status"] == "rendered");
   CHECK(std::filesystem::exists(dir / "cgfs-transforms-gpu.png"));
-  if (first["backends"]["gpu"]["driver"] == "Mesa 22.3.6 (LLVM 15.0.6)") {
+  if (kGlibcMalloc && first["backends"]["gpu"]["driver"] == "Mesa 22.3.6 (LLVM 15.0.6)") {
     CHECK(first["backends"]["gpu"]["status"] == "crashed");
     CHECK(r.exit_code == 5);
   } else {
