@@ -6,7 +6,7 @@
 # 4 GiB) fails the script; its input is left in build-fuzz/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --tests
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 fuzzer=./build-fuzz/fuzz/scene_loader_fuzzer

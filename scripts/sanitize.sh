@@ -4,7 +4,7 @@
 # LeakSanitizer; tests/lsan.supp silences only the Vulkan driver's own (see the README).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --tests
 cmake --preset sanitize >/dev/null
 cmake --build --preset sanitize
 ctest --preset sanitize

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs twinraster's build and test dependencies from Debian packages.
+# Installs twinraster's dependencies from Debian packages: what the program needs to build and run
+# (no argument), or that plus what the tests need (--tests). The names exist on Debian 12
+# (bookworm) and 13 (trixie) alike; clang and libclang-rt-dev are each release's default version.
 # Idempotent: packages already present are skipped, and `apt-get update` runs only when
 # something is missing (so it also works on a machine where it never ran).
 set -euo pipefail
@@ -8,21 +10,28 @@ packages=(
   cmake g++ make                 # build
   libvulkan-dev                  # Vulkan headers + loader (vulkan.hpp / vulkan_raii.hpp)
   mesa-vulkan-drivers            # lavapipe, the software Vulkan device
-  vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
   glslang-dev glslang-tools      # glslangValidator compiles shaders/ to SPIR-V at build time
   spirv-tools                    # spirv-val checks the SPIR-V the build embeds
   libglm-dev                     # matrix and vector types
   libstb-dev                     # stb_image (PNG in, for compare)
   libdeflate-dev                 # PNG compression
-  catch2                         # unit tests (Catch2 v2 on Debian 12)
   nlohmann-json3-dev             # scene files: the locating parser behind every error message
   libsimdjson-dev                # scene files: the fast parser
   libtinyobjloader-dev           # OBJ meshes a scene names (or render mesh.obj)
   libcli11-dev                   # the command line
-  clang libclang-rt-14-dev       # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
+)
+test_packages=(
+  vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
+  catch2                         # unit tests (Catch2 2 on Debian 12, 3 on Debian 13)
+  clang libclang-rt-dev          # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
   llvm                           # llvm-symbolizer: file:line in sanitizer and fuzzer reports
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
 )
+case "${1:-}" in
+  "") ;;
+  --tests) packages+=("${test_packages[@]}") ;;
+  *) echo "usage: scripts/setup.sh [--tests]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

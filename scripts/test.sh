@@ -4,8 +4,8 @@
 # file in the source tree outside build/ and out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-cmake --preset release -DTWINRASTER_WERROR=ON >/dev/null
+bash scripts/setup.sh --tests
+cmake --preset release -DTWINRASTER_WERROR=ON -DTWINRASTER_BUILD_TESTS=ON >/dev/null
 cmake --build --preset release
 
 in_git=false

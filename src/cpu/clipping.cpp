@@ -17,6 +17,13 @@ constexpr float kPlanes[kClipPlaneCount][4] = {
     {0, 0, 1, 0},   // z >= 0
     {0, 0, -1, 1},  // w - z >= 0
 };
+// The x and y planes at the guard band (draw_pt_post_vs.c's DO_CLIP_XY_GUARD_BAND): w ± x/2 >= 0.
+constexpr float kGuardBandPlanes[4][4] = {
+    {-0.5f, 0, 0, 1},
+    {0.5f, 0, 0, 1},
+    {0, -0.5f, 0, 1},
+    {0, 0.5f, 0, 1},
+};
 
 // Linear interpolation from `base` toward `other`, per component: base + t * (other - base).
 template <int N>
@@ -45,8 +52,8 @@ unsigned Outcode(const glm::vec4& clip) {
   return code;
 }
 
-float PlaneDistance(const glm::vec4& clip, int plane) {
-  const float* p = kPlanes[plane];
+float PlaneDistance(const glm::vec4& clip, int plane, bool guard_band_xy) {
+  const float* p = guard_band_xy && plane < 4 ? kGuardBandPlanes[plane] : kPlanes[plane];
   return ((clip.x * p[0] + clip.y * p[1]) + clip.z * p[2]) + clip.w * p[3];
 }
 
@@ -74,7 +81,7 @@ ClipVertex IntersectEdge(const ClipVertex& prev, float d_prev, const ClipVertex&
 }
 
 void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, unsigned clipmask,
-                  const ViewportState& vp, ClippedPolygon& out) {
+                  const ViewportState& vp, ClippedPolygon& out, bool guard_band_xy) {
   constexpr int kCapacity = kMaxClippedVertices + 1;
   ClipVertex buffer_a[kCapacity];
   ClipVertex buffer_b[kCapacity];
@@ -91,13 +98,13 @@ void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
     const int plane = std::countr_zero(clipmask);
     clipmask &= ~(1u << plane);
 
-    float d_prev = PlaneDistance(in[0].clip, plane);
+    float d_prev = PlaneDistance(in[0].clip, plane, guard_band_xy);
     if (!std::isfinite(d_prev) || n >= kMaxClippedVertices) return;
     in[n] = in[0];  // close the loop without rotating the vertices
 
     int count = 0;
     for (int i = 1; i <= n; ++i) {
-      const float d = PlaneDistance(in[i].clip, plane);
+      const float d = PlaneDistance(in[i].clip, plane, guard_band_xy);
       if (!std::isfinite(d)) return;
       bool crosses;
       if (d_prev >= 0.0f) {  // keep the previous vertex: it is inside (or on the plane)

@@ -39,7 +39,7 @@ constexpr int kMaxClippedVertices = 2 * (6 + 8) + 1;
 unsigned Outcode(const glm::vec4& clip);
 
 // Signed distance of a clip position to plane `plane` (0..5, the bit index above): >= 0 is inside.
-float PlaneDistance(const glm::vec4& clip, int plane);
+float PlaneDistance(const glm::vec4& clip, int plane, bool guard_band_xy = false);
 
 struct ClipVertex {
   glm::vec4 clip{0.0f};
@@ -64,7 +64,9 @@ ClipVertex IntersectEdge(const ClipVertex& prev, float d_prev, const ClipVertex&
 
 // Clips triangle (a, b, c) against the planes in `clipmask` (the union of the vertices' outcodes,
 // not 0, and the intersection 0). A NaN or infinite distance drops the whole triangle.
+// `guard_band_xy`: the x and y planes are the guard band's |x|, |y| <= 2w (the outcodes still say
+// which planes to clip against: lavapipe's JIT computes them against w whatever the planes).
 void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, unsigned clipmask,
-                  const ViewportState& vp, ClippedPolygon& out);
+                  const ViewportState& vp, ClippedPolygon& out, bool guard_band_xy = false);
 
 }  // namespace twinraster::cpu

@@ -20,7 +20,8 @@ struct ColourPlanes {
 };
 
 // v0, v1, v2 in the order triangle setup left them (after the winding swap), as the depth plane.
-ColourPlanes MakeColourPlanes(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2);
+// `fused`: evaluated with fmaf (RasterRules::fused_multiply_add), as the depth plane.
+ColourPlanes MakeColourPlanes(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, bool fused = true);
 
 // The interpolated colour at pixel (px, py), before the conversion to UNORM8.
 inline glm::vec3 ColourAt(const ColourPlanes& p, float px, float py) {

@@ -55,7 +55,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   const int height = static_cast<int>(list.height);
   for (const GeometryChunk& chunk : chunks) {
     // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
-    ProcessGeometry(list, chunk, threads, scratch, clip, bands);
+    ProcessGeometry(list, chunk, threads, options.rules, scratch, clip, bands);
     setup_ms += clock.Lap();
     // Draw: each part rasterizes its own bands, each band's triangles (or lines) in list order.
     ParallelParts(threads, [&](unsigned part) {

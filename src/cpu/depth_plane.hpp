@@ -1,6 +1,7 @@
 // Stage 6, depth interpolation: the plane z(px, py) through the three window-space vertices, built
 // in float exactly as llvmpipe's triangle setup builds its interpolants, and evaluated at integer
-// pixel indices with two fused multiply-adds, then clamped to the depth range [0, 1].
+// pixel indices with two fused multiply-adds (or, on a lavapipe without FMA, two multiplies and two
+// adds), then clamped to the depth range [0, 1].
 #pragma once
 
 #include "cpu/viewport_transform.hpp"
@@ -13,6 +14,7 @@ struct DepthPlane {
   float a0 = 0;    // z at pixel (0, 0)
   float dzdx = 0;  // per pixel to the right
   float dzdy = 0;  // per pixel down
+  bool fused = true;  // evaluated with fmaf (RasterRules::fused_multiply_add)
 };
 
 // v0, v1, v2 in the order triangle setup left them (after the winding swap).
@@ -21,8 +23,10 @@ DepthPlane MakeDepthPlane(const WindowPos& v0, const WindowPos& v1, const Window
 // sets up every linearly interpolated input this way.
 DepthPlane MakePlane(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2, float a0, float a1, float a2);
 
-// Unclamped plane value at pixel (px, py): fmaf(dzdy, py, fmaf(dzdx, px, a0)).
+// Unclamped plane value at pixel (px, py): fmaf(dzdy, py, fmaf(dzdx, px, a0)), or the same with
+// each multiply and add rounded on its own.
 inline float PlaneDepth(const DepthPlane& p, float px, float py) {
+  if (!p.fused) return p.dzdy * py + (p.dzdx * px + p.a0);
   return std::fma(p.dzdy, py, std::fma(p.dzdx, px, p.a0));
 }
 

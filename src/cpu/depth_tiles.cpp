@@ -29,11 +29,11 @@ double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare 
   // pixel index is exact in double.
   const double lowest = a0 + std::min(dzdx * x0, dzdx * x1) + std::min(dzdy * y0, dzdy * y1);
   const double highest = a0 + std::max(dzdx * x0, dzdx * x1) + std::max(dzdy * y0, dzdy * y1);
-  // Each fma rounds once, by at most 2^-24 of a value no larger than `scale` (and by 2^-150 when
-  // subnormal); 2^-22 covers both roundings twice over, and the double sums above too.
+  // Each rounding (two with fma, four without) is at most 2^-24 of a value no larger than `scale`
+  // (and 2^-150 when subnormal); 2^-21 covers four twice over, and the double sums above too.
   const double scale = std::fabs(a0) + std::fabs(dzdx) * std::max(std::fabs(x0), std::fabs(x1)) +
                        std::fabs(dzdy) * std::max(std::fabs(y0), std::fabs(y1));
-  const double slack = scale * 0x1p-22 + 0x1p-126;
+  const double slack = scale * 0x1p-21 + 0x1p-126;
   // A NaN plane value is clamped to 1 (ClampDepth): 0 and 1 are the bounds that stay true then.
   if (op == DepthCompare::kLess) {
     const double z = lowest - slack;

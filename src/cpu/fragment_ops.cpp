@@ -44,17 +44,15 @@ DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept
 
 namespace {
 
-// Written so that the compiler can vectorize it (no branches, every store unconditional). On x86-64
-// a second copy is built for CPUs with FMA (chosen at load time), where fmaf is one instruction;
-// the portable copy's fmaf is a library call, just as exact, only slower.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("fma", "default")))
-#endif
-void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
-              float dzdy, bool greater, std::uint32_t fill) {
+// Written so that the compiler can vectorize it (no branches, every store unconditional), once per
+// way of evaluating the depth plane (PlaneDepth, fused or not).
+template <bool kFused>
+[[gnu::always_inline]] inline void ShadeRowBody(float* depth, std::uint8_t* rgba, int begin, int end, float py,
+                                                float a0, float dzdx, float dzdy, bool greater, std::uint32_t fill) {
   for (int px = begin; px < end; ++px) {
-    float z = std::fma(dzdy, py, std::fma(dzdx, static_cast<float>(px), a0));  // PlaneDepth
-    z = z < 1.0f ? z : 1.0f;                                                   // ClampDepth
+    const float x = static_cast<float>(px);
+    float z = kFused ? std::fma(dzdy, py, std::fma(dzdx, x, a0)) : dzdy * py + (dzdx * x + a0);  // PlaneDepth
+    z = z < 1.0f ? z : 1.0f;                                                                     // ClampDepth
     z = z > 0.0f ? z : 0.0f;
     const float stored = depth[px];
     const bool pass = greater ? z > stored : z < stored;  // DepthTest
@@ -64,6 +62,21 @@ void ShadeRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, fl
     const std::uint32_t written = pass ? fill : old;
     std::memcpy(rgba + 4 * px, &written, 4);
   }
+}
+
+// On x86-64 a second copy of the fused row is built for CPUs with FMA (chosen at load time), where
+// fmaf is one instruction; the portable copy's fmaf is a library call, just as exact, only slower.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("fma", "default")))
+#endif
+void ShadeRowFused(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
+                   float dzdy, bool greater, std::uint32_t fill) {
+  ShadeRowBody<true>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
+}
+
+void ShadeRowSeparate(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
+                      float dzdy, bool greater, std::uint32_t fill) {
+  ShadeRowBody<false>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
 }
 
 // ShadeRow for a Gouraud triangle: every pixel's colour is computed (ColourAt, then PackUnorm) and
@@ -108,9 +121,14 @@ bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std
 
 void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std::uint32_t colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
-           static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy,
-           fb.compare == DepthCompare::kGreater, colour);
+  const bool greater = fb.compare == DepthCompare::kGreater;
+  if (plane.fused) {
+    ShadeRowFused(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
+                  static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);
+  } else {
+    ShadeRowSeparate(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
+                     static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);
+  }
 }
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {

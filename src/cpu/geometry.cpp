@@ -62,6 +62,7 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
                 TriangleSetup& setup = out.emplace_back();
                 setup.colour = colour;
                 if (!SetUpTriangle(a.window, b.window, c.window, region, setup)) out.pop_back();
+                else setup.depth.fused = vp.rules.fused_multiply_add;
               });
 }
 
@@ -78,9 +79,11 @@ void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const s
                   return;
                 }
                 setup.smooth = true;
+                setup.depth.fused = vp.rules.fused_multiply_add;
                 setup.colour = static_cast<std::uint32_t>(planes.size());
                 // In post-swap order, like the depth plane.
-                planes.push_back(setup.swapped ? MakeColourPlanes(a, c, b) : MakeColourPlanes(a, b, c));
+                const bool fused = vp.rules.fused_multiply_add;
+                planes.push_back(setup.swapped ? MakeColourPlanes(a, c, b, fused) : MakeColourPlanes(a, b, c, fused));
               });
 }
 
@@ -89,7 +92,7 @@ void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_
   const auto line = [&](const WindowPos& a, const WindowPos& b) {
     LineSetup& setup = out.emplace_back();
     setup.colour = colour;
-    if (!SetUpLine(a, b, region, setup)) out.pop_back();
+    if (!SetUpLine(a, b, region, vp.rules, setup)) out.pop_back();
   };
   const unsigned any_outside = v[0]->outcode | v[1]->outcode | v[2]->outcode;
   const unsigned all_outside = v[0]->outcode & v[1]->outcode & v[2]->outcode;
@@ -102,7 +105,7 @@ void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_
   if (all_outside != 0) return;
 
   ClippedPolygon polygon;
-  ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon);
+  ClipTriangle(v[0]->v, v[1]->v, v[2]->v, any_outside, vp, polygon, vp.rules.wireframe_guard_band);
   const int n = polygon.count;
   const auto edge = [&](int i, int j) {
     const ClipVertex& from = polygon.v[static_cast<std::size_t>(i)];
@@ -164,16 +167,16 @@ std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& b
   return chunks;
 }
 
-TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads) {
+TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads, const RasterRules& rules) {
   GeometryScratch scratch;
-  ProcessGeometry(list, GeometryChunk{.draw_begin = 0, .draw_end = list.draws.size()}, threads, scratch);
+  ProcessGeometry(list, GeometryChunk{.draw_begin = 0, .draw_end = list.draws.size()}, threads, rules, scratch);
   return std::move(scratch.triangles);
 }
 
-void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
+void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip,
                      unsigned band_count) {
-  const ViewportState vp = MakeViewport(list.width, list.height);
+  const ViewportState vp = MakeViewport(list.width, list.height, rules);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
 
   // Numbering of the chunk's draws' vertices and triangles, so both loops split evenly. Index i

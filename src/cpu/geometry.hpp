@@ -43,7 +43,8 @@ void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const s
 // A wireframe triangle: its edges as lavapipe's draw module emits them for polygonMode LINE, each
 // set up as a line and appended. Unclipped: v2→v0, v0→v1, v1→v2, whatever the winding, even at
 // zero area. Clipped into p0..p(n-1): p0→p1, …, p(n-3)→p(n-2), then p(n-1)→p0, then
-// p(n-2)→p(n-1) (for n = 3 the unclipped order), leaving out the edges along a clip plane.
+// p(n-2)→p(n-1) (for n = 3 the unclipped order), leaving out the edges along a clip plane. Where
+// the rules say so (Mesa 25), x and y are clipped at the guard band instead (ClipTriangle).
 void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
                        const ViewportState& vp, const PixelRect& region, std::vector<LineSetup>& out);
 
@@ -86,11 +87,12 @@ struct GeometryScratch {
 // Sets up one chunk into scratch.triangles, and, when band_count > 0, bins them into
 // scratch.bins. `clip`: when given, the positions another vertex stage computed (one vector per
 // draw) replace this one's F · (p, 1).
-void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads,
+// `rules`: the lavapipe whose arithmetic to follow.
+void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip = nullptr,
                      unsigned band_count = 0);
 
 // The whole list as one chunk, for tests that want every triangle at once.
-TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads);
+TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads, const RasterRules& rules = {});
 
 }  // namespace twinraster::cpu

@@ -27,9 +27,17 @@ std::int32_t TruncateToInt(float f) {
 // 0.5f rounds up to 1); out of range or NaN gives INT32_MIN, as the truncation does.
 std::int32_t RoundHalfAway(float f) { return f >= 0.0f ? TruncateToInt(f + 0.5f) : TruncateToInt(f - 0.5f); }
 
+// Mesa 25's util_iround, (int)lrintf(f): half to even; the long's low 32 bits, as the C cast keeps
+// them (a NaN or a value out of long's range gives LONG_MIN, so 0).
+std::int32_t RoundHalfEven(float f) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::lrintf(f))));
+}
+
 }  // namespace
 
-bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, LineSetup& out) {
+bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, const RasterRules& rules,
+               LineSetup& out) {
+  const auto snap = rules.lines_round_half_even ? RoundHalfEven : RoundHalfAway;
   const float dx = a.x - b.x, dy = a.y - b.y;
   const float area = dx * dx + dy * dy;  // the squared length; not fused (-ffp-contract=off)
   if (area == 0.0f) return false;
@@ -37,10 +45,10 @@ bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, 
 
   // Half the width across the line, in subpixels.
   const float scale = 0.5f / std::sqrt(area);
-  const std::int64_t tx = RoundHalfAway(((-dy) * scale) * 256.0f);
-  const std::int64_t ty = RoundHalfAway((dx * scale) * 256.0f);
-  const std::int64_t x1 = RoundHalfAway((a.x - 0.5f) * 256.0f), y1 = RoundHalfAway((a.y - 0.5f) * 256.0f);
-  const std::int64_t x2 = RoundHalfAway((b.x - 0.5f) * 256.0f), y2 = RoundHalfAway((b.y - 0.5f) * 256.0f);
+  const std::int64_t tx = snap(((-dy) * scale) * 256.0f);
+  const std::int64_t ty = snap((dx * scale) * 256.0f);
+  const std::int64_t x1 = snap((a.x - 0.5f) * 256.0f), y1 = snap((a.y - 0.5f) * 256.0f);
+  const std::int64_t x2 = snap((b.x - 0.5f) * 256.0f), y2 = snap((b.y - 0.5f) * 256.0f);
   const std::int64_t x[4] = {x1 - tx, x2 - tx, x2 + tx, x1 + tx};
   const std::int64_t y[4] = {y1 - ty, y2 - ty, y2 + ty, y1 + ty};
 
@@ -64,6 +72,7 @@ bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, 
   out.depth.dzdx = (dz * dx) * ooa;
   out.depth.dzdy = (dz * dy) * ooa;
   out.depth.a0 = a.z - (out.depth.dzdx * (a.x - 0.5f) + out.depth.dzdy * (a.y - 0.5f));
+  out.depth.fused = rules.fused_multiply_add;
   return true;
 }
 

@@ -3,7 +3,8 @@
 // source and the test that checks it against the installed driver):
 //  - A line whose float length is 0 draws nothing.
 //  - Each endpoint snaps to 1/256 pixel by llvmpipe's util_iround: round half AWAY from zero,
-//    computed as a float add of ±0.5 and a truncation (triangles round half to even).
+//    computed as a float add of ±0.5 and a truncation (triangles round half to even). From Mesa 25
+//    util_iround is lrintf: half to even (RasterRules::lines_round_half_even).
 //  - The line is a parallelogram around the snapped segment, half a pixel either side:
 //    (tx, ty) = iround(256 · 0.5 · (-dy, dx) / |d|), corners P1 - t, P2 - t, P2 + t, P1 + t.
 //    No end caps, no diamond-exit rule, no x-major/y-major choice.
@@ -31,6 +32,8 @@ struct LineSetup {
 
 // The line from a to b, a first (the depth plane hangs on a). False when it covers nothing for
 // sure (zero length, or its box misses `region`).
-bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, LineSetup& out);
+// `rules`: how endpoints round (lines_round_half_even) and how depth is evaluated (fused).
+bool SetUpLine(const WindowPos& a, const WindowPos& b, const PixelRect& region, const RasterRules& rules,
+               LineSetup& out);
 
 }  // namespace twinraster::cpu

@@ -6,10 +6,16 @@
 namespace twinraster::cpu {
 
 struct RasterRules {
-  // The JIT fuses a * b + c into one rounding (LLVM's fmuladd on a CPU with FMA): the viewport
-  // transform of shader vertices and the per-pixel depth plane. Without FMA: a multiply, then an
-  // add, each rounded.
+  // The JIT fuses a * b + c into one rounding (LLVM's fmuladd where Mesa enables FMA): the
+  // viewport transform of shader vertices and the per-pixel depth plane. Without FMA (Mesa's
+  // sse4.1 path, or a CPU without it): a multiply, then an add, each rounded.
   bool fused_multiply_add = true;
+  // Line endpoints snap to 1/256 pixel by util_iround: half away from zero in Mesa 22.3.6 on
+  // x86-64, lrintf (half to even) from Mesa 25.
+  bool lines_round_half_even = false;
+  // Polygon mode LINE clips x and y at the guard band |x|, |y| <= 2w (Mesa 25: lines and points
+  // take draw's guard band), not at the view volume's |x|, |y| <= w as filled triangles do.
+  bool wireframe_guard_band = false;
   // lavapipe's native vector width in bits (LP_NATIVE_VECTOR_WIDTH; 256 with AVX, else 128).
   int vector_bits = 256;
 };

@@ -21,10 +21,27 @@ struct KnownLavapipe {
   RasterRules rules;
 };
 
-constexpr RasterRules kFma256{.fused_multiply_add = true, .vector_bits = 256};
+// Mesa 22.3.6: the JIT fuses where the CPU path has FMA; lines round half away, and are clipped at
+// the view volume like triangles.
+constexpr RasterRules kMesa22Fma{.fused_multiply_add = true};
+constexpr RasterRules kMesa22NoFma{.fused_multiply_add = false};
+// Mesa 25.0: lines round half to even (util_iround became lrintf) and polygon mode LINE clips x and
+// y at the guard band.
+constexpr RasterRules kMesa25Fma{.fused_multiply_add = true, .lines_round_half_even = true, .wireframe_guard_band = true};
+constexpr RasterRules kMesa25NoFma{.fused_multiply_add = false, .lines_round_half_even = true, .wireframe_guard_band = true};
 
+// The sse4.1 path (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, or an x86-64 CPU without AVX) has no FMA and
+// 128-bit vectors; LP_NATIVE_VECTOR_WIDTH=128 keeps FMA. Debian 12 builds Mesa 22.3.6 with LLVM 15;
+// Mesa 25.0.7 is Debian 13's (LLVM 19) and Debian 12's backport (LLVM 15).
 constexpr std::array kKnown = {
-    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kFma256},
+    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kMesa22Fma},
+    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 128, kMesa22Fma},
+    KnownLavapipe{"22.3.6", "15", "SSE4.1", 128, kMesa22NoFma},
+    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 256, kMesa25Fma},
+    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 128, kMesa25Fma},
+    KnownLavapipe{"25.0.7", "15", "SSE4.1", 128, kMesa25NoFma},
+    KnownLavapipe{"25.0.7", "19", "AVX2+FMA", 256, kMesa25Fma},
+    KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma},
 };
 
 // "15.0.6" -> "15"; "15" stays.

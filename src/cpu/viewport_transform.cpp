@@ -5,11 +5,12 @@
 
 namespace twinraster::cpu {
 
-ViewportState MakeViewport(std::uint32_t width, std::uint32_t height) {
+ViewportState MakeViewport(std::uint32_t width, std::uint32_t height, const RasterRules& rules) {
   const float x = 0.0f, y = 0.0f, min_depth = 0.0f, max_depth = 1.0f;
   const float half_width = 0.5f * static_cast<float>(width);
   const float half_height = 0.5f * static_cast<float>(height);
   ViewportState vp;
+  vp.rules = rules;
   vp.scale[0] = half_width;
   vp.translate[0] = half_width + x;
   vp.scale[1] = half_height;
@@ -21,6 +22,7 @@ ViewportState MakeViewport(std::uint32_t width, std::uint32_t height) {
 
 WindowPos ViewportTransformShader(const ViewportState& vp, const glm::vec4& clip) {
   const float oow = 1.0f / clip.w;
+  if (!vp.rules.fused_multiply_add) return ViewportTransformClipped(vp, clip);  // the same two roundings
   return {std::fma(clip.x * oow, vp.scale[0], vp.translate[0]),
           std::fma(clip.y * oow, vp.scale[1], vp.translate[1]),
           std::fma(clip.z * oow, vp.scale[2], vp.translate[2])};

@@ -1,10 +1,13 @@
 // Stage 3, the viewport transform (Vulkan spec "Coordinate Transformations"): clip coordinates to
 // window coordinates for a viewport (0, 0, W, H) with depth range [0, 1]. lavapipe computes it in
 // two ways, and the twin must use the same one for each vertex:
-//  - vertices from the vertex shader (JIT code): xw = fmaf(x * oow, scale, translate);
+//  - vertices from the vertex shader (JIT code): xw = fmaf(x * oow, scale, translate), or without
+//    FMA (RasterRules::fused_multiply_add false) a multiply and an add, each rounded;
 //  - vertices created by clipping (plain C):     xw = (x * oow) * scale + translate, no fma.
 // Also the pixel rectangle coverage is limited to (framebuffer ∩ viewport rectangle).
 #pragma once
+
+#include "cpu/raster_rules.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -17,10 +20,12 @@ struct WindowPos {
 };
 
 // pipe_viewport_state as lavapipe fills it: scale = (W/2, H/2, maxDepth - minDepth),
-// translate = (W/2 + x0, H/2 + y0, minDepth).
+// translate = (W/2 + x0, H/2 + y0, minDepth). With it travel the rules of the lavapipe the twin
+// copies, which decide how every later stage computes in this viewport.
 struct ViewportState {
   float scale[3] = {0, 0, 0};
   float translate[3] = {0, 0, 0};
+  RasterRules rules;
 };
 
 // Inclusive pixel rectangle; empty when x0 > x1 or y0 > y1.
@@ -28,9 +33,9 @@ struct PixelRect {
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
 };
 
-ViewportState MakeViewport(std::uint32_t width, std::uint32_t height);
+ViewportState MakeViewport(std::uint32_t width, std::uint32_t height, const RasterRules& rules = {});
 
-WindowPos ViewportTransformShader(const ViewportState& vp, const glm::vec4& clip);   // fma
+WindowPos ViewportTransformShader(const ViewportState& vp, const glm::vec4& clip);   // fma (if the rules fuse)
 WindowPos ViewportTransformClipped(const ViewportState& vp, const glm::vec4& clip);  // no fma
 
 // Framebuffer ∩ viewport rectangle, the viewport's bounds rounded as llvmpipe does:

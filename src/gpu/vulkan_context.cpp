@@ -112,9 +112,11 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
       .messageType = vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
                      vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
                      vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
-      .pfnUserCallback = &StoreMessage,
       .pUserData = &messages_,
   };
+  // Set through the C view of the struct: the C callback type takes the C enums in every
+  // Vulkan-Hpp release, while 1.4 retyped the C++ member to take vk:: types.
+  static_cast<VkDebugUtilsMessengerCreateInfoEXT&>(messenger_info).pfnUserCallback = &StoreMessage;
   // Chained into vkCreateInstance: the layer reads its feature list there, and a messenger in the
   // chain also hears about vkCreateInstance / vkDestroyInstance themselves.
   vk::ValidationFeaturesEXT validation_features{

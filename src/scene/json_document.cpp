@@ -239,6 +239,11 @@ std::string JsonPathIndex(const std::string& path, std::size_t index) {
 
 nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name) {
   RejectBinaryText(text, file_name);
+  // Said here, not by nlohmann, whose wording for an empty input changed between releases.
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    throw SceneError(file_name, LineAndColumnAt(text, text.empty() ? 0 : text.size() - 1),
+                     "unexpected end of input: the file holds no JSON value");
+  }
   ReadPosition position;
   LocatingBuilder builder(file_name, position);
   const CountingIterator begin(text.data(), &position), end(text.data() + text.size(), nullptr);

@@ -2,7 +2,7 @@
 #include "bench/bench_suite.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>

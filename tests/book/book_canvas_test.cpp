@@ -2,7 +2,7 @@
 #include "book/book_canvas.hpp"
 #include "support/image_counts.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <limits>

@@ -3,7 +3,7 @@
 #include "book/book_chain.hpp"
 #include "scene/rotation.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <glm/geometric.hpp>
 
 #include <cmath>

@@ -17,7 +17,7 @@
 #include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <map>
 #include <string>

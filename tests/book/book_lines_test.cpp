@@ -2,7 +2,7 @@
 // the start's fraction, both branches with their swaps, and lines that are 8-connected.
 #include "book/book_lines.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // right as the demo writes it.
 #include "book/book_projection.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 using namespace twinraster::book;

@@ -5,7 +5,7 @@
 #include "support/test_support.hpp"
 #include "chain/vertex_trace.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <glm/matrix.hpp>
 

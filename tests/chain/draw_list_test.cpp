@@ -6,7 +6,7 @@
 #include "support/chapter_cube.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 
@@ -67,16 +67,16 @@ TEST_CASE("ValidateDrawList: lighting must cover every draw and every lit mesh, 
 
   DrawList fewer = lit;
   fewer.lighting->instances.clear();
-  CHECK_THROWS_WITH(ValidateDrawList(fewer), Catch::Contains("lighting has 0 instances for 1 draws"));
+  CHECK_THROWS_WITH(ValidateDrawList(fewer), HasSubstring("lighting has 0 instances for 1 draws"));
   DrawList no_normals = lit;
   no_normals.meshes[0].normals.pop_back();
-  CHECK_THROWS_WITH(ValidateDrawList(no_normals), Catch::Contains("corner normals"));
+  CHECK_THROWS_WITH(ValidateDrawList(no_normals), HasSubstring("corner normals"));
   DrawList no_lighting = lit;
   no_lighting.lighting.reset();
-  CHECK_THROWS_WITH(ValidateDrawList(no_lighting), Catch::Contains("is lit but the list has no lighting"));
+  CHECK_THROWS_WITH(ValidateDrawList(no_lighting), HasSubstring("is lit but the list has no lighting"));
   DrawList wireframe = lit;
   wireframe.wireframe = true;
-  CHECK_THROWS_WITH(ValidateDrawList(wireframe), Catch::Contains("edges are not lit"));
+  CHECK_THROWS_WITH(ValidateDrawList(wireframe), HasSubstring("edges are not lit"));
 
   // A wireframe scene builds an unlit list: edges in the models' own colours.
   scene.wireframe = true;

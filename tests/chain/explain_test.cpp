@@ -2,7 +2,7 @@
 // trace agrees with the chapter's canvas formula and with Vulkan's framebuffer convention.
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "image/png_file.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -80,8 +80,9 @@ TEST_CASE("render: a batch goes on after the Vulkan driver crashes, each scene i
   CHECK(scenes == 2);
 }
 
-// Mesa 22.3.6 at 128-bit vectors corrupts its heap on this scene (docs/mesa-22.3.6-128bit-crash.md).
-// Other releases may draw it: then both images are written and the run is an ordinary one.
+// Mesa 22.3.6 at 128-bit vectors corrupts its heap on this scene (docs/mesa-128bit-crash.md); Mesa
+// 25.0.7 with LLVM 19 dies on the chapter's scene too. Whichever scene kills the driver, the twin's
+// image of each is written, the batch goes on in a fresh child, and exit code 5 says so.
 TEST_CASE("render: lavapipe's own crash at 128-bit vectors costs one scene its GPU image, not the batch",
           "[cli][render][isolation]") {
   const test::TempDir dir;
@@ -91,12 +92,18 @@ TEST_CASE("render: lavapipe's own crash at 128-bit vectors costs one scene its G
   const auto first = nlohmann::json::parse(r.out.substr(0, r.out.find('\n')));
   const auto second = nlohmann::json::parse(r.out.substr(r.out.find('\n') + 1));
   CHECK(std::filesystem::exists(dir / "degenerate-cpu.png"));
-  CHECK(second["backends"]["gpu"]["status"] == "rendered");
-  CHECK(std::filesystem::exists(dir / "cgfs-transforms-gpu.png"));
+  CHECK(std::filesystem::exists(dir / "cgfs-transforms-cpu.png"));
+  bool crashed = false;
+  for (const auto* run : {&first, &second}) {
+    const std::string status = (*run)["backends"]["gpu"]["status"];
+    CHECK((status == "rendered" || status == "crashed"));
+    crashed = crashed || status == "crashed";
+  }
+  CHECK(std::filesystem::exists(dir / "cgfs-transforms-gpu.png") ==
+        (second["backends"]["gpu"]["status"] == "rendered"));
+  CHECK(r.exit_code == (crashed ? 5 : 0));
   if (kGlibcMalloc && first["backends"]["gpu"]["driver"] == "Mesa 22.3.6 (LLVM 15.0.6)") {
     CHECK(first["backends"]["gpu"]["status"] == "crashed");
-    CHECK(r.exit_code == 5);
-  } else {
-    CHECK(first["backends"]["gpu"]["status"] == "rendered");
+    CHECK(second["backends"]["gpu"]["status"] == "rendered");
   }
 }

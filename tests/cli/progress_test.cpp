@@ -3,7 +3,7 @@
 #include "bench/bench_suite.hpp"
 #include "cli/progress.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <fcntl.h>
 #include <stdlib.h>

@@ -6,7 +6,7 @@
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 // command or option) and where to read more, exit code 2; --help and --version print on stdout.
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <filesystem>
 #include <regex>

@@ -2,7 +2,7 @@
 #include "cpu/clipping.hpp"
 #include "cpu/geometry.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "cpu/fragment_ops.hpp"
 #include "cpu/triangle_setup.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 #include "cpu/triangle_setup.hpp"
 #include "test_scenes.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <random>

@@ -6,7 +6,7 @@
 #include "cpu/geometry.hpp"
 #include "test_scenes.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <random>

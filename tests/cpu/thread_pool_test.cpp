@@ -2,7 +2,7 @@
 // part reaches the caller after the others finish; a nested call runs inline instead of hanging.
 #include "cpu/thread_pool.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <atomic>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 #include "cpu/rasterize.hpp"
 #include "cpu/triangle_setup.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
 // Stage 1: the vertex stage sums F · (p, 1) in the shader's order.
 #include "cpu/vertex_stage.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using twinraster::cpu::VertexStage;
 

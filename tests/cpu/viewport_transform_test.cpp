@@ -1,7 +1,7 @@
 // Stage 3: the viewport transform, with fma for shader vertices and without for clipped ones.
 #include "cpu/viewport_transform.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster::cpu;
 

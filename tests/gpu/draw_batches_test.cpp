@@ -2,7 +2,7 @@
 // never), in list order, and instance buffers split where they fill.
 #include "gpu/draw_batches.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 using gpu::DrawBatch;

@@ -5,7 +5,7 @@
 #include "gpu_test_support.hpp"
 #include "support/lit_scene.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <chrono>
 
@@ -56,7 +56,7 @@ TEST_CASE("A list the renderer refuses comes back as a bad list, with its reason
   list.draws.front().mesh = 7;
   const IsolatedGpuResult r = RenderIsolated(list, {});
   CHECK(r.outcome == GpuOutcome::kBadList);
-  CHECK_THAT(r.problem, Catch::Matchers::Contains("mesh"));
+  CHECK_THAT(r.problem, HasSubstring("mesh"));
 }
 
 TEST_CASE("After a crashed GPU process the next one draws") {

@@ -3,7 +3,7 @@
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -43,12 +43,12 @@ double Median(std::vector<double> values) {
 }  // namespace
 
 TEST_CASE("Without options the renderer picks lavapipe, and a name picks a device", "[gpu]") {
-  CHECK_THAT(GpuRenderer().DeviceName(), Catch::Contains("llvmpipe"));
+  CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
   CHECK_THAT(GpuRenderer(GpuOptions{.device = "LLVMPIPE"}).DeviceName(),
-             Catch::Contains("llvmpipe"));
+             HasSubstring("llvmpipe"));
   CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "no such device"}), GpuUnavailable);
   CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "no such device"}),
-                    Catch::Contains("no such device") && Catch::Contains("llvmpipe"));
+                    HasSubstring("no such device") && HasSubstring("llvmpipe"));
 }
 
 TEST_CASE("GpuUnavailable says what to install", "[gpu][errors]") {
@@ -56,14 +56,14 @@ TEST_CASE("GpuUnavailable says what to install", "[gpu][errors]") {
   SECTION("no Vulkan driver") {
     const ScopedEnv no_driver("VK_ICD_FILENAMES", "/nonexistent/no_icd.json");
     CHECK_THROWS_AS(GpuRenderer(), GpuUnavailable);
-    CHECK_THROWS_WITH(GpuRenderer(), Catch::Contains("apt-get install mesa-vulkan-drivers"));
+    CHECK_THROWS_WITH(GpuRenderer(), HasSubstring("apt-get install mesa-vulkan-drivers"));
   }
   SECTION("no validation layer") {
     const ScopedEnv no_layers("VK_LAYER_PATH", "/nonexistent");
     CHECK_NOTHROW(GpuRenderer());  // only validation needs the layer
     CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "", .validation = true}), GpuUnavailable);
     CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "", .validation = true}),
-                      Catch::Contains("apt-get install vulkan-validationlayers"));
+                      HasSubstring("apt-get install vulkan-validationlayers"));
   }
 }
 

@@ -4,7 +4,7 @@
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 using namespace twinraster::gpu_test;

@@ -3,7 +3,7 @@
 #include "image/png_file.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <random>
 

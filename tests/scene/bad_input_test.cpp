@@ -2,7 +2,7 @@
 // column) and the problem, and exit code 2: run through the real executable.
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 using namespace twinraster;

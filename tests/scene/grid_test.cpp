@@ -3,7 +3,7 @@
 #include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <string>
 

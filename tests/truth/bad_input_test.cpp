@@ -1,7 +1,7 @@
 // Malformed inputs are std::invalid_argument, as for the twin.
 #include "truth_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <stdexcept>
 

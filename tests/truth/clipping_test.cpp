@@ -2,7 +2,7 @@
 #include "truth/truth_clipping.hpp"
 #include "truth_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 using namespace twinraster::truthtest;

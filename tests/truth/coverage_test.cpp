@@ -2,7 +2,7 @@
 // exact ties, with every centre of a tiled region covered exactly once.
 #include "truth_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 

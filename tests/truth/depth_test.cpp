@@ -1,7 +1,7 @@
 // Depth: clears, LESS and GREATER, equal depths, and z interpolated in window space.
 #include "truth_test_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 using namespace twinraster::truthtest;

@@ -2,7 +2,7 @@
 // same (negated) for both directions of an edge, which makes shared edges watertight.
 #include "truth/exact_orientation.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <random>

@@ -3,7 +3,7 @@
 #include "chain/matrices.hpp"
 #include "truth/truth_renderer.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 

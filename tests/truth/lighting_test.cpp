@@ -9,7 +9,7 @@
 #include "support/lit_scene.hpp"
 #include "truth/truth_renderer.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -193,7 +193,7 @@ TEST_CASE("Truth light against the twin: random lit scenes agree within 1 triang
 
 TEST_CASE("Truth light: a lit list without the light is refused, an unlit list needs none", "[truth][lighting]") {
   const Scene lit = FacingSquare({.ambient = 0.2, .lights = {}}, Shading::kFlat);
-  CHECK_THROWS_WITH(RenderTruth(BuildDrawList(lit), ExactClipSpace(lit)), Catch::Contains("no light"));
+  CHECK_THROWS_WITH(RenderTruth(BuildDrawList(lit), ExactClipSpace(lit)), HasSubstring("no light"));
   Scene unlit = lit;
   unlit.lighting.reset();
   unlit.models[0].shading = Shading::kUnlit;

@@ -8,7 +8,7 @@
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cstring>
 

@@ -5,7 +5,7 @@
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 using namespace twinraster;

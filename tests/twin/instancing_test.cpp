@@ -7,7 +7,7 @@
 #include "support/chapter_cube.hpp"
 #include "twin_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 
@@ -69,13 +69,13 @@ TEST_CASE("Equal depths: instanced draws keep instance order, then triangle orde
   // Drawn in reverse instance order the picture changes: the order is what the test checks.
   DrawList reversed = list;
   std::reverse(reversed.draws.begin(), reversed.draws.end());
-  REQUIRE_FALSE(CompareImages(RenderOnCpu(reversed), r.cpu).Equal());
+  REQUIRE_FALSE(CompareImages(RenderOnCpu(reversed, test::TwinOptions()), r.cpu).Equal());
   test::RequireNoValidationMessages();
 }
 
 TEST_CASE("Instanced and per-draw F give identical pixels, with ties and split buffers", "[twin][instancing]") {
   const DrawList list = CoincidentCubes();
-  const Image cpu = RenderOnCpu(list);
+  const Image cpu = RenderOnCpu(list, test::TwinOptions());
   GpuRenderer split(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways,
                                .instances_per_buffer = 7});
   GpuTimings timings;
@@ -100,6 +100,6 @@ TEST_CASE("kAuto instances long runs only, and still matches the twin", "[twin][
   const Image image = automatic.Render(list, &timings);
   REQUIRE(timings.instanced_draws == list.draws.size());
   REQUIRE(timings.draw_commands == 2);
-  REQUIRE(CompareImages(image, RenderOnCpu(list)).Equal());
+  REQUIRE(CompareImages(image, RenderOnCpu(list, test::TwinOptions())).Equal());
   REQUIRE(automatic.ValidationMessages().empty());
 }

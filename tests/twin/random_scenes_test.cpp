@@ -8,7 +8,7 @@
 #include "twin_support.hpp"
 #include "random_scene.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <filesystem>
 

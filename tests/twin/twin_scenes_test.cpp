@@ -8,7 +8,7 @@
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 using namespace twinraster;
 
@@ -44,7 +44,7 @@ TEST_CASE("The million-instance scenes at 480x270, filled and in wireframe: GPU 
       GpuTimings timings;
       const Image gpu_image = gpu.Render(list, &timings);
       REQUIRE(timings.instanced_draws == list.draws.size());
-      const Image cpu_image = RenderOnCpu(list);
+      const Image cpu_image = RenderOnCpu(list, test::TwinOptions());
       const Comparison c = CompareImages(gpu_image, cpu_image);
       INFO(c.differing_pixels << " differing pixels");
       REQUIRE(c.Equal());

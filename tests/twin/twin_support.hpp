@@ -3,6 +3,8 @@
 #pragma once
 
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image.hpp"
 #include "image/image_compare.hpp"
@@ -24,6 +26,14 @@ struct TwinResult {
   bool Equal() const { return comparison.Equal() && instanced_comparison.Equal(); }
   std::string Describe() const;  // size, differing pixels, and the first few that differ
 };
+
+// The rules the twin follows against SharedGpu's device on this machine's CPU path, chosen as
+// render chooses them (cpu/twin_rules.hpp).
+const cpu::TwinRules& SharedTwinRules();
+
+// `options` with those rules. Throws (failing the test, never skipping it) when the twin has no
+// bit-exact rules for this lavapipe: a GPU == CPU test proves nothing then.
+CpuOptions TwinOptions(CpuOptions options = {});
 
 TwinResult RenderTwins(const DrawList& list);
 

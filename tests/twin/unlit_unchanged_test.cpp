@@ -7,7 +7,7 @@
 #include "scene/scene_loader.hpp"
 #include "support/image_hashes.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <map>
 #include <string>

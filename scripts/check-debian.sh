@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Proves the README's two commands on a fresh Debian release: makes a minimal root of RELEASE
+# (trixie = Debian 13, bookworm = Debian 12) with debootstrap, clones this repository's HEAD into
+# it, runs `bash scripts/demo.sh` and `bash scripts/test.sh` inside it as a newcomer would, and
+# deletes the root again. Needs root (debootstrap, mount, chroot) and the network.
+#
+#   scripts/check-debian.sh trixie            # both README commands on Debian 13
+#   KEEP_ROOT=1 scripts/check-debian.sh trixie  # keep the root afterwards (say where)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+release="${1:-}"
+case "$release" in
+  bookworm | trixie) ;;
+  *) echo "usage: scripts/check-debian.sh bookworm|trixie" >&2; exit 2 ;;
+esac
+if [ "$(id -u)" -ne 0 ]; then
+  echo "check-debian: needs root (debootstrap, mount, chroot)" >&2
+  exit 2
+fi
+mirror="${DEBIAN_MIRROR:-http://deb.debian.org/debian}"
+export DEBIAN_FRONTEND=noninteractive
+command -v debootstrap >/dev/null || { apt-get update -qq && apt-get install -y -qq debootstrap >/dev/null; }
+
+root=$(mktemp -d "${TMPDIR:-/var/tmp}/twinraster-$release.XXXXXX")
+mounted=()
+cleanup() {
+  local status=$?
+  # Unmount in reverse order; a bound /dev still mounted under the root would be deleted with it,
+  # so the root is removed only when nothing is mounted below it, and never across file systems.
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
+    umount "${mounted[i]}" || umount -l "${mounted[i]}" || true
+  done
+  if findmnt -rn -o TARGET | grep -q "^$root"; then
+    echo "check-debian: something is still mounted under $root; left in place" >&2
+    exit 1
+  fi
+  if [ -n "${KEEP_ROOT:-}" ]; then
+    echo "check-debian: the root is kept in $root"
+  else
+    rm -rf --one-file-system "$root"
+  fi
+  exit "$status"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+step() { echo "=== check-debian $release: $1 ($(date -u +%H:%M:%S))"; }
+step "debootstrap --variant=minbase into $root"
+debootstrap --variant=minbase "$release" "$root" "$mirror" >"$root.debootstrap.log" 2>&1 ||
+  { tail -20 "$root.debootstrap.log" >&2; rm -f "$root.debootstrap.log"; exit 1; }
+rm -f "$root.debootstrap.log"
+
+# /dev/pts separately: the tests open pseudo-terminals, and a plain bind of /dev leaves it empty.
+for m in proc sys dev dev/pts; do
+  case "$m" in
+    proc) mount -t proc proc "$root/proc" ;;
+    sys) mount -t sysfs sysfs "$root/sys" ;;
+    dev) mount --bind /dev "$root/dev" ;;
+    dev/pts) mount --bind /dev/pts "$root/dev/pts" ;;
+  esac
+  mounted+=("$root/$m")
+done
+cp -L /etc/resolv.conf "$root/etc/resolv.conf"
+
+# A fresh clone of what is committed, as CI and a newcomer see it (the root has no git).
+git clone -q "$PWD" "$root/root/twinraster"
+rm -rf "$root/root/twinraster/.git"
+
+run() { chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
+  /bin/bash -c "cd /root/twinraster && $1"; }
+step "$(run 'grep PRETTY_NAME /etc/os-release | cut -d= -f2')"
+step "bash scripts/demo.sh"
+run "bash scripts/demo.sh"
+run "test -s out/cgfs-transforms-gpu.png && test -s out/cgfs-transforms-cpu.png" ||
+  { echo "check-debian: demo.sh wrote no PNGs" >&2; exit 1; }
+step "bash scripts/test.sh"
+run "bash scripts/test.sh"
+step "both README commands passed on $release"
