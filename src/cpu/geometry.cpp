@@ -61,7 +61,7 @@ void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t
               [&](const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
                 TriangleSetup& setup = out.emplace_back();
                 setup.colour = colour;
-                if (!SetUpTriangle(a.window, b.window, c.window, region, setup)) out.pop_back();
+                if (!SetUpTriangle(a.window, b.window, c.window, region, setup, vp.rules)) out.pop_back();
                 else setup.depth.fused = vp.rules.fused_multiply_add;
               });
 }
@@ -74,7 +74,7 @@ void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const s
   AssembleFan(corner[0], v[0]->outcode, corner[1], v[1]->outcode, corner[2], v[2]->outcode, vp,
               [&](const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
                 TriangleSetup& setup = out.emplace_back();
-                if (!SetUpTriangle(a.window, b.window, c.window, region, setup)) {
+                if (!SetUpTriangle(a.window, b.window, c.window, region, setup, vp.rules)) {
                   out.pop_back();
                   return;
                 }

@@ -10,6 +10,9 @@ struct RasterRules {
   // viewport transform of shader vertices and the per-pixel depth plane. Without FMA (Mesa's
   // sse4.1 path, or a CPU without it): a multiply, then an add, each rounded.
   bool fused_multiply_add = true;
+  // Triangle vertices snap to 1/256 pixel half to even (cvtps2dq on x86-64), or, where Mesa 22.3.6
+  // is built without SSE (aarch64), by util_iround's C form: half away from zero.
+  bool triangles_round_half_away = false;
   // Line endpoints snap to 1/256 pixel by util_iround: half away from zero in Mesa 22.3.6 on
   // x86-64, lrintf (half to even) from Mesa 25.
   bool lines_round_half_even = false;

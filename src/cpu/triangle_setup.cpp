@@ -25,10 +25,21 @@ std::int32_t SnapToSubpixel(float window_coord) {
 #endif
 }
 
+std::int32_t SnapToSubpixelHalfAway(float window_coord) {
+  const float scaled = (window_coord - 0.5f) * static_cast<float>(kSubpixelOne);
+  const float rounded = scaled >= 0.0f ? scaled + 0.5f : scaled - 0.5f;
+  // C's (int) as aarch64 converts (fcvtzs): toward zero, saturating, NaN to 0.
+  if (rounded != rounded) return 0;
+  if (rounded >= 2147483648.0f) return std::numeric_limits<std::int32_t>::max();
+  if (rounded < -2147483648.0f) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(rounded);
+}
+
 bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
-                   const PixelRect& region, TriangleSetup& out) {
-  std::int32_t x[3] = {SnapToSubpixel(v0.x), SnapToSubpixel(v1.x), SnapToSubpixel(v2.x)};
-  std::int32_t y[3] = {SnapToSubpixel(v0.y), SnapToSubpixel(v1.y), SnapToSubpixel(v2.y)};
+                   const PixelRect& region, TriangleSetup& out, const RasterRules& rules) {
+  const auto snap = rules.triangles_round_half_away ? SnapToSubpixelHalfAway : SnapToSubpixel;
+  std::int32_t x[3] = {snap(v0.x), snap(v1.x), snap(v2.x)};
+  std::int32_t y[3] = {snap(v0.y), snap(v1.y), snap(v2.y)};
 
   const std::int64_t area = (std::int64_t{x[0]} - x[1]) * (std::int64_t{y[2]} - y[0]) -
                             (std::int64_t{x[2]} - x[0]) * (std::int64_t{y[0]} - y[1]);

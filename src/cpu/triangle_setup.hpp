@@ -25,6 +25,9 @@ constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
 // round_half_even((w - 0.5f) * 256.0f) as SSE's cvtps2dq does it: out of range or NaN gives
 // INT32_MIN.
 std::int32_t SnapToSubpixel(float window_coord);
+// The same as Mesa 22.3.6 snaps where it is built without SSE (aarch64): util_iround's C form,
+// (int)(f + 0.5f) or (int)(f - 0.5f), half away from zero (RasterRules::triangles_round_half_away).
+std::int32_t SnapToSubpixelHalfAway(float window_coord);
 
 struct EdgeFunction {
   std::int64_t c = 0;     // with the top-left bias
@@ -68,8 +71,9 @@ inline std::array<EdgeFunction, 3> Edges(const TriangleSetup& t) {
 }
 
 // False when the triangle covers nothing for sure (zero area, or its box misses `region`).
+// `rules`: how the vertices snap (triangles_round_half_away).
 bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
-                   const PixelRect& region, TriangleSetup& out);
+                   const PixelRect& region, TriangleSetup& out, const RasterRules& rules = {});
 
 // The coverage test for one pixel, bounds included.
 bool Covers(const TriangleSetup& t, int px, int py);

@@ -25,6 +25,8 @@ struct KnownLavapipe {
 // the view volume like triangles.
 constexpr RasterRules kMesa22Fma{.fused_multiply_add = true};
 constexpr RasterRules kMesa22NoFma{.fused_multiply_add = false};
+// Mesa 22.3.6 built without SSE (aarch64): triangles snap half away from zero; NEON fuses.
+constexpr RasterRules kMesa22Aarch64{.fused_multiply_add = true, .triangles_round_half_away = true};
 // Mesa 25.0: lines round half to even (util_iround became lrintf) and polygon mode LINE clips x and
 // y at the guard band.
 constexpr RasterRules kMesa25Fma{.fused_multiply_add = true, .lines_round_half_even = true, .wireframe_guard_band = true};
@@ -37,6 +39,7 @@ constexpr std::array kKnown = {
     KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kMesa22Fma},
     KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 128, kMesa22Fma},
     KnownLavapipe{"22.3.6", "15", "SSE4.1", 128, kMesa22NoFma},
+    KnownLavapipe{"22.3.6", "15", "NEON", 128, kMesa22Aarch64},
     KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 256, kMesa25Fma},
     KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 128, kMesa25Fma},
     KnownLavapipe{"25.0.7", "15", "SSE4.1", 128, kMesa25NoFma},

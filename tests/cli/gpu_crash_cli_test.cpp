@@ -18,21 +18,6 @@ const std::string kTransforms = test::SourcePath("scenes/cgfs-transforms.json").
 const std::string kLookAt = test::SourcePath("scenes/lookat.json").string();
 const std::string kDegenerate = test::SourcePath("scenes/hard/degenerate.json").string();
 
-// The crash below is glibc's malloc finding its heap corrupted; under AddressSanitizer the
-// executable allocates with ASan's allocator instead, which does not notice (Mesa is not
-// instrumented), and the driver draws on.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kGlibcMalloc = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kGlibcMalloc = false;
-#else
-constexpr bool kGlibcMalloc = true;
-#endif
-#else
-constexpr bool kGlibcMalloc = true;
-#endif
-
 }  // namespace
 
 TEST_CASE("render: a Vulkan driver that aborts is reported, and the twin's image is still written",
@@ -80,9 +65,11 @@ TEST_CASE("render: a batch goes on after the Vulkan driver crashes, each scene i
   CHECK(scenes == 2);
 }
 
-// Mesa 22.3.6 at 128-bit vectors corrupts its heap on this scene (docs/mesa-128bit-crash.md); Mesa
-// 25.0.7 with LLVM 19 dies on the chapter's scene too. Whichever scene kills the driver, the twin's
-// image of each is written, the batch goes on in a fresh child, and exit code 5 says so.
+// lavapipe at 128-bit vectors corrupts its heap on these scenes (docs/mesa-128bit-crash.md), but not
+// on every machine or every run: on one 2-core machine Mesa 22.3.6 died every time, on CI's machine
+// not at all. So the test does not need the crash; the fake drivers above make it happen for sure.
+// Whichever scene kills the driver, if any, the twin's image of each is written, the batch goes on in
+// a fresh child, and the exit code says whether one crashed.
 TEST_CASE("render: lavapipe's own crash at 128-bit vectors costs one scene its GPU image, not the batch",
           "[cli][render][isolation]") {
   const test::TempDir dir;
@@ -102,8 +89,4 @@ TEST_CASE("render: lavapipe's own crash at 128-bit vectors costs one scene its G
   CHECK(std::filesystem::exists(dir / "cgfs-transforms-gpu.png") ==
         (second["backends"]["gpu"]["status"] == "rendered"));
   CHECK(r.exit_code == (crashed ? 5 : 0));
-  if (kGlibcMalloc && first["backends"]["gpu"]["driver"] == "Mesa 22.3.6 (LLVM 15.0.6)") {
-    CHECK(first["backends"]["gpu"]["status"] == "crashed");
-    CHECK(second["backends"]["gpu"]["status"] == "rendered");
-  }
 }

@@ -36,6 +36,19 @@ std::vector<int> CoverageOf(const TriangleSetup& t) {
 
 }  // namespace
 
+TEST_CASE("snapping without SSE (Mesa 22.3.6 on aarch64): ties away from zero", "[cpu][snap]") {
+  CHECK(SnapToSubpixelHalfAway(0.5f) == 0);
+  CHECK(SnapToSubpixelHalfAway(1.5f) == 256);
+  CHECK(SnapToSubpixelHalfAway(0.5f + 0.5f / 256) == 1);
+  CHECK(SnapToSubpixelHalfAway(0.5f + 2.5f / 256) == 3);
+  CHECK(SnapToSubpixelHalfAway(0.5f - 0.5f / 256) == -1);
+  CHECK(SnapToSubpixelHalfAway(0.5f - 2.5f / 256) == -3);
+  // C's (int) on aarch64: NaN to 0, saturating out of range.
+  CHECK(SnapToSubpixelHalfAway(std::numeric_limits<float>::quiet_NaN()) == 0);
+  CHECK(SnapToSubpixelHalfAway(1e30f) == std::numeric_limits<std::int32_t>::max());
+  CHECK(SnapToSubpixelHalfAway(-1e30f) == std::numeric_limits<std::int32_t>::min());
+}
+
 TEST_CASE("snapping: (w - 0.5) * 256 rounded to nearest, ties to even", "[cpu][snap]") {
   CHECK(SnapToSubpixel(0.5f) == 0);
   CHECK(SnapToSubpixel(1.5f) == 256);

@@ -43,6 +43,11 @@ TEST_CASE("Each rule the twin follows changes pixels of a shipped scene", "[twin
     const Image separate = render("scenes/lit-mixed.json", false, cpu::RasterRules{.fused_multiply_add = false});
     CHECK(CompareImages(fused, separate).differing_pixels > 0);
   }
+  SECTION("aarch64's triangles: vertices snapped half away from zero") {
+    const Image even = render("scenes/catlike-grid.json", false, mesa22);
+    const Image away = render("scenes/catlike-grid.json", false, cpu::RasterRules{.triangles_round_half_away = true});
+    CHECK(CompareImages(even, away).differing_pixels > 0);
+  }
   SECTION("Mesa 25's lines: half-to-even endpoints") {
     const Image away = render("scenes/tinyrenderer-style.json", true, mesa22);
     const Image even = render("scenes/tinyrenderer-style.json", true, cpu::RasterRules{.lines_round_half_even = true});
