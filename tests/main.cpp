@@ -1,5 +1,10 @@
 // Catch2's runner, spelled so that Catch2 2 and 3 both accept it.
 #define CATCH_CONFIG_RUNNER
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
-int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }
+int main(int argc, char* argv[]) {
+  const int result = Catch::Session().run(argc, argv);
+  twinraster::test::RunEndOfRunWork();
+  return result;
+}

@@ -27,6 +27,7 @@ using CommandRun = std::function<int()>;
 CommandRun AddExplainCommand(CLI::App& app);
 CommandRun AddRenderCommand(CLI::App& app);
 CommandRun AddCompareCommand(CLI::App& app);
+CommandRun AddVerifyCommand(CLI::App& app);
 CommandRun AddBenchCommand(CLI::App& app);
 
 }  // namespace twinraster

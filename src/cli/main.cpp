@@ -66,11 +66,11 @@ int Run(int argc, char** argv) {
   SetUpParser(app);
   app.set_version_flag("--version", VersionText(), "print the version and exit");
   app.footer("Run 'twinraster COMMAND --help' for a command's arguments.\n"
-             "Exit codes: 0 done (images identical), 1 images differ, 2 bad input or usage,\n"
+             "Exit codes: 0 done (images identical, or verified), 1 images differ (or violate), 2 bad input or usage,\n"
              "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out.");
   const std::map<std::string, CommandRun> commands = {
-      {"explain", AddExplainCommand(app)}, {"render", AddRenderCommand(app)}, {"compare", AddCompareCommand(app)},
-      {"bench", AddBenchCommand(app)},     {"help", AddHelpCommand(app)},
+      {"explain", AddExplainCommand(app)}, {"render", AddRenderCommand(app)}, {"verify", AddVerifyCommand(app)},
+      {"compare", AddCompareCommand(app)}, {"bench", AddBenchCommand(app)},   {"help", AddHelpCommand(app)},
   };
 
   try {

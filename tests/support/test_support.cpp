@@ -33,6 +33,24 @@ TempDir::~TempDir() {
   std::filesystem::remove_all(path_, ignored);
 }
 
+namespace {
+std::vector<std::function<void()>>& EndOfRunWork() {
+  static std::vector<std::function<void()>> work;
+  return work;
+}
+}  // namespace
+
+void AtEndOfRun(std::function<void()> work) { EndOfRunWork().push_back(std::move(work)); }
+
+void RunEndOfRunWork() {
+  auto& work = EndOfRunWork();
+  while (!work.empty()) {
+    const std::function<void()> next = std::move(work.back());
+    work.pop_back();
+    next();
+  }
+}
+
 std::string ReadFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream s;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,12 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// Work to do when the test run ends, before main returns: objects that must not be destroyed by a
+// static destructor (a Vulkan device, after the driver's own exit handlers have run) are released
+// here, in the reverse order of registration.
+void AtEndOfRun(std::function<void()> work);
+void RunEndOfRunWork();  // main() calls it once
 
 std::string ReadFile(const std::filesystem::path& file);
 void WriteFile(const std::filesystem::path& file, const std::string& text);

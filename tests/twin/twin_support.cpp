@@ -1,9 +1,11 @@
 #include "twin_support.hpp"
 
 #include "cpu/cpu_renderer.hpp"
+#include "support/test_support.hpp"
 
 #include "support/catch.hpp"
 
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,15 +16,18 @@ std::size_t g_messages_seen[2] = {0, 0};  // per shared renderer
 }
 
 GpuRenderer& SharedGpu(gpu::Instancing instancing) {
-  // Never destroyed: on Debian 13 (Mesa 25.0.7, validation layer 1.4.309) destroying them from a
-  // static destructor at exit crashes the process after every test has passed, and exit frees
-  // everything anyway. Still reachable from these pointers, so LeakSanitizer does not count them.
-  static GpuRenderer* per_draw =
-      new GpuRenderer(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kNever});
-  static GpuRenderer* instanced =
-      new GpuRenderer(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways});
+  // Destroyed when the run ends, before main returns: on Debian 13 (Mesa 25.0.7, validation layer
+  // 1.4.309) destroying them from a static destructor crashes the process after every test has
+  // passed (the driver's own exit handlers have run by then), and never destroying them leaves
+  // lavapipe's allocations to LeakSanitizer.
+  static std::unique_ptr<GpuRenderer> per_draw, instanced;
   if (instancing == gpu::Instancing::kAuto) throw std::logic_error("SharedGpu: choose a path");
-  return instancing == gpu::Instancing::kAlways ? *instanced : *per_draw;
+  std::unique_ptr<GpuRenderer>& renderer = instancing == gpu::Instancing::kAlways ? instanced : per_draw;
+  if (!renderer) {
+    renderer = std::make_unique<GpuRenderer>(GpuOptions{.device = "", .validation = true, .instancing = instancing});
+    AtEndOfRun([&renderer] { renderer.reset(); });
+  }
+  return *renderer;
 }
 
 const cpu::TwinRules& SharedTwinRules() {

@@ -1,0 +1,104 @@
+// `twinraster verify SCENE IMAGE.png`: judges any image of the scene by what a conformant Vulkan
+// implementation may draw (verify/verifier.hpp), writes the verification map, exits 0 or 1.
+#include "base/stopwatch.hpp"
+#include "chain/draw_list.hpp"
+#include "cli/commands.hpp"
+#include "cli/io_arguments.hpp"
+#include "cli/parser_setup.hpp"
+#include "cli/verify_report.hpp"
+#include "image/png_file.hpp"
+#include "verify/verifier.hpp"
+#include "verify/verify_map.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace twinraster {
+
+namespace {
+
+struct VerifyArguments {
+  std::string scene, image;
+  std::optional<std::string> map;
+  bool no_map = false;
+  bool wireframe = false;
+  int subpixel_bits = 4;  // the spec's minimum subPixelPrecisionBits
+  bool json = false;
+};
+
+// "gpu.png" -> "gpu-map.png"
+std::string DefaultMap(const std::string& image) {
+  std::filesystem::path p = image;
+  p.replace_extension();
+  p += "-map.png";
+  return p.string();
+}
+
+int Verify(const VerifyArguments& a) {
+  if (a.map) ExpectPngName("--map", *a.map);
+  Scene scene = LoadSceneArgument(a.scene);
+  if (a.wireframe) scene.wireframe = true;
+  const Image image = ReadPng(a.image);
+  if (image.width != scene.canvas.width || image.height != scene.canvas.height) {
+    throw FileError(a.image + ": the image is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                    ", but " + a.scene + " draws a canvas of " + std::to_string(scene.canvas.width) + " x " +
+                    std::to_string(scene.canvas.height));
+  }
+  const DrawList list = BuildDrawList(scene);
+  Stopwatch clock;
+  verify::VerifyOptions options;
+  options.subpixel_bits = a.subpixel_bits;
+  const verify::Verification v = verify::VerifyImage(scene, list, image, options);
+  const double verify_ms = clock.Milliseconds();
+  std::optional<std::string> map;
+  if (!a.no_map) {
+    map = a.map.value_or(DefaultMap(a.image));
+    StagePng(*map, verify::VerificationMap(image, v)).Commit();
+  }
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["format"] = kVerifyJsonFormat;
+    j["scene"] = a.scene;
+    j["image"] = a.image;
+    j["wireframe"] = scene.wireframe;
+    const nlohmann::ordered_json verdict = VerificationJson(v, map, verify_ms);
+    for (const auto& [key, value] : verdict.items()) j[key] = value;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << a.image << ": " << verify::VerificationText(v) << "\n";
+    if (map) std::cout << "map: " << *map << " (grey: certain, amber: uncertain, red: not allowed)\n";
+  }
+  return v.Passed() ? kExitOk : kExitImagesDiffer;
+}
+
+}  // namespace
+
+CommandRun AddVerifyCommand(CLI::App& app) {
+  auto a = std::make_shared<VerifyArguments>();
+  CLI::App* command = AddSubcommand(
+      app, "verify", "judge any image of a scene by what a conformant Vulkan implementation may draw",
+      "Each pixel is certain (only one surface, or only the background, may show there),\n"
+      "uncertain (the spec lets more than one show) or a violation (no conformant\n"
+      "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
+      "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error.");
+  command->add_option("SCENE", a->scene, "the scene file (JSON) or OBJ mesh the image is of, or - for standard input")
+      ->required();
+  command->add_option("IMAGE.png", a->image, "the image to judge, at the scene's canvas size")->required();
+  command->add_flag("--wireframe", a->wireframe, "the image draws triangle edges only, as render --wireframe does");
+  ExpectIntegerIn(command
+                      ->add_option("--subpixel-bits", a->subpixel_bits,
+                                   "the device's subPixelPrecisionBits (default 4, the spec's minimum;\n"
+                                   "lavapipe has 8)")
+                      ->type_name("N"),
+                  0, 16);
+  command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")->type_name("MAP.png");
+  command->add_flag("--no-map", a->no_map, "write no map");
+  command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/1, docs/json-output.md)");
+  return [a] { return Verify(*a); };
+}
+
+}  // namespace twinraster
