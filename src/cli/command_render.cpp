@@ -19,7 +19,11 @@
 #include "gpu/isolated_gpu.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
+#include "cli/verify_report.hpp"
+#include "cpu/triangle_setup.hpp"
 #include "scene/scene_error.hpp"
+#include "verify/verifier.hpp"
+#include "verify/verify_map.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -43,6 +47,7 @@ struct RenderArguments {
   bool backend_given = false;  // --backend on the command line, rather than the default
   std::string rules = "vulkan";
   bool wireframe = false;  // --wireframe: as if every scene said "wireframe": true
+  bool verify = false;     // --verify: judge the image just drawn by what Vulkan allows
   bool json = false;
   std::string device;
   double timeout_seconds = 600;  // the GPU process's time limit; 0: none
@@ -188,6 +193,7 @@ std::string RunText(const BackendRun& run) {
 // --rules book draws on the CPU only, so it implies --backend cpu; asking for another is a mistake.
 void ResolveRules(RenderArguments& a) {
   if (a.rules != "book") return;
+  if (a.verify) throw UsageError("--verify judges by Vulkan's rules, and --rules book draws by the demos': drop one of them");
   if (a.backend_given && a.backend != "cpu") {
     throw UsageError("--rules book draws on the CPU only, as the chapter's demos do: drop --backend " + a.backend);
   }
@@ -256,10 +262,10 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   // process that crashes or times out is a result: the twin still draws and its image is written.
   std::vector<BackendRun> runs;
   std::optional<cpu::TwinRules> twin;
+  DeviceIdentity device;
   if (book) {
     runs.push_back(RenderBook(scene, scene_argument, progress));
   } else {
-    DeviceIdentity device;
     if (a.backend != "cpu") runs.push_back(RenderGpu(list, a, scene_argument, gpu, progress, device));  // GpuUnavailable: exit 3
     if (a.backend != "gpu") {
       // The twin copies the lavapipe that drew (or, with no device asked, its default release).
@@ -279,6 +285,26 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     comparison = CompareImages(runs[0].image, runs[1].image);
   }
 
+  // The verifier judges the image drawn (the GPU's when there is one) when asked, and whenever the
+  // two images differ, to say whether the difference is one Vulkan allows.
+  std::optional<verify::Verification> verification;
+  const BackendRun* judged = nullptr;
+  double verify_ms = 0;
+  if (!book && (a.verify || (comparison && !comparison->Equal()))) {
+    for (const BackendRun& run : runs) {
+      if (run.Drawn() && (!judged || run.name == "gpu")) judged = &run;
+    }
+  }
+  if (judged) {
+    progress.Status("verifying the " + judged->name + " image...");
+    Stopwatch clock;
+    // The GPU's own subpixel precision; the twin snaps as lavapipe does.
+    const int bits = judged->name == "gpu" ? int(device.subpixel_bits) : cpu::kSubpixelBits;
+    verification = verify::VerifyImage(scene, list, judged->image, {.subpixel_bits = bits});
+    verify_ms = clock.Milliseconds();
+  }
+  const std::string map_file = judged && a.verify && !to_stdout ? Suffixed(judged->output, "map") : "";
+
   // Every output is encoded and staged in full before any is renamed into place (or written out).
   progress.Status(runs.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
   std::vector<StagedFile> staged;
@@ -292,6 +318,7 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   }
   const bool wrote_diff = comparison && !comparison->Equal();
   if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image), a.png_level));
+  if (!map_file.empty()) staged.push_back(StagePng(map_file, verify::VerificationMap(judged->image, *verification), a.png_level));
   for (StagedFile& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   std::error_code ignored;
@@ -323,6 +350,16 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     j["diff"] = wrote_diff ? Json(diff_file) : Json(nullptr);
     j["backends"] = {{"gpu", RunJson(find_run("gpu"))}, {"cpu", RunJson(find_run("cpu"))}};
     j["twin_rules"] = TwinJson(twin);
+    if (verification) {
+      nlohmann::ordered_json v;
+      v["image"] = judged->name;
+      const nlohmann::ordered_json verdict =
+          VerificationJson(*verification, map_file.empty() ? std::nullopt : std::optional(map_file), verify_ms);
+      for (const auto& [key, value] : verdict.items()) v[key] = value;
+      j["verify"] = v;
+    } else {
+      j["verify"] = nullptr;
+    }
     // One scene: the object, indented. Several: JSON Lines, one object per scene as it finishes.
     std::cout << (directory ? j.dump() : j.dump(2)) << "\n" << std::flush;
   } else if (!(to_stdout && a.quiet)) {
@@ -344,9 +381,20 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     } else if (runs.size() == 2) {
       report << "gpu vs cpu: not compared, there is no gpu image\n";
     }
+    if (verification && comparison && !comparison->Equal()) {
+      report << "verdict: " << DifferenceVerdict(comparison->differing_pixels, *verification) << "\n";
+    }
+    if (verification && a.verify) {
+      report << "verify: " << judged->name << " image " << verify::VerificationText(*verification)
+             << (map_file.empty() ? "" : ", map in " + map_file) << "\n";
+    }
   }
   if (gpu_failed) return kExitGpuFailed;
-  return comparison && !comparison->Equal() ? kExitImagesDiffer : kExitOk;
+  if (verification && !verification->Passed()) return kExitImagesDiffer;
+  // A twin that copies this lavapipe promised identical images; one that cannot (no rules for the
+  // driver) leaves the verdict to the verifier.
+  const bool twin_promised = twin && twin->exact;
+  return comparison && !comparison->Equal() && twin_promised ? kExitImagesDiffer : kExitOk;
 }
 
 int Render(RenderArguments& a) {
@@ -392,7 +440,9 @@ CommandRun AddRenderCommand(CLI::App& app) {
       "earlier files untouched. On a terminal, progress shows on standard error.\n"
       "The Vulkan work runs in a child process: when the driver crashes or passes --timeout, the\n"
       "report says so, the twin's image is still written, and later scenes still render.\n"
-      "Exit codes: 0 done (both: identical images), 1 the images differ, 2 bad input or usage,\n"
+      "Exit codes: 0 done (both: identical images, or different where the twin has no rules for\n"
+      "the driver and the verifier passes the GPU's), 1 the images differ (or --verify found a\n"
+      "violation), 2 bad input or usage,\n"
       "3 no usable Vulkan device (--backend cpu needs none), 4 internal error, 5 the Vulkan\n"
       "driver crashed or timed out (the twin's image and the report were still written).");
   command
@@ -427,7 +477,12 @@ CommandRun AddRenderCommand(CLI::App& app) {
   command->add_flag("--wireframe", a->wireframe,
                     "draw triangle edges only (Vulkan's polygonMode LINE, 1 pixel, depth-tested), as\n"
                     "if the scene said \"wireframe\": true; the twin follows lavapipe's line rules");
-  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/2, docs/json-output.md)");
+  command->add_flag("--verify", a->verify,
+                    "judge the image drawn (the GPU's, if drawn) by what a conformant Vulkan\n"
+                    "implementation may draw, pixel by pixel (docs/verify.md), and write its\n"
+                    "map beside it as OUT-map.png (OUT-gpu-map.png with both); exit 1 on a\n"
+                    "violation. Without it, a difference between the two images is still judged");
+  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/3, docs/json-output.md)");
   command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
       ->type_name("NAME");
   command

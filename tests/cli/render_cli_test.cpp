@@ -27,7 +27,7 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["format"] == "twinraster.render/2");
+  REQUIRE(j["format"] == "twinraster.render/3");
   REQUIRE(j["scene"] == kScene);
   REQUIRE(j["width"] == 600);
   REQUIRE(j["height"] == 600);
@@ -157,11 +157,13 @@ TEST_CASE("render --json keeps every key with one backend: the other backend and
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"format", "scene", "rules", "wireframe", "width", "height", "instances", "triangles",
-                          "load_ms", "differing_pixels", "max_channel_difference", "diff", "backends", "twin_rules"}) {
+                          "load_ms", "differing_pixels", "max_channel_difference", "diff", "backends", "twin_rules",
+                          "verify"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
-  REQUIRE(j.size() == 14);
+  REQUIRE(j.size() == 15);
+  REQUIRE(j["verify"].is_null());  // not asked for, and nothing differs
   REQUIRE(j["rules"] == "vulkan");
   REQUIRE(j["wireframe"] == false);
   REQUIRE(j["instances"] == 2);
