@@ -4,6 +4,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
 #include "bench/scale_bench.hpp"
+#include "bench/verify_bench.hpp"
 #include "cli/commands.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
@@ -28,6 +29,7 @@ struct BenchArguments {
   bool json = false;
   bool quiet = false;
   bool scale = false;
+  bool verify = false;
   std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
 };
 
@@ -62,6 +64,30 @@ int BenchScale(const BenchArguments& a) {
   return kExitOk;
 }
 
+// bench --verify: the twin's render against the verifier's judgement of it.
+int BenchVerify(const BenchArguments& a) {
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& file : DefaultVerifyBenchScenes(a.scenes)) {
+    if (!a.only || file.string().find(*a.only) != std::string::npos) scenes.push_back(file);
+  }
+  if (scenes.empty()) throw UsageError("--only " + a.only.value_or("") + ": none of the verify bench's scenes");
+  for (const auto& file : scenes) {
+    if (!std::filesystem::is_regular_file(file)) {
+      throw UsageError("no scene " + file.string() + " (run from the repository root, or pass --scenes DIR)");
+    }
+  }
+  Progress progress = Progress::OnStandardError(a.quiet);
+  progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) + " run(s)...");
+  const VerifyBenchResult result = RunVerifyBench(scenes, a.runs);
+  progress.Clear();
+  if (a.out) {
+    WriteTogether(*a.out, {{"verify.json", VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", VerifyBenchTable(result)}});
+  }
+  if (a.json) std::cout << VerifyBenchJson(result).dump(2) << "\n";
+  else std::cout << VerifyBenchTable(result);
+  return kExitOk;
+}
+
 int Bench(const BenchArguments& a) {
   if (a.out && !std::filesystem::is_directory(*a.out)) {
     std::error_code error;
@@ -69,6 +95,7 @@ int Bench(const BenchArguments& a) {
     if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
   }
   if (a.scale) return BenchScale(a);
+  if (a.verify) return BenchVerify(a);
   BenchOptions options;
   options.runs = a.runs;
   options.only = a.only;
@@ -135,6 +162,10 @@ CommandRun AddBenchCommand(CLI::App& app) {
                     "instead of the suite: cubes written out one instance each, at growing counts,\n"
                     "every stage timed, with peak memory (scale.csv/.svg/.json/.txt with --out;\n"
                     "JSON twinraster.bench-scale/1)");
+  command->add_flag("--verify", a->verify,
+                    "instead of the suite: the CPU twin's render against the verifier's judgement\n"
+                    "of that image, on the chapter's scene, lit-gouraud and the million cubes\n"
+                    "(verify.json/.txt with --out; JSON twinraster.bench-verify/1)");
   command->add_option("--counts", a->counts, "with --scale: the instance counts (default: 1000,10000,100000,1000000)")
       ->type_name("N,N")
       ->delimiter(',');

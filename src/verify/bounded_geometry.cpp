@@ -79,17 +79,16 @@ double DepthError(double z, double ze, double w, double we) {
 
 }  // namespace
 
-std::vector<BoundedVertex> BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions) {
+void BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions, std::vector<BoundedVertex>& out) {
   const glm::dmat4 f(float_f);
   const glm::dmat4 magnitude = glm::dmat4(glm::abs(f[0]), glm::abs(f[1]), glm::abs(f[2]), glm::abs(f[3]));
-  std::vector<BoundedVertex> out(float_positions.size());
+  out.assign(float_positions.size(), BoundedVertex{});
   for (std::size_t i = 0; i < float_positions.size(); ++i) {
     const glm::dvec4 p(glm::dvec3(float_positions[i]), 1.0);
     out[i].clip = f * p;  // exact but for double's rounding, 2^-29 of float's
     // Four products and three sums rounded in float: gamma_4 < 5u times the sum of |terms|.
     out[i].error = 5 * kUnit * (magnitude * glm::abs(p));
   }
-  return out;
 }
 
 bool InsideViewVolume(const BoundedVertex& v) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 namespace twinraster::verify {
 
@@ -103,6 +104,61 @@ Coverage TriangleShape::Covers(glm::dvec2 p) const {
   return distance <= radius_ ? Coverage::kMaybe : Coverage::kOut;
 }
 
+std::array<double, 2> TriangleShape::DepthRange() const {
+  const double lo = std::min({v_[0].z, v_[1].z, v_[2].z}), hi = std::max({v_[0].z, v_[1].z, v_[2].z});
+  if (orientation_ == 0 || !std::isfinite(radius_)) {
+    const double e = std::isfinite(radius_) ? depth_error_ : std::numeric_limits<double>::infinity();
+    return {lo - e, hi + e};
+  }
+  // Within the triangle the plane stays between its corners; within `radius` outside it, it moves
+  // |g| radius further. Depth(p)'s own widening, bounded over the box.
+  const double extent = (std::abs(gradient_.x) + std::abs(gradient_.y)) *
+                        (std::max({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) - std::min({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) +
+                         std::max({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) - std::min({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) +
+                         2 * radius_);
+  const double e = depth_error_ + glm::length(gradient_) * radius_ + depth_relative_ * extent +
+                   4 * kUnit * std::max(std::abs(lo), std::abs(hi)) + 4 * kUnit * extent;
+  return {lo - e, hi + e};
+}
+
+namespace {
+
+// The centres X = x + 0.5 of row y with normal[i] . (X, y) + offset[i] + bias[i] > 0 for every edge
+// (>= when `closed`), shrunk (inner) or grown (outer) by a margin against rounding, as {first,
+// last}; first > last when there are none.
+std::array<int, 2> RowSpan(const std::array<glm::dvec2, 3>& normal, const std::array<double, 3>& offset,
+                           const std::array<double, 3>& bias, int y, bool inner) {
+  const double centre_y = y + 0.5;
+  double lo = -1e9, hi = 1e9;
+  for (int i = 0; i < 3; ++i) {
+    const double a = normal[i].x, rest = normal[i].y * centre_y + offset[i] + bias[i];
+    if (a > 0) lo = std::max(lo, -rest / a);
+    else if (a < 0) hi = std::min(hi, -rest / a);
+    else if (inner ? !(rest > 0) : rest < 0) return {1, 0};
+  }
+  const double margin = 1e-6 * (1.0 + std::max(std::abs(lo), std::abs(hi)));
+  lo = inner ? lo + margin : lo - margin;
+  hi = inner ? hi - margin : hi + margin;
+  lo = std::max(lo, -1.0), hi = std::min(hi, 1e8);
+  if (!(lo < hi)) return {1, 0};
+  return inner ? std::array<int, 2>{int(std::floor(lo - 0.5)) + 1, int(std::ceil(hi - 0.5)) - 1}
+               : std::array<int, 2>{int(std::floor(lo - 0.5)), int(std::ceil(hi - 0.5))};
+}
+
+}  // namespace
+
+std::array<int, 2> TriangleShape::InsideSpan(int y) const {
+  if (orientation_ == 0 || !std::isfinite(radius_)) return {1, 0};
+  // Inside by more than each edge can move: every pixel in it is one Covers finds inside too; the
+  // margin leaves the pixels at its ends to Covers.
+  return RowSpan(normal_, offset_, {-edge_radius_[0], -edge_radius_[1], -edge_radius_[2]}, y, true);
+}
+
+std::array<int, 2> TriangleShape::ReachSpan(int y) const {
+  if (orientation_ == 0 || !std::isfinite(radius_)) return {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
+  return RowSpan(normal_, offset_, outside_radius_, y, false);
+}
+
 std::array<double, 3> TriangleShape::EdgeDistances(glm::dvec2 p) const {
   return {glm::dot(normal_[0], p) + offset_[0], glm::dot(normal_[1], p) + offset_[1], glm::dot(normal_[2], p) + offset_[2]};
 }
@@ -191,6 +247,10 @@ Coverage LineShape::Covers(glm::dvec2 p) const {
   return across <= 0.5 * std::sqrt(1 + slope_ * slope_) + r * (1 + slope_) ? Coverage::kMaybe : Coverage::kOut;
 }
 
+std::array<double, 2> LineShape::DepthRange() const {
+  return {std::min(a_.z, b_.z) - depth_error_, std::max(a_.z, b_.z) + depth_error_};
+}
+
 std::array<double, 2> LineShape::Depth(glm::dvec2 p) const {
   const double a_major = a_.xy[major_], b_major = b_.xy[major_];
   const double t = b_major != a_major ? std::clamp((p[major_] - a_major) / (b_major - a_major), 0.0, 1.0) : 0.0;
@@ -199,13 +259,88 @@ std::array<double, 2> LineShape::Depth(glm::dvec2 p) const {
   return {z - depth_error_, z + depth_error_};
 }
 
-FrameJudge::FrameJudge(const Image& image, Rgb8 background, bool reversed_z)
+// Per-pixel buffers kept between frames: fresh pages cost a page fault each, which for a small
+// scene cost more than judging it. Handed out and back under a lock; zeroed on the way out.
+struct FrameBuffers {
+  std::vector<double> gap;
+  std::vector<FrameJudge::State> state;
+
+  static std::mutex& Lock() {
+    static std::mutex lock;
+    return lock;
+  }
+  static std::vector<FrameBuffers>& Spare() {
+    static std::vector<FrameBuffers> spare;
+    return spare;
+  }
+  static FrameBuffers Take(std::size_t pixels) {
+    FrameBuffers b;
+    {
+      const std::lock_guard<std::mutex> hold(Lock());
+      if (!Spare().empty()) {
+        b = std::move(Spare().back());
+        Spare().pop_back();
+      }
+    }
+    b.gap.assign(pixels, 0.0);
+    b.state.assign(pixels, FrameJudge::State{});
+    return b;
+  }
+  static void Give(FrameBuffers b) {
+    const std::lock_guard<std::mutex> hold(Lock());
+    if (Spare().size() < 4) Spare().push_back(std::move(b));
+  }
+};
+
+FrameJudge::FrameJudge(const Image& image, Rgb8 background, bool reversed_z, int row0, int row1)
     : image_(&image),
       background_(background),
       reversed_(reversed_z),
+      row0_(row0),
+      row1_(row1),
       clear_key_(reversed_z ? 0.0 : 1.0),
-      occluder_(std::size_t{image.width} * image.height, reversed_z ? 0.0 : 1.0),
-      state_(std::size_t{image.width} * image.height) {}
+      tiles_x_(int((image.width + kTile - 1) / kTile)),
+      tile_gap_(std::size_t(tiles_x_) * std::size_t((row1 - row0 + kTile - 1) / kTile)),
+      is_dirty_(tile_gap_.size(), 0) {
+  FrameBuffers b = FrameBuffers::Take(std::size_t{image.width} * std::size_t(row1 - row0));
+  gap_ = std::move(b.gap);
+  state_ = std::move(b.state);
+}
+
+FrameJudge::~FrameJudge() { FrameBuffers::Give({std::move(gap_), std::move(state_)}); }
+
+PixelBox FrameJudge::Clip(PixelBox box) const {
+  box.y0 = std::max(box.y0, row0_);
+  box.y1 = std::min(box.y1, row1_ - 1);
+  return box;
+}
+
+bool FrameJudge::CouldMatter(const PixelBox& box, std::array<double, 2> range, bool showing) const {
+  if (box.Empty()) return false;
+  const double near_key = reversed_ ? -range[1] : range[0];
+  if (!(near_key == near_key)) return true;  // NaN: judge it pixel by pixel
+  for (int ty = (box.y0 - row0_) / kTile; ty <= (box.y1 - row0_) / kTile; ++ty) {
+    for (int tx = box.x0 / kTile; tx <= box.x1 / kTile; ++tx) {
+      const double gap = tile_gap_[std::size_t(ty) * tiles_x_ + tx];
+      if (showing ? clear_key_ - near_key >= gap : clear_key_ - near_key > gap) return true;
+    }
+  }
+  return false;
+}
+
+void FrameJudge::RefreshTiles() {
+  const int w = int(image_->width);
+  for (const std::uint32_t tile : dirty_) {
+    const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
+    double gap = std::numeric_limits<double>::infinity();
+    for (int y = row0_ + ty * kTile; y < std::min(row1_, row0_ + (ty + 1) * kTile); ++y) {
+      for (int x = tx * kTile; x < std::min(w, (tx + 1) * kTile); ++x) gap = std::min(gap, gap_[Index(x, y)]);
+    }
+    tile_gap_[tile] = gap;
+    is_dirty_[tile] = 0;
+  }
+  dirty_.clear();
+}
 
 Rgb8 FrameJudge::ImageColour(int x, int y) const {
   const std::uint8_t* p = image_->pixel(std::uint32_t(x), std::uint32_t(y));
@@ -216,45 +351,46 @@ Rgb8 FrameJudge::ImageColour(int x, int y) const {
 void FrameJudge::Occlude(int x, int y, std::array<double, 2> depth) {
   const double far_key = reversed_ ? -depth[0] : depth[1];
   // Written for sure only if it passes against the clear value whatever its depth.
-  if (far_key < clear_key_) {
-    double& o = occluder_[Index(x, y)];
-    o = std::min(o, far_key);
+  double& gap = gap_[Index(x, y)];
+  if (clear_key_ - far_key > gap) {
+    gap = clear_key_ - far_key;
+    const std::uint32_t tile = std::uint32_t(((y - row0_) / kTile) * tiles_x_ + x / kTile);
+    if (!is_dirty_[tile]) is_dirty_[tile] = 1, dirty_.push_back(tile);
   }
 }
 
 bool FrameJudge::MayShow(int x, int y, std::array<double, 2> depth) const {
   const double near_key = reversed_ ? -depth[1] : depth[0];
-  return near_key < clear_key_ && near_key <= occluder_[Index(x, y)];
+  const double near_gap = clear_key_ - near_key;
+  return near_gap > 0 && near_gap >= gap_[Index(x, y)];
 }
 
 void FrameJudge::Offer(int x, int y, const ColourRange& colours) {
   State& s = state_[Index(x, y)];
-  if (s.offers == 0) s.first = colours;
-  else if (!s.uncertain && !s.first.Overlaps(colours)) s.uncertain = true;
+  const auto gap = [](std::uint8_t g, std::uint8_t hi) { return std::max<std::uint8_t>(g, std::uint8_t(255 - hi)); };
+  s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g), std::max(s.max_lo.b, colours.lo.b)};
+  s.hi_gap = {gap(s.hi_gap.r, colours.hi.r), gap(s.hi_gap.g, colours.hi.g), gap(s.hi_gap.b, colours.hi.b)};
   s.offers = std::uint8_t(std::min(2, s.offers + 1));
-  s.distance = std::uint8_t(std::min<int>(s.distance, colours.Distance(ImageColour(x, y))));
+  s.closeness = std::max<std::uint8_t>(s.closeness, std::uint8_t(255 - colours.Distance(ImageColour(x, y))));
 }
 
-Verification FrameJudge::Finish(int subpixel_bits) {
-  Verification v;
-  v.width = image_->width, v.height = image_->height, v.subpixel_bits = subpixel_bits;
-  v.pixels.resize(state_.size());
+void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
   int worst_distance = 0;
-  for (int y = 0; y < int(v.height); ++y) {
-    for (int x = 0; x < int(v.width); ++x) {
+  for (int y = row0_; y < row1_; ++y) {
+    for (int x = 0; x < int(image_->width); ++x) {
       const std::size_t i = Index(x, y);
       State& s = state_[i];
-      const bool surface_certain = occluder_[i] < clear_key_;
-      const bool some_surface = s.offers > 0;
-      if (!surface_certain) Offer(x, y, ColourRange::Exactly(background_));
-      if (some_surface) ++v.covered;
-      PixelClass c = s.distance > 0 ? PixelClass::kViolation : s.uncertain ? PixelClass::kUncertain : PixelClass::kCertain;
-      v.pixels[i] = c;
+      if (s.offers > 0) ++v.covered;
+      if (gap_[i] == 0) Offer(x, y, ColourRange::Exactly(background_));
+      const bool disjoint = s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
+      const int distance = 255 - s.closeness;
+      const PixelClass c = distance > 0 ? PixelClass::kViolation : disjoint ? PixelClass::kUncertain : PixelClass::kCertain;
+      pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
       if (c == PixelClass::kViolation) {
         ++v.violations;
-        Violation found{std::uint32_t(x), std::uint32_t(y), ImageColour(x, y), s.distance, {}};
+        const Violation found{std::uint32_t(x), std::uint32_t(y), ImageColour(x, y), distance, {}};
         if (!v.first) v.first = found;
-        if (s.distance > worst_distance) worst_distance = s.distance, v.worst = found;
+        if (distance > worst_distance) worst_distance = distance, v.worst = found;
       } else if (c == PixelClass::kUncertain) {
         ++v.uncertain;
       } else {
@@ -262,7 +398,6 @@ Verification FrameJudge::Finish(int subpixel_bits) {
       }
     }
   }
-  return v;
 }
 
 }  // namespace twinraster::verify

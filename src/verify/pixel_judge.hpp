@@ -33,6 +33,13 @@ class TriangleShape {
   // [lo, hi] of the depth a fragment at p may get (float interpolation, D32).
   std::array<double, 2> Depth(glm::dvec2 p) const;
   ColourRange Colour(glm::dvec2 p, Rgb8 flat) const;
+  // Bounds on the depth of any fragment it may make, anywhere.
+  std::array<double, 2> DepthRange() const;
+  // The pixels of row y whose centres are inside by more than any edge can move (Covers says kIn),
+  // as {first, last}; first > last when there are none. Scanning skips the edge tests there.
+  std::array<int, 2> InsideSpan(int y) const;
+  // The pixels of row y that it may cover at all: Covers says kOut for every other one.
+  std::array<int, 2> ReachSpan(int y) const;
   // Signed distances from p to the edges v[i] -> v[i + 1], positive inside; degenerate: not valid.
   std::array<double, 3> EdgeDistances(glm::dvec2 p) const;
   bool Degenerate() const { return orientation_ == 0; }
@@ -64,6 +71,7 @@ class LineShape {
   Coverage Covers(glm::dvec2 p) const;
   std::array<double, 2> Depth(glm::dvec2 p) const;
   ColourRange Colour(glm::dvec2, Rgb8 flat) const { return ColourRange::Exactly(flat); }  // lines are unlit
+  std::array<double, 2> DepthRange() const;
 
  private:
   WindowVertex a_, b_;
@@ -74,40 +82,66 @@ class LineShape {
   double depth_error_ = 0;
 };
 
-// The frame: pass 1 records, per pixel, the farthest depth of the nearest surface certain to be
-// written there; pass 2 offers every surface that may cover a pixel and is not surely behind it.
+// A band of the frame's rows [row0, row1): pass 1 records, per pixel, the farthest depth of the
+// nearest surface certain to be written there; pass 2 offers every surface that may cover a
+// pixel and is not surely behind it. Bands share nothing, so each may run on its own thread.
 class FrameJudge {
  public:
-  FrameJudge(const Image& image, Rgb8 background, bool reversed_z);
+  FrameJudge(const Image& image, Rgb8 background, bool reversed_z, int row0, int row1);
+  ~FrameJudge();  // hands its per-pixel buffers back for the next frame
+  FrameJudge(const FrameJudge&) = delete;
+  FrameJudge& operator=(const FrameJudge&) = delete;
 
+  PixelBox Clip(PixelBox box) const;  // to this band's rows
   // Pass 1: a surface certainly covers (x, y) and its depth is in `depth`.
   void Occlude(int x, int y, std::array<double, 2> depth);
   // Pass 2: whether a surface that may cover (x, y) with this depth may also be what shows there.
   bool MayShow(int x, int y, std::array<double, 2> depth) const;
   void Offer(int x, int y, const ColourRange& colours);
-  bool BackgroundMayShow(int x, int y) const { return occluder_[Index(x, y)] >= clear_key_; }
+  bool BackgroundMayShow(int x, int y) const { return gap_[Index(x, y)] == 0; }
   Rgb8 background() const { return background_; }
 
-  // The background where no surface is certain, then every pixel's class.
-  Verification Finish(int subpixel_bits);
+  // Whether a surface whose depth lies in `range` everywhere could matter anywhere in `box`: in
+  // pass 1 lower the bound (`showing` false), in pass 2 show (`showing` true). Decided per 16 x 16
+  // tile from the farthest bound in it, as of the last RefreshTiles, so hidden surfaces cost
+  // nothing per pixel.
+  bool CouldMatter(const PixelBox& box, std::array<double, 2> range, bool showing) const;
+  void RefreshTiles();
+
+  // The background where no surface is certain, then every pixel's class, written into `pixels`
+  // (the whole frame's, row by row) and counted into `counts`, with the band's first and worst.
+  void Finish(Verification& counts, std::vector<PixelClass>& pixels);
   Rgb8 ImageColour(int x, int y) const;
   std::uint32_t width() const { return image_->width; }
   std::uint32_t height() const { return image_->height; }
 
  private:
-  std::size_t Index(int x, int y) const { return std::size_t(y) * image_->width + std::size_t(x); }
+  std::size_t Index(int x, int y) const { return std::size_t(y - row0_) * image_->width + std::size_t(x); }
   const Image* image_;
   Rgb8 background_;
   bool reversed_ = false;
+  int row0_ = 0, row1_ = 0;
   double clear_key_ = 1;
-  std::vector<double> occluder_;  // depth keys (negated when reversed), clear_key_: none certain
+  // Depth keys are the depth for LESS and its negation for GREATER, so nearer is smaller. Per
+  // pixel, the key of the nearest certain surface's farthest depth, kept as clear key - key
+  // (0: none), so that a fresh frame is all zeros.
+  std::vector<double> gap_;
+  // Offers pairwise overlap exactly when, channel by channel, the largest low end is no more than
+  // the smallest high end (Helly's theorem in one dimension): kept that way, the verdict does not
+  // depend on the order of the offers. All zeros when nothing was offered.
   struct State {
-    ColourRange first;
+    Rgb8 max_lo{0, 0, 0};
+    Rgb8 hi_gap{0, 0, 0};       // 255 - the smallest high end
     std::uint8_t offers = 0;    // saturates at 2
-    bool uncertain = false;     // an offer that does not overlap the first
-    std::uint8_t distance = 255;  // the image colour's distance from the nearest offer
+    std::uint8_t closeness = 0; // 255 - the image colour's distance from the nearest offer
   };
   std::vector<State> state_;
+  friend struct FrameBuffers;
+  static constexpr int kTile = 16;
+  int tiles_x_ = 0;
+  std::vector<double> tile_gap_;  // the smallest gap in each tile: its farthest bound
+  std::vector<std::uint32_t> dirty_;
+  std::vector<char> is_dirty_;
 };
 
 }  // namespace twinraster::verify

@@ -4,10 +4,13 @@
 #include "verify/pixel_judge.hpp"
 
 #include <algorithm>
+#include <future>
 #include <optional>
 #include <unordered_map>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <type_traits>
 
 namespace twinraster::verify {
 
@@ -28,12 +31,24 @@ void CheckInputs(const Scene& scene, const DrawList& list, const Image& image, c
   }
 }
 
-// visit(x, y, centre, coverage) for each pixel of `box` the shape may cover.
+// visit(x, y, centre, coverage) for each pixel of `box` the shape may cover. A triangle's rows
+// are inside in their middle: those pixels are visited without testing the edges.
 template <class Shape, class Visit>
 void Scan(const Shape& shape, const PixelBox& box, Visit&& visit) {
   for (int y = box.y0; y <= box.y1; ++y) {
-    for (int x = box.x0; x <= box.x1; ++x) {
+    int in0 = box.x1 + 1, in1 = box.x1, x0 = box.x0, x1 = box.x1;
+    if constexpr (std::is_same_v<Shape, TriangleShape>) {
+      const std::array<int, 2> reach = shape.ReachSpan(y);
+      x0 = std::max(x0, reach[0]), x1 = std::min(x1, reach[1]);
+      const std::array<int, 2> span = shape.InsideSpan(y);
+      if (span[0] <= span[1]) in0 = std::max(span[0], box.x0), in1 = std::min(span[1], box.x1);
+    }
+    for (int x = x0; x <= x1; ++x) {
       const glm::dvec2 centre(x + 0.5, y + 0.5);
+      if (x >= in0 && x <= in1) {
+        visit(x, y, centre, Coverage::kIn);
+        continue;
+      }
       const Coverage c = shape.Covers(centre);
       if (c != Coverage::kOut) visit(x, y, centre, c);
     }
@@ -70,41 +85,62 @@ std::vector<std::array<Neighbour, 3>> MeshNeighbours(const DrawMesh& mesh) {
   return out;
 }
 
+// A draw's vertices bounded in clip space and, for those inside the view volume, mapped to the
+// framebuffer once for all the triangles that share them.
+struct DrawGeometry {
+  std::vector<BoundedVertex> clip;
+  std::vector<WindowVertex> window;
+  std::vector<char> inside;
+};
+
 // Every primitive the scene draws, in draw order and bounded: the triangles of each clipped fan,
-// or in wireframe each clipped polygon's edges. visit(shape, flat colour) with a TriangleShape or
-// a LineShape; `colours` asks for lit corner colours (pass 2 only).
+// or in wireframe each clipped polygon's edges.
 class Primitives {
  public:
   Primitives(const Scene& scene, const DrawList& list, int subpixel_bits)
-      : list_(list), subpixel_bits_(subpixel_bits) {
+      : list_(list), subpixel_bits_(subpixel_bits), neighbours_(list.meshes.size()) {
     if (list.lighting && !list.wireframe) light_.emplace(scene);
   }
 
+  // visit(shape, flat colour, triangle index, whether unclipped) with a TriangleShape or a
+  // LineShape; `colours` asks for lit corner colours (pass 2 only).
   template <class Visit>
   void ForEach(bool colours, Visit&& visit) const {
-    for (std::size_t d = 0; d < list_.draws.size(); ++d) {
-      const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
-      const std::vector<BoundedVertex> vertices = Vertices(d);
-      const bool lit = mesh.shading != Shading::kUnlit && light_;
-      std::vector<std::array<glm::dvec3, 3>> corner;
-      if (lit && colours) corner = light_->CornerColours(d);
-      for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const auto& tri = mesh.triangles[t];
-        std::array<BoundedVertex, 3> v{vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]};
+    DrawGeometry g;
+    for (std::size_t d = 0; d < list_.draws.size(); ++d) ForEachInDraw(d, colours, g, visit);
+  }
+
+  template <class Visit>
+  void ForEachInDraw(std::size_t d, bool colours, DrawGeometry& g, Visit&& visit) const {
+    const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
+    Prepare(d, g);
+    const bool lit = mesh.shading != Shading::kUnlit && light_;
+    std::vector<std::array<glm::dvec3, 3>> corner;
+    if (lit && colours) corner = light_->CornerColours(d);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      if (!list_.wireframe && g.inside[tri[0]] && g.inside[tri[1]] && g.inside[tri[2]]) {
+        std::array<WindowVertex, 3> v{g.window[tri[0]], g.window[tri[1]], g.window[tri[2]]};
         if (!corner.empty()) {
           for (int k = 0; k < 3; ++k) v[k].colour = corner[t][k];
         }
-        const WindowPolygon polygon = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
-        if (list_.wireframe) {
-          for (int i = 0; i < polygon.size; ++i) {
-            visit(LineShape(polygon.v[i], polygon.v[(i + 1) % polygon.size], polygon.edge_from_clipping[i]),
-                  mesh.colours[t]);
-          }
-          continue;
+        visit(TriangleShape(v[0], v[1], v[2], lit), mesh.colours[t], t, true);
+        continue;
+      }
+      std::array<BoundedVertex, 3> v{g.clip[tri[0]], g.clip[tri[1]], g.clip[tri[2]]};
+      if (!corner.empty()) {
+        for (int k = 0; k < 3; ++k) v[k].colour = corner[t][k];
+      }
+      const WindowPolygon polygon = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
+      if (list_.wireframe) {
+        for (int i = 0; i < polygon.size; ++i) {
+          visit(LineShape(polygon.v[i], polygon.v[(i + 1) % polygon.size], polygon.edge_from_clipping[i]),
+                mesh.colours[t], t, false);
         }
-        for (int i = 2; i < polygon.size; ++i) {
-          visit(TriangleShape(polygon.v[0], polygon.v[i - 1], polygon.v[i], lit), mesh.colours[t]);
-        }
+        continue;
+      }
+      for (int i = 2; i < polygon.size; ++i) {
+        visit(TriangleShape(polygon.v[0], polygon.v[i - 1], polygon.v[i], lit), mesh.colours[t], t, false);
       }
     }
   }
@@ -114,122 +150,153 @@ class Primitives {
   // another triangle of the mesh is covered by one of the two whichever way the edge moves (the
   // vertices are the same for both, and the spec's tie rule leaves no gap between them): certain,
   // with the farther of the two depths.
-  void Occlude(FrameJudge& judge) const {
+  void Occlude(FrameJudge& judge) {
     const std::uint32_t w = list_.width, h = list_.height;
-    if (list_.wireframe) {
-      ForEach(false, [&](const auto& shape, Rgb8) {
-        Scan(shape, shape.Box(w, h), [&](int x, int y, glm::dvec2 p, Coverage c) {
+    DrawGeometry g;
+    std::size_t since_refresh = 0;
+    for (std::size_t d = 0; d < list_.draws.size(); ++d) {
+      const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
+      auto& nb = neighbours_[list_.draws[d].mesh];
+      if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
+      ForEachInDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+        const PixelBox box = judge.Clip(shape.Box(w, h));
+        if (!judge.CouldMatter(box, shape.DepthRange(), false)) return;
+        if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
+          if (unclipped) {
+            OccludeWithNeighbours(judge, shape, box, mesh, *nb, t, g);
+            return;
+          }
+        }
+        Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
           if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
         });
       });
-      return;
+      since_refresh += mesh.triangles.size();
+      if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
     }
-    std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours(list_.meshes.size());
-    std::vector<WindowVertex> window;
-    std::vector<char> inside;
-    for (std::size_t d = 0; d < list_.draws.size(); ++d) {
-      const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
-      const std::vector<BoundedVertex> vertices = Vertices(d);
-      auto& nb = neighbours[list_.draws[d].mesh];
-      if (!nb) nb = MeshNeighbours(mesh);
-      window.assign(vertices.size(), WindowVertex{});
-      inside.assign(vertices.size(), 0);
-      for (std::size_t i = 0; i < vertices.size(); ++i) {
-        inside[i] = InsideViewVolume(vertices[i]);
-        if (inside[i]) window[i] = MapToWindow(vertices[i], w, h, subpixel_bits_);
-      }
-      for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const auto& tri = mesh.triangles[t];
-        if (!inside[tri[0]] || !inside[tri[1]] || !inside[tri[2]]) {
-          const WindowPolygon polygon = ClipToWindow(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]], w, h, subpixel_bits_);
-          for (int i = 2; i < polygon.size; ++i) {
-            const TriangleShape shape(polygon.v[0], polygon.v[i - 1], polygon.v[i], false);
-            Scan(shape, shape.Box(w, h), [&](int x, int y, glm::dvec2 p, Coverage c) {
-              if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
-            });
-          }
-          continue;
-        }
-        const TriangleShape shape(window[tri[0]], window[tri[1]], window[tri[2]], false);
-        std::array<std::optional<TriangleShape>, 3> across;
-        Scan(shape, shape.Box(w, h), [&](int x, int y, glm::dvec2 p, Coverage c) {
-          if (c == Coverage::kIn) {
-            judge.Occlude(x, y, shape.Depth(p));
-            return;
-          }
-          if (shape.Degenerate()) return;
-          const std::array<double, 3> dt = shape.EdgeDistances(p);
-          int near = -1;
-          for (int j = 0; j < 3; ++j) {
-            if (dt[j] < 0) return;  // outside: the neighbour decides from its side
-            if (dt[j] <= shape.EdgeRadius(j)) {
-              if (near >= 0) return;  // near a corner
-              near = j;
-            }
-          }
-          if (near < 0) return;
-          const Neighbour n = (*nb)[t][std::size_t(near)];
-          if (n.triangle < 0) return;
-          const auto& nt = mesh.triangles[std::size_t(n.triangle)];
-          if (!inside[nt[0]] || !inside[nt[1]] || !inside[nt[2]]) return;
-          if (!across[near]) across[near].emplace(window[nt[0]], window[nt[1]], window[nt[2]], false);
-          const TriangleShape& other = *across[near];
-          if (other.Degenerate()) return;
-          // The other triangle must lie across the shared edge, not folded over this one.
-          const double r = std::max(shape.radius(), other.radius());
-          if (shape.EdgeDistances(window[nt[std::size_t((n.edge + 2) % 3)]].xy)[near] >= -r) return;
-          const std::array<double, 3> dn = other.EdgeDistances(p);
-          for (int j = 0; j < 3; ++j) {
-            if (j != n.edge && dn[j] <= other.EdgeRadius(j)) return;
-          }
-          const std::array<double, 2> a = shape.Depth(p), b = other.Depth(p);
-          judge.Occlude(x, y, {std::min(a[0], b[0]), std::max(a[1], b[1])});
-        });
-      }
-    }
+    judge.RefreshTiles();
   }
 
  private:
-  std::vector<BoundedVertex> Vertices(std::size_t d) const {
-    return BoundVertices(list_.draws[d].F, list_.meshes[list_.draws[d].mesh].positions);
+  void Prepare(std::size_t d, DrawGeometry& g) const {
+    const DrawCall& draw = list_.draws[d];
+    BoundVertices(draw.F, list_.meshes[draw.mesh].positions, g.clip);
+    g.window.resize(g.clip.size());
+    g.inside.assign(g.clip.size(), 0);
+    for (std::size_t i = 0; i < g.clip.size(); ++i) {
+      g.inside[i] = InsideViewVolume(g.clip[i]);
+      if (g.inside[i]) g.window[i] = MapToWindow(g.clip[i], list_.width, list_.height, subpixel_bits_);
+    }
+  }
+
+  static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
+                                    const DrawMesh& mesh, const std::vector<std::array<Neighbour, 3>>& nb, std::size_t t,
+                                    const DrawGeometry& g) {
+    std::array<std::optional<TriangleShape>, 3> across;
+    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+      if (c == Coverage::kIn) {
+        judge.Occlude(x, y, shape.Depth(p));
+        return;
+      }
+      if (shape.Degenerate()) return;
+      const std::array<double, 3> dt = shape.EdgeDistances(p);
+      int near = -1;
+      for (int j = 0; j < 3; ++j) {
+        if (dt[j] < 0) return;  // outside: the neighbour decides from its side
+        if (dt[j] <= shape.EdgeRadius(j)) {
+          if (near >= 0) return;  // near a corner
+          near = j;
+        }
+      }
+      if (near < 0) return;
+      const Neighbour n = nb[t][std::size_t(near)];
+      if (n.triangle < 0) return;
+      const auto& nt = mesh.triangles[std::size_t(n.triangle)];
+      if (!g.inside[nt[0]] || !g.inside[nt[1]] || !g.inside[nt[2]]) return;
+      if (!across[near]) across[near].emplace(g.window[nt[0]], g.window[nt[1]], g.window[nt[2]], false);
+      const TriangleShape& other = *across[near];
+      if (other.Degenerate()) return;
+      // The other triangle must lie across the shared edge, not folded over this one.
+      const double r = std::max(shape.radius(), other.radius());
+      if (shape.EdgeDistances(g.window[nt[std::size_t((n.edge + 2) % 3)]].xy)[near] >= -r) return;
+      const std::array<double, 3> dn = other.EdgeDistances(p);
+      for (int j = 0; j < 3; ++j) {
+        if (j != n.edge && dn[j] <= other.EdgeRadius(j)) return;
+      }
+      const std::array<double, 2> a = shape.Depth(p), b = other.Depth(p);
+      judge.Occlude(x, y, {std::min(a[0], b[0]), std::max(a[1], b[1])});
+    });
   }
 
   const DrawList& list_;
   int subpixel_bits_;
   std::optional<ExactLight> light_;
+  std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours_;  // per mesh, when needed
 };
 
 // Pass 2 at one pixel only, gathering what each surface that may show there allows.
 std::vector<ColourRange> AllowedAt(const Primitives& primitives, FrameJudge& judge, int x, int y) {
   std::vector<ColourRange> allowed;
-  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat) {
+  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
     const PixelBox box = shape.Box(judge.width(), judge.height());
     if (x < box.x0 || x > box.x1 || y < box.y0 || y > box.y1) return;
-    Scan(shape, PixelBox{x, y, x, y}, [&](int, int, glm::dvec2 p, Coverage) {
-      if (judge.MayShow(x, y, shape.Depth(p))) allowed.push_back(shape.Colour(p, flat));
-    });
+    const Coverage c = shape.Covers(glm::dvec2(x + 0.5, y + 0.5));
+    if (c == Coverage::kOut) return;
+    const glm::dvec2 p(x + 0.5, y + 0.5);
+    if (judge.MayShow(x, y, shape.Depth(p))) allowed.push_back(shape.Colour(p, flat));
   });
   if (judge.BackgroundMayShow(x, y)) allowed.push_back(ColourRange::Exactly(judge.background()));
   return allowed;
+}
+
+// One band of rows judged whole: both passes, then each pixel's class into `pixels` (the whole
+// frame's; the band writes only its rows) and the band's counts into `counts`.
+void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, int subpixel_bits, int row0, int row1,
+               Verification& counts, std::vector<PixelClass>& pixels) {
+  Primitives primitives(scene, list, subpixel_bits);
+  FrameJudge judge(image, list.background, list.reversed_z, row0, row1);
+  const std::uint32_t w = image.width, h = image.height;
+  primitives.Occlude(judge);
+  // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
+  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
+    const PixelBox box = judge.Clip(shape.Box(w, h));
+    if (!judge.CouldMatter(box, shape.DepthRange(), true)) return;
+    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage) {
+      if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat));
+    });
+  });
+  judge.Finish(counts, pixels);
+  for (std::optional<Violation>* v : {&counts.worst, &counts.first}) {
+    if (*v) (*v)->allowed = AllowedAt(primitives, judge, int((*v)->x), int((*v)->y));
+  }
 }
 
 }  // namespace
 
 Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options) {
   CheckInputs(scene, list, image, options);
-  const Primitives primitives(scene, list, options.subpixel_bits);
-  FrameJudge judge(image, list.background, list.reversed_z);
-  const std::uint32_t w = image.width, h = image.height;
-  primitives.Occlude(judge);
-  // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
-  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat) {
-    Scan(shape, shape.Box(w, h), [&](int x, int y, glm::dvec2 p, Coverage) {
-      if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat));
-    });
-  });
-  Verification result = judge.Finish(options.subpixel_bits);
-  for (std::optional<Violation>* v : {&result.worst, &result.first}) {
-    if (*v) (*v)->allowed = AllowedAt(primitives, judge, int((*v)->x), int((*v)->y));
+  Verification result;
+  result.width = image.width, result.height = image.height, result.subpixel_bits = options.subpixel_bits;
+  result.pixels.resize(std::size_t{image.width} * image.height);
+  // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
+  // its own pixels, so they share nothing but the read-only inputs and the pixel classes.
+  const int rows = int(image.height);
+  const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
+  const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
+  std::vector<Verification> bands(std::size_t((rows + band_rows - 1) / band_rows));
+  std::vector<std::future<void>> running;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
+    running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
+      JudgeBand(scene, list, image, options.subpixel_bits, row0, row1, bands[b], result.pixels);
+    }));
+  }
+  for (auto& r : running) r.get();  // rethrows a band's exception
+  for (const Verification& band : bands) {  // top to bottom: the first violation is the first band's
+    result.certain += band.certain, result.uncertain += band.uncertain, result.violations += band.violations;
+    result.covered += band.covered;
+    if (!result.first && band.first) result.first = band.first;
+    if (band.worst && (!result.worst || band.worst->distance > result.worst->distance)) result.worst = band.worst;
   }
   return result;
 }

@@ -159,6 +159,9 @@ def main():
              ["bench", "--scale", "--counts", "1000,64", "--runs", "1", "--json", "-q"], None, 0,
              lambda d: [r["instances"] for r in d["rows"]] == [64, 1000] and all(r["identical"] for r in d["rows"])
              and d["rows"][1]["triangles"] == 12000),
+            ("bench --verify, the chapter's scene", "bench-verify",
+             ["bench", "--verify", "--only", "cgfs-transforms", "--runs", "1", "--scenes", scenes, "--json", "-q"], None, 0,
+             lambda d: len(d["rows"]) == 1 and d["rows"][0]["violations"] == 0 and d["rows"][0]["triangles"] == 24),
             ("bench, depth scenes, two methods", "bench",
              ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
               scenes, "--json", "-q"], None, 0,

@@ -1,0 +1,37 @@
+// `twinraster bench --verify`: what judging a frame costs against drawing it, per scene: the CPU
+// twin's render and the verifier's judgement of that image, side by side, medians.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace twinraster {
+
+struct VerifyBenchRow {
+  std::string scene;
+  std::uint32_t width = 0, height = 0;
+  std::size_t triangles = 0;
+  unsigned twin_threads = 0;
+  double twin_ms = 0;    // RenderOnCpu: vertex stage to image, median
+  double verify_ms = 0;  // VerifyImage of that image at lavapipe's 8 subpixel bits, median
+  double Ratio() const { return twin_ms > 0 ? verify_ms / twin_ms : 0.0; }
+  std::uint64_t uncertain = 0, covered = 0, violations = 0;
+};
+
+struct VerifyBenchResult {
+  std::vector<VerifyBenchRow> rows;
+  std::string machine;
+  int runs = 0;
+};
+
+// The chapter's scene, lit-gouraud and the million cubes at 1920 x 1080 by default.
+std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesystem::path& scenes_dir);
+VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs);
+
+std::string VerifyBenchTable(const VerifyBenchResult& result);
+nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result);
+
+}  // namespace twinraster
