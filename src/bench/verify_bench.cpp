@@ -78,7 +78,7 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
     s << line;
   }
   s << "(twin: RenderOnCpu on " << (result.rows.empty() ? 0 : result.rows.front().twin_threads)
-    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one thread; uncertain: of the covered pixels)\n";
+    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; uncertain: of the covered pixels)\n";
   return s.str();
 }
 
