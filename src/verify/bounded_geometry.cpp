@@ -45,12 +45,12 @@ BoundedVertex Intersect(const BoundedVertex& in, double d_in, const BoundedVerte
 
 struct ClipPolygon {
   std::array<BoundedVertex, 9> v;
-  int size = 0;
+  std::size_t size = 0;
 };
 
 ClipPolygon ClipAgainst(const ClipPolygon& polygon, int plane) {
   ClipPolygon out;
-  for (int i = 0; i < polygon.size; ++i) {
+  for (std::size_t i = 0; i < polygon.size; ++i) {
     const BoundedVertex& prev = polygon.v[(i + polygon.size - 1) % polygon.size];
     const BoundedVertex& cur = polygon.v[i];
     const double d_prev = truth::PlaneDistance(prev.clip, plane), d_cur = truth::PlaneDistance(cur.clip, plane);
@@ -123,7 +123,7 @@ WindowPolygon ClipToWindow(const BoundedVertex& a, const BoundedVertex& b, const
   for (int plane = 0; plane < truth::kClipPlaneCount && polygon.size > 0; ++plane) {
     polygon = ClipAgainst(polygon, plane);
   }
-  for (int i = 0; i < polygon.size; ++i) {
+  for (std::size_t i = 0; i < polygon.size; ++i) {
     window.v[i] = MapToWindow(polygon.v[i], width, height, subpixel_bits);
     window.edge_from_clipping[i] = (polygon.v[i].planes & polygon.v[(i + 1) % polygon.size].planes) != 0;
   }

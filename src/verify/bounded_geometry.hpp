@@ -47,7 +47,7 @@ struct WindowVertex {
 struct WindowPolygon {
   std::array<WindowVertex, 9> v;
   std::array<bool, 9> edge_from_clipping{};
-  int size = 0;
+  std::size_t size = 0;
 };
 
 // The viewport transform of one vertex inside the view volume (W x H, depth range [0, 1]).

@@ -49,7 +49,7 @@ TriangleShape::TriangleShape(const WindowVertex& a, const WindowVertex& b, const
   const glm::dvec2 e1 = b.xy - a.xy, e2 = c.xy - a.xy;
   area2_ = Cross(e1, e2);
   orientation_ = area2_ > 0 ? 1 : area2_ < 0 ? -1 : 0;
-  for (int i = 0; i < 3 && orientation_ != 0; ++i) {
+  for (std::size_t i = 0; i < 3 && orientation_ != 0; ++i) {
     const glm::dvec2 p = v_[i].xy, q = v_[(i + 1) % 3].xy;
     const double length = glm::length(q - p);
     if (!(length > 0)) {
@@ -130,7 +130,7 @@ std::array<int, 2> RowSpan(const std::array<glm::dvec2, 3>& normal, const std::a
                            const std::array<double, 3>& bias, int y, bool inner) {
   const double centre_y = y + 0.5;
   double lo = -1e9, hi = 1e9;
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < 3; ++i) {
     const double a = normal[i].x, rest = normal[i].y * centre_y + offset[i] + bias[i];
     if (a > 0) lo = std::max(lo, -rest / a);
     else if (a < 0) hi = std::min(hi, -rest / a);
@@ -321,7 +321,7 @@ bool FrameJudge::CouldMatter(const PixelBox& box, std::array<double, 2> range, b
   if (!(near_key == near_key)) return true;  // NaN: judge it pixel by pixel
   for (int ty = (box.y0 - row0_) / kTile; ty <= (box.y1 - row0_) / kTile; ++ty) {
     for (int tx = box.x0 / kTile; tx <= box.x1 / kTile; ++tx) {
-      const double gap = tile_gap_[std::size_t(ty) * tiles_x_ + tx];
+      const double gap = tile_gap_[std::size_t(ty) * std::size_t(tiles_x_) + std::size_t(tx)];
       if (showing ? clear_key_ - near_key >= gap : clear_key_ - near_key > gap) return true;
     }
   }

@@ -69,10 +69,10 @@ std::vector<std::array<Neighbour, 3>> MeshNeighbours(const DrawMesh& mesh) {
   std::unordered_map<std::uint64_t, Sharing> edges;
   edges.reserve(mesh.triangles.size() * 2);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (int i = 0; i < 3; ++i) {
+    for (std::size_t i = 0; i < 3; ++i) {
       const std::uint32_t a = mesh.triangles[t][i], b = mesh.triangles[t][(i + 1) % 3];
       Sharing& s = edges[(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b)];
-      (s.count == 0 ? s.first : s.second) = {std::int32_t(t), i};
+      (s.count == 0 ? s.first : s.second) = {std::int32_t(t), std::int32_t(i)};
       ++s.count;
     }
   }
@@ -122,24 +122,24 @@ class Primitives {
       if (!list_.wireframe && g.inside[tri[0]] && g.inside[tri[1]] && g.inside[tri[2]]) {
         std::array<WindowVertex, 3> v{g.window[tri[0]], g.window[tri[1]], g.window[tri[2]]};
         if (!corner.empty()) {
-          for (int k = 0; k < 3; ++k) v[k].colour = corner[t][k];
+          for (std::size_t k = 0; k < 3; ++k) v[k].colour = corner[t][k];
         }
         visit(TriangleShape(v[0], v[1], v[2], lit), mesh.colours[t], t, true);
         continue;
       }
       std::array<BoundedVertex, 3> v{g.clip[tri[0]], g.clip[tri[1]], g.clip[tri[2]]};
       if (!corner.empty()) {
-        for (int k = 0; k < 3; ++k) v[k].colour = corner[t][k];
+        for (std::size_t k = 0; k < 3; ++k) v[k].colour = corner[t][k];
       }
       const WindowPolygon polygon = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
       if (list_.wireframe) {
-        for (int i = 0; i < polygon.size; ++i) {
+        for (std::size_t i = 0; i < polygon.size; ++i) {
           visit(LineShape(polygon.v[i], polygon.v[(i + 1) % polygon.size], polygon.edge_from_clipping[i]),
                 mesh.colours[t], t, false);
         }
         continue;
       }
-      for (int i = 2; i < polygon.size; ++i) {
+      for (std::size_t i = 2; i < polygon.size; ++i) {
         visit(TriangleShape(polygon.v[0], polygon.v[i - 1], polygon.v[i], lit), mesh.colours[t], t, false);
       }
     }
@@ -200,16 +200,16 @@ class Primitives {
       }
       if (shape.Degenerate()) return;
       const std::array<double, 3> dt = shape.EdgeDistances(p);
-      int near = -1;
-      for (int j = 0; j < 3; ++j) {
+      std::size_t near = 3;  // the one edge it lies within reach of
+      for (std::size_t j = 0; j < 3; ++j) {
         if (dt[j] < 0) return;  // outside: the neighbour decides from its side
-        if (dt[j] <= shape.EdgeRadius(j)) {
-          if (near >= 0) return;  // near a corner
+        if (dt[j] <= shape.EdgeRadius(int(j))) {
+          if (near < 3) return;  // near a corner
           near = j;
         }
       }
-      if (near < 0) return;
-      const Neighbour n = nb[t][std::size_t(near)];
+      if (near == 3) return;
+      const Neighbour n = nb[t][near];
       if (n.triangle < 0) return;
       const auto& nt = mesh.triangles[std::size_t(n.triangle)];
       if (!g.inside[nt[0]] || !g.inside[nt[1]] || !g.inside[nt[2]]) return;
@@ -220,8 +220,8 @@ class Primitives {
       const double r = std::max(shape.radius(), other.radius());
       if (shape.EdgeDistances(g.window[nt[std::size_t((n.edge + 2) % 3)]].xy)[near] >= -r) return;
       const std::array<double, 3> dn = other.EdgeDistances(p);
-      for (int j = 0; j < 3; ++j) {
-        if (j != n.edge && dn[j] <= other.EdgeRadius(j)) return;
+      for (std::size_t j = 0; j < 3; ++j) {
+        if (int(j) != n.edge && dn[j] <= other.EdgeRadius(int(j))) return;
       }
       const std::array<double, 2> a = shape.Depth(p), b = other.Depth(p);
       judge.Occlude(x, y, {std::min(a[0], b[0]), std::max(a[1], b[1])});
