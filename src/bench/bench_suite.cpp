@@ -86,6 +86,11 @@ GpuRenderer LavapipeWithThreads(unsigned threads) {
 
 }  // namespace
 
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 std::string MachineDescription(const std::string& device) {
   std::string model = "unknown CPU";
   std::ifstream cpuinfo("/proc/cpuinfo");

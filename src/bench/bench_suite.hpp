@@ -47,6 +47,9 @@ struct BenchResult {
   double seconds = 0;
 };
 
+// The middle value of `values` (the upper middle of an even count), for every bench's medians.
+double Median(std::vector<double> values);
+
 // "CPU model, N hardware threads; Vulkan: device", for the reports.
 std::string MachineDescription(const std::string& device);
 

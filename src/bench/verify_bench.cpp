@@ -16,15 +16,6 @@
 
 namespace twinraster {
 
-namespace {
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-}  // namespace
-
 std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesystem::path& scenes_dir) {
   return {scenes_dir / "cgfs-transforms.json", scenes_dir / "lit-gouraud.json", scenes_dir / "one-million-cubes.json"};
 }

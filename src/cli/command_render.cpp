@@ -69,15 +69,6 @@ struct BackendRun {
   bool Drawn() const { return status == "rendered"; }
 };
 
-// "out.png" -> "out-gpu.png"
-std::string Suffixed(const std::string& out, const std::string& suffix) {
-  std::filesystem::path p = out;
-  const std::string extension = p.extension().string();
-  p.replace_extension();
-  p += "-" + suffix + extension;
-  return p.string();
-}
-
 // The Vulkan work runs in a child process (gpu/isolated_gpu.hpp): a driver that crashes or hangs
 // costs this scene its GPU image, not the run. The child and its device serve every scene of a
 // batch until one crashes; the next scene then gets a fresh one.

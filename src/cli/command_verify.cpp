@@ -30,14 +30,6 @@ struct VerifyArguments {
   bool json = false;
 };
 
-// "gpu.png" -> "gpu-map.png"
-std::string DefaultMap(const std::string& image) {
-  std::filesystem::path p = image;
-  p.replace_extension();
-  p += "-map.png";
-  return p.string();
-}
-
 int Verify(const VerifyArguments& a) {
   if (a.map) ExpectPngName("--map", *a.map);
   Scene scene = LoadSceneArgument(a.scene);
@@ -56,7 +48,7 @@ int Verify(const VerifyArguments& a) {
   const double verify_ms = clock.Milliseconds();
   std::optional<std::string> map;
   if (!a.no_map) {
-    map = a.map.value_or(DefaultMap(a.image));
+    map = a.map.value_or(Suffixed(a.image, "map"));
     StagePng(*map, verify::VerificationMap(image, v)).Commit();
   }
   if (a.json) {

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace twinraster {
 
@@ -20,6 +21,14 @@ namespace {
 constexpr std::size_t kMaxSceneBytes = std::size_t{256} << 20;
 constexpr const char* kStdinName = "<stdin>";
 }  // namespace
+
+std::string Suffixed(const std::string& out, const std::string& suffix) {
+  std::filesystem::path p = out;
+  const std::string extension = p.extension().string();
+  p.replace_extension();
+  p += "-" + suffix + extension;
+  return p.string();
+}
 
 bool IsStandardStream(std::string_view argument) { return argument == "-"; }
 

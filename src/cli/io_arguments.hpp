@@ -21,6 +21,10 @@ Scene LoadSceneArgument(const std::string& argument);
 // Throws UsageError unless `name` ends in .png (in any case): "<option> <name>: ...".
 void ExpectPngName(const std::string& option, const std::string& name);
 
+// "out.png" -> "out-gpu.png": the name of a file written beside `out` (render's per-backend,
+// diff and map images, verify's map).
+std::string Suffixed(const std::string& out, const std::string& suffix);
+
 bool StandardOutputIsTerminal();
 // All of `bytes` to standard output, flushed; throws FileError naming standard output.
 void WriteStandardOutput(std::string_view bytes);

@@ -16,9 +16,6 @@ struct ColourRange {
   bool Contains(Rgb8 c) const {
     return c.r >= lo.r && c.r <= hi.r && c.g >= lo.g && c.g <= hi.g && c.b >= lo.b && c.b <= hi.b;
   }
-  bool Overlaps(const ColourRange& o) const {
-    return lo.r <= o.hi.r && o.lo.r <= hi.r && lo.g <= o.hi.g && o.lo.g <= hi.g && lo.b <= o.hi.b && o.lo.b <= hi.b;
-  }
   // How far `c` lies outside the range: the largest channel's distance, 0 inside.
   int Distance(Rgb8 c) const {
     const auto d = [](int v, int l, int h) { return v < l ? l - v : v > h ? v - h : 0; };

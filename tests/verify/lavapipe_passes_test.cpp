@@ -43,6 +43,25 @@ std::vector<std::filesystem::path> ShippedScenesAndMeshes() {
   return files;
 }
 
+// Random scene `seed`, filled or as a wireframe, with its draw list.
+struct Drawn {
+  Scene scene;
+  DrawList list;
+};
+Drawn RandomScene(std::uint32_t seed, bool wireframe) {
+  nlohmann::ordered_json json = test::RandomSceneJson(seed);
+  json["wireframe"] = wireframe;
+  Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
+  DrawList list = BuildDrawList(scene);
+  return {std::move(scene), std::move(list)};
+}
+Drawn ShippedScene(const std::filesystem::path& file, bool wireframe) {
+  Scene scene = LoadSceneOrObj(file);
+  scene.wireframe = wireframe;
+  DrawList list = BuildDrawList(scene);
+  return {std::move(scene), std::move(list)};
+}
+
 void RequirePasses(const Scene& scene, const DrawList& list, const Image& image, int bits, const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = bits});
   INFO(what << ": " << verify::VerificationText(v));
@@ -59,10 +78,8 @@ TEST_CASE("Lavapipe's image of every shipped scene, filled and in wireframe, pas
   int judged = 0;
   for (const auto& file : ShippedScenesAndMeshes()) {
     for (const bool wireframe : {false, true}) {
-      Scene scene = LoadSceneOrObj(file);
-      scene.wireframe = wireframe;
-      const DrawList list = BuildDrawList(scene);
-      RequirePasses(scene, list, gpu.Render(list), bits, file.string() + (wireframe ? " --wireframe" : ""));
+      const Drawn d = ShippedScene(file, wireframe);
+      RequirePasses(d.scene, d.list, gpu.Render(d.list), bits, file.string() + (wireframe ? " --wireframe" : ""));
       ++judged;
     }
   }
@@ -75,11 +92,8 @@ TEST_CASE("500 random scenes drawn by lavapipe pass, filled and in wireframe", "
   const int bits = int(gpu.Device().subpixel_bits);
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {
-      nlohmann::ordered_json json = test::RandomSceneJson(seed);
-      json["wireframe"] = wireframe;
-      const Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
-      const DrawList list = BuildDrawList(scene);
-      RequirePasses(scene, list, gpu.Render(list), bits, "seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
+      const Drawn d = RandomScene(seed, wireframe);
+      RequirePasses(d.scene, d.list, gpu.Render(d.list), bits, "seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
     }
   }
   test::RequireNoValidationMessages();
@@ -89,14 +103,11 @@ TEST_CASE("500 random scenes under every lavapipe release's and path's rules pas
           "[verify][random]") {
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {
-      nlohmann::ordered_json json = test::RandomSceneJson(seed);
-      json["wireframe"] = wireframe;
-      const Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
-      const DrawList list = BuildDrawList(scene);
+      const Drawn d = RandomScene(seed, wireframe);
       for (const NamedRules& r : kLavapipeRules) {
         CpuOptions options;
         options.rules = r.rules;
-        RequirePasses(scene, list, RenderOnCpu(list, options), 8,
+        RequirePasses(d.scene, d.list, RenderOnCpu(d.list, options), 8,
                       std::string(r.name) + ", seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
       }
     }
@@ -107,13 +118,11 @@ TEST_CASE("Every shipped scene under every lavapipe release's and path's rules p
           "[verify]") {
   for (const auto& file : ShippedScenesAndMeshes()) {
     for (const bool wireframe : {false, true}) {
-      Scene scene = LoadSceneOrObj(file);
-      scene.wireframe = wireframe;
-      const DrawList list = BuildDrawList(scene);
+      const Drawn d = ShippedScene(file, wireframe);
       for (const NamedRules& r : kLavapipeRules) {
         CpuOptions options;
         options.rules = r.rules;
-        RequirePasses(scene, list, RenderOnCpu(list, options), 8,
+        RequirePasses(d.scene, d.list, RenderOnCpu(d.list, options), 8,
                       std::string(r.name) + ": " + file.string() + (wireframe ? " --wireframe" : ""));
       }
     }
