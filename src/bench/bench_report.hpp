@@ -1,4 +1,4 @@
-// The benchmark's results as a text table, CSV, JSON and an SVG chart of time against error.
+// The benchmark's results as a text table, CSV and JSON (its plots are report/bench_pages.hpp).
 #pragma once
 
 #include "bench/bench_suite.hpp"
@@ -20,8 +20,5 @@ std::string BenchCsv(const BenchResult& result);
 // number (docs/json-output.md, docs/schemas/bench.schema.json).
 inline constexpr const char* kBenchJsonFormat = "twinraster.bench/2";
 nlohmann::ordered_json BenchJson(const BenchResult& result);
-// One point per (scene, method): vertex-stage time per million vertices (x, log) against vertex
-// error in pixels (y, log), a colour per method.
-std::string BenchChartSvg(const BenchResult& result);
 
 }  // namespace twinraster

@@ -9,6 +9,8 @@
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 #include "scene/scene_loader.hpp"
+#include "cpu/triangle_setup.hpp"
+#include "verify/verifier.hpp"
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
@@ -74,7 +76,7 @@ struct Stage {
   const char* label;
   double ScaleRow::*value;
 };
-constexpr std::array<Stage, 8> kStages = {{
+constexpr std::array<Stage, 9> kStages = {{
     {"load_ms", "load", &ScaleRow::load_ms},
     {"chain_ms", "host chain", &ScaleRow::chain_ms},
     {"gpu_setup_ms", "gpu set-up", &ScaleRow::gpu_setup_ms},
@@ -83,6 +85,7 @@ constexpr std::array<Stage, 8> kStages = {{
     {"twin_setup_ms", "twin set-up", &ScaleRow::twin_setup_ms},
     {"twin_draw_ms", "twin draw", &ScaleRow::twin_draw_ms},
     {"png_ms", "png", &ScaleRow::png_ms},
+    {"verify_ms", "verify", &ScaleRow::verify_ms},
 }};
 
 }  // namespace
@@ -106,7 +109,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
     ScaleRow row;
     const std::string json = CubesJson(counts[n], options.width, options.height);
     row.json_bytes = json.size();
-    std::vector<double> load, chain, gpu_setup, gpu_draw, gpu_per_draw, twin_setup, twin_draw, png;
+    std::vector<double> load, chain, gpu_setup, gpu_draw, gpu_per_draw, twin_setup, twin_draw, png, judge;
     for (int run = 0; run < options.runs; ++run) {
       Stopwatch clock;
       const Scene scene = ParseScene(json, "cubes.json");
@@ -127,6 +130,8 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       clock.Lap();
       const std::string bytes = EncodePng(twin_image);
       png.push_back(clock.Lap());
+      static_cast<void>(verify::VerifyImage(scene, list, twin_image, {.subpixel_bits = cpu::kSubpixelBits}));
+      judge.push_back(clock.Lap());
       row.instances = list.draws.size();
       row.triangles = list.draws.size() * list.meshes.front().triangles.size();
       row.threads = c.threads;
@@ -136,6 +141,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
     row.gpu_draw_ms = Median(gpu_draw), row.twin_setup_ms = Median(twin_setup), row.twin_draw_ms = Median(twin_draw);
     row.png_ms = Median(png);
     row.gpu_per_draw_ms = Median(gpu_per_draw);
+    row.verify_ms = Median(judge);
     row.peak_mib = PeakMib();
     result.rows.push_back(row);
     if (options.on_row) options.on_row(row, n + 1, counts.size());
@@ -147,20 +153,20 @@ std::string ScaleTable(const ScaleResult& result) {
   std::ostringstream s;
   s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine << "\n";
   char line[256];
-  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s |%8s  %s\n", "instances", "triangles",
-                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw", "png", "peak MB",
+  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s %8s |%8s  %s\n", "instances", "triangles",
+                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw", "png", "verify", "peak MB",
                 "gpu == twin");
   s << line;
   for (const ScaleRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f |%8.0f  %s\n",
+    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f %8.1f |%8.0f  %s\n",
                   r.instances, r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
-                  r.gpu_draw_ms, r.gpu_per_draw_ms, r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.peak_mib,
+                  r.gpu_draw_ms, r.gpu_per_draw_ms, r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.verify_ms, r.peak_mib,
                   r.identical ? "yes" : "NO");
     s << line;
   }
   s << "(milliseconds; per-draw: lavapipe's set-up + draw with F pushed per draw, against gpu set-up + draw as a user\n"
        " gets it, instanced from " << gpu::kInstancingThreshold << " draws of a mesh on; twin on " << (result.rows.empty() ? 0 : result.rows.front().threads)
-    << " thread(s); peak MB: the process's peak resident memory after that size)\n";
+    << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after that size)\n";
   return s.str();
 }
 
@@ -195,51 +201,6 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
     j["rows"].push_back(std::move(row));
   }
   return j;
-}
-
-std::string ScaleChartSvg(const ScaleResult& result) {
-  constexpr double kWidth = 640, kHeight = 420, kLeft = 60, kRight = 150, kTop = 20, kBottom = 40;
-  std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if (result.rows.empty()) return svg.str() + "</svg>\n";
-  double x_lo = 1e300, x_hi = 0, y_lo = 1e300, y_hi = 0;
-  for (const ScaleRow& r : result.rows) {
-    x_lo = std::min(x_lo, static_cast<double>(r.instances)), x_hi = std::max(x_hi, static_cast<double>(r.instances));
-    for (const Stage& stage : kStages) {
-      const double v = std::max(r.*stage.value, 1e-3);
-      y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
-    }
-  }
-  const double lx0 = std::floor(std::log10(x_lo)), lx1 = std::max(lx0 + 1, std::ceil(std::log10(x_hi)));
-  const double ly0 = std::floor(std::log10(y_lo)), ly1 = std::max(ly0 + 1, std::ceil(std::log10(y_hi)));
-  const auto px = [&](double x) { return kLeft + (std::log10(x) - lx0) / (lx1 - lx0) * (kWidth - kLeft - kRight); };
-  const auto py = [&](double y) { return kHeight - kBottom - (std::log10(std::max(y, 1e-3)) - ly0) / (ly1 - ly0) * (kHeight - kTop - kBottom); };
-  for (double e = lx0; e <= lx1; ++e) {
-    const double x = px(std::pow(10.0, e));
-    svg << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\"" << kHeight - kBottom
-        << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << kHeight - kBottom + 14 << "\" text-anchor=\"middle\">1e"
-        << e << "</text>\n";
-  }
-  for (double e = ly0; e <= ly1; ++e) {
-    const double y = py(std::pow(10.0, e));
-    svg << "<line x1=\"" << kLeft << "\" y1=\"" << y << "\" x2=\"" << kWidth - kRight << "\" y2=\"" << y
-        << "\" stroke=\"#ddd\"/><text x=\"" << kLeft - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e" << e
-        << "</text>\n";
-  }
-  svg << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"" << kHeight - 8
-      << "\" text-anchor=\"middle\">instances (cubes, 12 triangles each)</text>\n"
-      << "<text x=\"14\" y=\"" << (kTop + kHeight - kBottom) / 2 << "\" transform=\"rotate(-90 14 "
-      << (kTop + kHeight - kBottom) / 2 << ")\" text-anchor=\"middle\">milliseconds (median)</text>\n";
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#7f7f7f", "#9467bd", "#8c564b", "#e377c2"};
-  for (std::size_t k = 0; k < kStages.size(); ++k) {
-    svg << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << colours[k] << "\" points=\"";
-    for (const ScaleRow& r : result.rows) svg << px(static_cast<double>(r.instances)) << "," << py(r.*kStages[k].value) << " ";
-    svg << "\"/>\n<text x=\"" << kWidth - kRight + 8 << "\" y=\"" << kTop + 14 + 16 * static_cast<double>(k) << "\" fill=\""
-        << colours[k] << "\">" << kStages[k].label << "</text>\n";
-  }
-  svg << "</svg>\n";
-  return svg.str();
 }
 
 }  // namespace twinraster

@@ -1,5 +1,5 @@
 // `twinraster bench --scale`: the chapter's "one million cubes" at 1 k, 10 k, 100 k and 1 M
-// instances, each stage timed (medians) with the process's peak memory, so that cost can be read
+// instances, each stage timed (the verifier's judgement too) (medians) with the process's peak memory, so that cost can be read
 // against instance count.
 #pragma once
 
@@ -23,6 +23,9 @@ struct ScaleRow {
   // lavapipe with F pushed per draw (one draw per instance, Listing 10-5), set-up plus draw, to
   // set against gpu_setup_ms + gpu_draw_ms (instanced): where the two cross over.
   double gpu_per_draw_ms = 0;
+  // The verifier judging the twin's image (lavapipe's 8 subpixel bits): what checking a frame
+  // costs at this size, beside drawing it.
+  double verify_ms = 0;
   double peak_mib = 0;  // the process's peak resident memory once this size is done (sizes run in increasing order)
   bool identical = false;  // lavapipe's image equals the twin's
 };
@@ -44,11 +47,9 @@ struct ScaleResult {
 // instance, seen whole from above a corner. Throws GpuUnavailable without a Vulkan device.
 ScaleResult RunScaleBench(const ScaleOptions& options);
 
-inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/1";
+inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/2";
 std::string ScaleTable(const ScaleResult& result);
 std::string ScaleCsv(const ScaleResult& result);
 nlohmann::ordered_json ScaleJson(const ScaleResult& result);
-// Log-log: milliseconds per stage against instances, one line per stage.
-std::string ScaleChartSvg(const ScaleResult& result);
 
 }  // namespace twinraster

@@ -1,5 +1,6 @@
 // `twinraster bench`: runs the suite, prints the table and summary, and with --out writes
-// bench.csv, bench.svg, bench.json and bench.txt (all staged, so all or none are replaced).
+// bench.csv, bench.svg, bench.html, bench.json and bench.txt (all staged, so all or none are
+// replaced); --html and --svg write the page or the plot anywhere.
 #include "base/usage_error.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
@@ -9,6 +10,7 @@
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "image/staged_file.hpp"
+#include "report/bench_pages.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -30,13 +32,20 @@ struct BenchArguments {
   bool quiet = false;
   bool scale = false;
   bool verify = false;
+  std::optional<std::string> html, svg;  // the page, the plot
   std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
 };
 
-// Staged together: either every output in `dir` is replaced or none is.
-void WriteTogether(const std::filesystem::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+using Files = std::vector<std::pair<std::filesystem::path, std::string>>;
+
+// Staged together: either every output (in --out, and --html and --svg) is replaced or none is.
+void WriteTogether(const BenchArguments& a, const Files& in_out, const std::string& page, const std::string& plot) {
   std::vector<StagedFile> staged;
-  for (const auto& [name, text] : files) staged.emplace_back(dir / name, text);
+  if (a.out) {
+    for (const auto& [name, text] : in_out) staged.emplace_back(std::filesystem::path(*a.out) / name, text);
+  }
+  if (a.html) staged.emplace_back(*a.html, page);
+  if (a.svg) staged.emplace_back(*a.svg, plot);
   for (StagedFile& file : staged) file.Commit();
 }
 
@@ -53,12 +62,16 @@ int BenchScale(const BenchArguments& a) {
     };
   }
   const ScaleResult result = RunScaleBench(options);
-  if (a.out) {
-    WriteTogether(*a.out, {{"scale.csv", ScaleCsv(result)},
-                           {"scale.svg", ScaleChartSvg(result)},
-                           {"scale.json", ScaleJson(result).dump(2) + "\n"},
-                           {"scale.txt", ScaleTable(result)}});
-  }
+  const std::string table = ScaleTable(result), plot = report::ScaleChartSvg(result);
+  const std::string page = report::ScalePageHtml(result, table);
+  WriteTogether(a,
+                {{"scale.csv", ScaleCsv(result)},
+                 {"scale.svg", plot},
+                 {"scale-stages.svg", report::ScaleStagesSvg(result)},
+                 {"scale.html", page},
+                 {"scale.json", ScaleJson(result).dump(2) + "\n"},
+                 {"scale.txt", table}},
+                page, plot);
   if (a.json) std::cout << ScaleJson(result).dump(2) << "\n";
   else std::cout << ScaleTable(result);
   return kExitOk;
@@ -80,9 +93,7 @@ int BenchVerify(const BenchArguments& a) {
   progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) + " run(s)...");
   const VerifyBenchResult result = RunVerifyBench(scenes, a.runs);
   progress.Clear();
-  if (a.out) {
-    WriteTogether(*a.out, {{"verify.json", VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", VerifyBenchTable(result)}});
-  }
+  WriteTogether(a, {{"verify.json", VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", VerifyBenchTable(result)}}, "", "");
   if (a.json) std::cout << VerifyBenchJson(result).dump(2) << "\n";
   else std::cout << VerifyBenchTable(result);
   return kExitOk;
@@ -94,6 +105,15 @@ int Bench(const BenchArguments& a) {
     std::filesystem::create_directories(*a.out, error);
     if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
   }
+  // Checked before the minutes of measuring, not after.
+  for (const auto& [flag, file] : {std::pair{"--html", a.html}, std::pair{"--svg", a.svg}}) {
+    if (!file) continue;
+    const std::filesystem::path parent = std::filesystem::path(*file).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
+      throw UsageError(std::string(flag) + " " + *file + ": no directory " + parent.string());
+    }
+  }
+  if (a.verify && (a.html || a.svg)) throw UsageError("--html and --svg plot the suite or --scale; bench --verify prints a table");
   if (a.scale) return BenchScale(a);
   if (a.verify) return BenchVerify(a);
   BenchOptions options;
@@ -118,12 +138,15 @@ int Bench(const BenchArguments& a) {
     };
   }
   const BenchResult result = RunBench(options);
-  if (a.out) {
-    WriteTogether(*a.out, {{"bench.csv", BenchCsv(result)},
-                           {"bench.svg", BenchChartSvg(result)},
-                           {"bench.json", BenchJson(result).dump(2) + "\n"},
-                           {"bench.txt", BenchTable(result)}});
-  }
+  const std::string table = BenchTable(result), plot = report::BenchChartSvg(result);
+  const std::string page = report::BenchPageHtml(result, table);
+  WriteTogether(a,
+                {{"bench.csv", BenchCsv(result)},
+                 {"bench.svg", plot},
+                 {"bench.html", page},
+                 {"bench.json", BenchJson(result).dump(2) + "\n"},
+                 {"bench.txt", table}},
+                page, plot);
   if (a.json) {
     std::cout << BenchJson(result).dump(2) << "\n";
   } else {
@@ -143,8 +166,14 @@ CommandRun AddBenchCommand(CLI::App& app) {
       "row shows on standard error as it finishes.\n"
       "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe out of\n"
       "--methods to need none), 4 internal error.");
-  command->add_option("--out", a->out, "also write bench.csv, bench.svg, bench.json and bench.txt into DIR")
+  command->add_option("--out", a->out, "also write bench.csv, bench.svg, bench.html, bench.json and bench.txt into DIR")
       ->type_name("DIR");
+  command
+      ->add_option("--html", a->html,
+                   "also write a page (self-contained, inline SVG) plotting each method's time against\n"
+                   "its error for every scene; with --scale, cost against instance count")
+      ->type_name("FILE");
+  command->add_option("--svg", a->svg, "also write the main plot alone as an SVG file")->type_name("FILE");
   ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1, 1000);
   command->add_option("--only", a->only, "only the scenes whose path contains TEXT")->type_name("TEXT");
   std::vector<std::string> methods = BenchMethodNames();
@@ -160,8 +189,8 @@ CommandRun AddBenchCommand(CLI::App& app) {
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error");
   command->add_flag("--scale", a->scale,
                     "instead of the suite: cubes written out one instance each, at growing counts,\n"
-                    "every stage timed, with peak memory (scale.csv/.svg/.json/.txt with --out;\n"
-                    "JSON twinraster.bench-scale/1)");
+                    "every stage timed (the verifier too), with peak memory (scale.csv/.svg/.html/\n"
+                    ".json/.txt with --out; JSON twinraster.bench-scale/2)");
   command->add_flag("--verify", a->verify,
                     "instead of the suite: the CPU twin's render against the verifier's judgement\n"
                     "of that image, on the chapter's scene, lit-gouraud and the million cubes\n"

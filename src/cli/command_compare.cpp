@@ -1,6 +1,6 @@
 // `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image.
 #include "cli/commands.hpp"
-#include "cli/comparison_report.hpp"
+#include "report/comparison_report.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/image_compare.hpp"

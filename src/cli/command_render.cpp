@@ -8,7 +8,7 @@
 #include "book/book_renderer.hpp"
 #include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
-#include "cli/comparison_report.hpp"
+#include "report/comparison_report.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
@@ -19,7 +19,12 @@
 #include "gpu/isolated_gpu.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
-#include "cli/verify_report.hpp"
+#include "image/thumbnail.hpp"
+#include "report/batch_page.hpp"
+#include "report/junit.hpp"
+#include "report/render_outputs.hpp"
+#include "report/render_record.hpp"
+#include "report/verify_report.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "scene/scene_error.hpp"
 #include "verify/verifier.hpp"
@@ -53,20 +58,13 @@ struct RenderArguments {
   double timeout_seconds = 600;  // the GPU process's time limit; 0: none
   unsigned threads = 0;
   bool quiet = false;
+  std::optional<std::string> report;  // --report DIR: index.html and thumbnails
+  std::optional<std::string> junit;   // --junit FILE
 };
 
-struct BackendRun {
-  std::string name;    // "gpu" or "cpu"
-  std::string detail;  // device name, or thread count
-  std::string driver;  // gpu: the driver's own version string (driverInfo)
-  std::string output;  // a file, or "-" for standard output; empty when nothing was drawn
+// A backend's record and the image it drew, until the PNGs are written.
+struct BackendRun : report::BackendRecord {
   Image image;
-  double setup_ms = 0, draw_ms = 0, readback_ms = 0, png_ms = 0;
-  double isolation_ms = 0;  // gpu: the child process's cost (fork, pipe, shared pixels, wait)
-  // gpu: "rendered", "crashed" or "timed out"; `problem` says how, with the scene.
-  std::string status = "rendered";
-  std::string problem;
-  bool Drawn() const { return status == "rendered"; }
 };
 
 // The Vulkan work runs in a child process (gpu/isolated_gpu.hpp): a driver that crashes or hangs
@@ -138,49 +136,6 @@ BackendRun RenderBook(const Scene& scene, const std::string& scene_argument, Pro
   return run;
 }
 
-nlohmann::ordered_json RunJson(const BackendRun* run) {
-  using Json = nlohmann::ordered_json;
-  if (!run) return nullptr;  // the backend was not asked for
-  const auto or_null = [](const std::string& text) { return text.empty() ? Json(nullptr) : Json(text); };
-  return {{"status", run->status},
-          {"problem", or_null(run->problem)},
-          {"output", or_null(run->output)},
-          {"device", run->detail},
-          {"driver", or_null(run->driver)},
-          {"timings_ms",
-           {{"setup", run->setup_ms},
-            {"draw", run->draw_ms},
-            {"readback", run->readback_ms},
-            {"png", run->png_ms},
-            {"isolation", run->isolation_ms}}}};
-}
-
-nlohmann::ordered_json TwinJson(const std::optional<cpu::TwinRules>& twin) {
-  using Json = nlohmann::ordered_json;
-  if (!twin) return nullptr;
-  const auto release_field = [&](const std::string cpu::LavapipeRelease::*field) {
-    return twin->release ? Json((*twin->release).*field) : Json(nullptr);
-  };
-  return {{"exact", twin->exact},
-          {"text", twin->text},
-          {"mesa", release_field(&cpu::LavapipeRelease::mesa)},
-          {"llvm", release_field(&cpu::LavapipeRelease::llvm)},
-          {"cpu_path", twin->path.Text()},
-          {"instruction_set", twin->path.InstructionSet()},
-          {"vector_bits", twin->release ? twin->release->vector_bits : twin->path.vector_bits}};
-}
-
-std::string RunText(const BackendRun& run) {
-  if (!run.Drawn()) return run.name + ": " + run.problem + "; no " + run.name + " image";
-  std::ostringstream s;
-  s.precision(3);
-  s << std::fixed << run.name << ": " << (IsStandardStream(run.output) ? "standard output" : run.output) << "  ("
-    << run.detail << ")  setup " << run.setup_ms << " ms, draw " << run.draw_ms << " ms, readback " << run.readback_ms
-    << " ms, png " << run.png_ms << " ms";
-  if (run.name == "gpu") s << ", process " << run.isolation_ms << " ms";
-  return s.str();
-}
-
 // --rules book draws on the CPU only, so it implies --backend cpu; asking for another is a mistake.
 void ResolveRules(RenderArguments& a) {
   if (a.rules != "book") return;
@@ -228,15 +183,29 @@ void CheckOutput(const RenderArguments& a) {
                      "--backend cpu, or give -o OUT.png");
   }
   if (a.json) throw UsageError("-o - and --json both want standard output: drop one of them");
+  if (a.report) throw UsageError("-o - writes no PNG file for --report's page to show: give -o OUT.png");
   if (StandardOutputIsTerminal()) {
     throw UsageError("-o -: standard output is a terminal; redirect it (> out.png) or pipe it to another program");
   }
 }
 
-// One scene, from reading it to its report. `directory`: where several scenes' files go.
-int RenderScene(const RenderArguments& a, const std::string& scene_argument, const std::optional<std::string>& directory,
-                std::optional<GpuProcess>& gpu, Progress& progress) {
+// Thumbnails for the batch page, staged with the scene's other files.
+void StageThumbnails(const report::RenderRecord& record, const std::string& report_dir,
+                     const std::vector<std::pair<std::string, const Image*>>& images, std::vector<StagedFile>& staged) {
+  for (const auto& [kind, image] : images) {
+    if (report::FullImage(record, kind).empty()) continue;
+    const std::filesystem::path file = std::filesystem::path(report_dir) / report::ThumbnailPath(record, kind);
+    staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide)));
+  }
+}
+
+// One scene, from reading it to its files and its record (which render prints, and the page and
+// JUnit file read). `directory`: where several scenes' files go.
+report::RenderRecord RenderScene(const RenderArguments& a, const std::string& scene_argument,
+                                 const std::optional<std::string>& directory, std::optional<GpuProcess>& gpu,
+                                 Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
+  Stopwatch total_clock;
   Stopwatch load_clock;
   Scene scene = LoadSceneArgument(scene_argument);
   if (a.wireframe) scene.wireframe = true;
@@ -245,14 +214,20 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   const bool to_stdout = IsStandardStream(out);
   const bool book = a.rules == "book";
   const DrawList list = book ? DrawList{} : BuildDrawList(scene);  // the book draws from the scene
-  const double load_ms = load_clock.Milliseconds();
-  std::size_t triangles = 0;
-  for (const Instance& instance : scene.instances) triangles += scene.models[instance.model].triangles.size();
+
+  report::RenderRecord record;
+  record.scene = scene_argument;
+  record.name = scene.name;
+  record.rules = a.rules;
+  record.wireframe = book || scene.wireframe;  // the book's demos draw wireframes only
+  record.width = scene.canvas.width, record.height = scene.canvas.height;
+  record.instances = scene.instances.size();
+  for (const Instance& instance : scene.instances) record.triangles += scene.models[instance.model].triangles.size();
+  record.load_ms = load_clock.Milliseconds();
 
   // Render everything before writing anything: a run that fails writes no file at all. A GPU
   // process that crashes or times out is a result: the twin still draws and its image is written.
   std::vector<BackendRun> runs;
-  std::optional<cpu::TwinRules> twin;
   DeviceIdentity device;
   if (book) {
     runs.push_back(RenderBook(scene, scene_argument, progress));
@@ -260,8 +235,8 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     if (a.backend != "cpu") runs.push_back(RenderGpu(list, a, scene_argument, gpu, progress, device));  // GpuUnavailable: exit 3
     if (a.backend != "gpu") {
       // The twin copies the lavapipe that drew (or, with no device asked, its default release).
-      twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
-      runs.push_back(RenderCpu(list, a.threads, twin->rules, progress));
+      record.twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
+      runs.push_back(RenderCpu(list, a.threads, record.twin->rules, progress));
     }
   }
   for (BackendRun& run : runs) {
@@ -269,32 +244,37 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
   }
   const bool gpu_failed = std::any_of(runs.begin(), runs.end(), [](const BackendRun& r) { return !r.Drawn(); });
 
-  std::optional<Comparison> comparison;
   const std::string diff_file = to_stdout ? "" : Suffixed(out, "diff");
   if (runs.size() == 2 && !gpu_failed) {
     progress.Status("comparing gpu and cpu...");
-    comparison = CompareImages(runs[0].image, runs[1].image);
+    record.comparison = CompareImages(runs[0].image, runs[1].image);
   }
+  const bool differ = record.comparison && !record.comparison->Equal();
 
   // The verifier judges the image drawn (the GPU's when there is one) when asked, and whenever the
   // two images differ, to say whether the difference is one Vulkan allows.
-  std::optional<verify::Verification> verification;
   const BackendRun* judged = nullptr;
-  double verify_ms = 0;
-  if (!book && (a.verify || (comparison && !comparison->Equal()))) {
+  if (!book && (a.verify || differ)) {
     for (const BackendRun& run : runs) {
       if (run.Drawn() && (!judged || run.name == "gpu")) judged = &run;
     }
   }
+  std::optional<Image> map;
   if (judged) {
     progress.Status("verifying the " + judged->name + " image...");
     Stopwatch clock;
     // The GPU's own subpixel precision; the twin snaps as lavapipe does.
     const int bits = judged->name == "gpu" ? int(device.subpixel_bits) : cpu::kSubpixelBits;
-    verification = verify::VerifyImage(scene, list, judged->image, {.subpixel_bits = bits});
-    verify_ms = clock.Milliseconds();
+    record.verification = verify::VerifyImage(scene, list, judged->image, {.subpixel_bits = bits});
+    record.verify_ms = clock.Milliseconds();
+    record.judged = judged->name;
+    // A report shows the map of every judgement; otherwise --verify asks for it.
+    if ((a.verify || a.report) && !to_stdout) {
+      record.map = Suffixed(judged->output, "map");
+      map = verify::VerificationMap(judged->image, *record.verification);
+    }
+    record.verification->pixels = {};  // the map holds them; a batch's records stay small
   }
-  const std::string map_file = judged && a.verify && !to_stdout ? Suffixed(judged->output, "map") : "";
 
   // Every output is encoded and staged in full before any is renamed into place (or written out).
   progress.Status(runs.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
@@ -307,85 +287,60 @@ int RenderScene(const RenderArguments& a, const std::string& scene_argument, con
     else staged.push_back(StagePng(run.output, run.image, a.png_level));
     run.png_ms = clock.Milliseconds();
   }
-  const bool wrote_diff = comparison && !comparison->Equal();
-  if (wrote_diff) staged.push_back(StagePng(diff_file, DiffImage(runs[0].image, runs[1].image), a.png_level));
-  if (!map_file.empty()) staged.push_back(StagePng(map_file, verify::VerificationMap(judged->image, *verification), a.png_level));
+  std::optional<Image> diff;
+  if (differ) {
+    record.diff = diff_file;
+    diff = DiffImage(runs[0].image, runs[1].image);
+    staged.push_back(StagePng(diff_file, *diff, a.png_level));
+  }
+  if (map) staged.push_back(StagePng(record.map, *map, a.png_level));
+  for (const BackendRun& run : runs) record.backends.push_back(run);  // the record part, without the image
+  if (a.report) {
+    std::vector<std::pair<std::string, const Image*>> images;
+    for (const BackendRun& run : runs) images.emplace_back(run.name, &run.image);
+    if (diff) images.emplace_back("diff", &*diff);
+    if (map) images.emplace_back("map", &*map);
+    StageThumbnails(record, *a.report, images, staged);
+  }
   for (StagedFile& file : staged) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   std::error_code ignored;
-  if (comparison && comparison->Equal() && std::filesystem::is_regular_file(diff_file, ignored)) {
+  if (record.comparison && record.comparison->Equal() && std::filesystem::is_regular_file(diff_file, ignored)) {
     std::filesystem::remove(diff_file, ignored);
   }
   progress.Clear();
   if (to_stdout && !png_bytes.empty()) WriteStandardOutput(png_bytes);
 
-  const auto find_run = [&](const char* name) -> const BackendRun* {
-    for (const BackendRun& run : runs)
-      if (run.name == name) return &run;
-    return nullptr;
-  };
-  if (a.json) {
-    using Json = nlohmann::ordered_json;
-    Json j;
-    j["format"] = kRenderJsonFormat;
-    j["scene"] = scene_argument;
-    j["rules"] = a.rules;
-    j["wireframe"] = a.rules == "book" || scene.wireframe;  // the book's demos draw wireframes only
-    j["width"] = scene.canvas.width;
-    j["height"] = scene.canvas.height;
-    j["instances"] = scene.instances.size();
-    j["triangles"] = triangles;
-    j["load_ms"] = load_ms;
-    j["differing_pixels"] = comparison ? Json(comparison->differing_pixels) : Json(nullptr);
-    j["max_channel_difference"] = comparison ? Json(comparison->max_channel_difference) : Json(nullptr);
-    j["diff"] = wrote_diff ? Json(diff_file) : Json(nullptr);
-    j["backends"] = {{"gpu", RunJson(find_run("gpu"))}, {"cpu", RunJson(find_run("cpu"))}};
-    j["twin_rules"] = TwinJson(twin);
-    if (verification) {
-      nlohmann::ordered_json v;
-      v["image"] = judged->name;
-      const nlohmann::ordered_json verdict =
-          VerificationJson(*verification, map_file.empty() ? std::nullopt : std::optional(map_file), verify_ms);
-      for (const auto& [key, value] : verdict.items()) v[key] = value;
-      j["verify"] = v;
-    } else {
-      j["verify"] = nullptr;
-    }
-    // One scene: the object, indented. Several: JSON Lines, one object per scene as it finishes.
-    std::cout << (directory ? j.dump() : j.dump(2)) << "\n" << std::flush;
-  } else if (!(to_stdout && a.quiet)) {
-    // With -o - standard output carries the PNG alone, so the report goes to standard error.
-    std::ostream& report = to_stdout ? std::cerr : std::cout;
-    std::ostringstream work;
-    work.precision(3);
-    const std::size_t instances = scene.instances.size();
-    work << std::fixed << scene_argument << ": " << instances << (instances == 1 ? " instance, " : " instances, ") << triangles
-         << " triangles, " << scene.canvas.width << " x " << scene.canvas.height << ", loaded in " << load_ms << " ms";
-    report << work.str() << "\n";
-    for (const BackendRun& run : runs) report << RunText(run) << "\n";
-    if (twin) report << "twin: " << twin->text << "\n";
-    if (comparison) {
-      report << "gpu vs cpu: " << ComparisonText(runs[0].image, runs[1].image, *comparison)
-             << (wrote_diff ? ", diff in " + diff_file : "")
-             << (!comparison->Equal() && twin && !twin->exact ? " (the twin has no rules for this driver: not a verdict)" : "")
-             << "\n";
-    } else if (runs.size() == 2) {
-      report << "gpu vs cpu: not compared, there is no gpu image\n";
-    }
-    if (verification && comparison && !comparison->Equal()) {
-      report << "verdict: " << DifferenceVerdict(comparison->differing_pixels, *verification) << "\n";
-    }
-    if (verification && a.verify) {
-      report << "verify: " << judged->name << " image " << verify::VerificationText(*verification)
-             << (map_file.empty() ? "" : ", map in " + map_file) << "\n";
-    }
-  }
-  if (gpu_failed) return kExitGpuFailed;
-  if (verification && !verification->Passed()) return kExitImagesDiffer;
+  if (gpu_failed) record.exit_code = kExitGpuFailed;
+  else if (record.verification && !record.verification->Passed()) record.exit_code = kExitImagesDiffer;
   // A twin that copies this lavapipe promised identical images; one that cannot (no rules for the
   // driver) leaves the verdict to the verifier.
-  const bool twin_promised = twin && twin->exact;
-  return comparison && !comparison->Equal() && twin_promised ? kExitImagesDiffer : kExitOk;
+  else if (differ && record.TwinPromised()) record.exit_code = kExitImagesDiffer;
+  record.total_ms = total_clock.Milliseconds();
+  return record;
+}
+
+// Prints one scene's record: JSON (one object; several scenes: JSON Lines, one per scene as it
+// finishes) or the report's lines (on standard error when the PNG goes to standard output).
+void PrintRecord(const RenderArguments& a, const report::RenderRecord& record, bool several) {
+  if (a.json) {
+    std::cout << (several ? report::RenderJson(record).dump() : report::RenderJson(record).dump(2)) << "\n" << std::flush;
+    return;
+  }
+  const bool to_stdout = !several && a.output && IsStandardStream(*a.output);
+  if (to_stdout && a.quiet) return;
+  (to_stdout ? std::cerr : std::cout) << report::RenderText(record, a.verify) << std::flush;
+}
+
+// The page and the JUnit file, staged together after the batch: all of them or neither.
+void WriteBatchReports(const RenderArguments& a, const std::vector<report::RenderRecord>& records, double total_ms) {
+  std::vector<StagedFile> staged;
+  if (a.report) {
+    staged.emplace_back(std::filesystem::path(*a.report) / "index.html",
+                        report::BatchPageHtml(records, *a.report, total_ms));
+  }
+  if (a.junit) staged.emplace_back(*a.junit, report::JUnitXml(records, total_ms, a.verify));
+  for (StagedFile& file : staged) file.Commit();
 }
 
 int Render(RenderArguments& a) {
@@ -393,31 +348,47 @@ int Render(RenderArguments& a) {
   CheckOutput(a);
   Progress progress = Progress::OnStandardError(a.quiet);
   std::optional<GpuProcess> gpu;
-  if (a.scenes.size() == 1) return RenderScene(a, a.scenes.front(), std::nullopt, gpu, progress);
-
-  const std::string directory = a.output.value_or(".");
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) throw FileError(directory + ": cannot create the directory: " + error.message());
-  // Each scene on its own: a bad scene, an unwritable output or a crashed GPU process is reported
-  // and the others still render; the exit code is the worst of them. No Vulkan device ends the run
-  // (exit 3).
+  const bool several = a.scenes.size() > 1;
+  const std::optional<std::string> directory = several ? std::optional(a.output.value_or(".")) : std::nullopt;
+  for (const std::optional<std::string>& dir : {directory, a.report}) {
+    if (!dir) continue;
+    std::error_code error;
+    std::filesystem::create_directories(*dir, error);
+    if (error) throw FileError(*dir + ": cannot create the directory: " + error.message());
+  }
+  if (a.report) {
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(*a.report) / "thumbs", error);
+    if (error) throw FileError(*a.report + "/thumbs: cannot create the directory: " + error.message());
+  }
+  // One scene's bad input is the run's error (exit 2, nothing written), unless a report or JUnit
+  // file is asked for, which then records it. Several scenes: each on its own; a bad scene, an
+  // unwritable output or a crashed GPU process is reported and the others still render; the exit
+  // code is the worst of them. No Vulkan device ends the run (exit 3).
+  const bool keep_going = several || a.report || a.junit;
+  Stopwatch batch_clock;
+  std::vector<report::RenderRecord> records;
   int worst = kExitOk;
   for (const std::string& scene : a.scenes) {
-    int code = kExitOk;
+    report::RenderRecord record;
     try {
-      code = RenderScene(a, scene, directory, gpu, progress);
-    } catch (const SceneError& e) {
+      record = RenderScene(a, scene, directory, gpu, progress);
+      PrintRecord(a, record, several);
+    } catch (const std::exception& e) {
+      const bool expected = dynamic_cast<const SceneError*>(&e) || dynamic_cast<const FileError*>(&e);
+      if (!expected || !keep_going) throw;
       progress.Clear();
       std::cerr << "twinraster: " << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const FileError& e) {
-      progress.Clear();
-      std::cerr << "twinraster: " << e.what() << "\n";
-      code = kExitBadInput;
+      record = {};
+      record.scene = scene;
+      record.name = std::filesystem::path(scene).stem().string();
+      record.error = e.what();
+      record.exit_code = kExitBadInput;
     }
-    worst = std::max(worst, code);
+    worst = std::max(worst, record.exit_code);
+    if (a.report || a.junit) records.push_back(std::move(record));
   }
+  WriteBatchReports(a, records, batch_clock.Milliseconds());
   return worst;
 }
 
@@ -484,6 +455,14 @@ CommandRun AddRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   ExpectIndex(command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
+  command
+      ->add_option("--report", a->report,
+                   "also write DIR/index.html: one page for the batch, failures first, each scene's\n"
+                   "images as thumbnails (DIR/thumbs/) with its verdict, counts, device and times;\n"
+                   "every verification's map is written too")
+      ->type_name("DIR");
+  command->add_option("--junit", a->junit, "also write the batch as JUnit XML (one testcase per scene) to FILE")
+      ->type_name("FILE");
   return [a, backend] {
     a->backend_given = backend->count() > 0;
     return Render(*a);

@@ -5,7 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
-#include "cli/verify_report.hpp"
+#include "report/verify_report.hpp"
 #include "image/png_file.hpp"
 #include "verify/verifier.hpp"
 #include "verify/verify_map.hpp"

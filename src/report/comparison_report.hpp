@@ -26,5 +26,7 @@ struct NamedImage {
 nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
                                    const std::optional<std::string>& diff);
 std::string ComparisonText(const Image& a, const Image& b, const Comparison& c);
+// Two images of one size, `width` x `height`.
+std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c);
 
 }  // namespace twinraster

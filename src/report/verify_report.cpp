@@ -1,4 +1,4 @@
-#include "cli/verify_report.hpp"
+#include "report/verify_report.hpp"
 
 #include <sstream>
 

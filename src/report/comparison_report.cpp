@@ -1,4 +1,4 @@
-#include "cli/comparison_report.hpp"
+#include "report/comparison_report.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,7 +26,11 @@ std::string ComparisonText(const Image& a, const Image& b, const Comparison& c) 
     return "sizes differ: " + std::to_string(a.width) + " x " + std::to_string(a.height) + " and " +
            std::to_string(b.width) + " x " + std::to_string(b.height);
   }
-  return std::to_string(a.width) + " x " + std::to_string(a.height) + ": " + std::to_string(c.differing_pixels) +
+  return ComparisonText(a.width, a.height, c);
+}
+
+std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c) {
+  return std::to_string(width) + " x " + std::to_string(height) + ": " + std::to_string(c.differing_pixels) +
          " differing pixels, max channel difference " + std::to_string(c.max_channel_difference) +
          (c.Equal() ? " (identical)" : "");
 }

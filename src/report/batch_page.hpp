@@ -1,0 +1,38 @@
+// `render --report DIR`: one page for a batch of scenes, failures first, each row the scene's
+// images as thumbnails (linked to the full PNGs), its verdict, counts, device, rules and times.
+// Self-contained: inline CSS, no script, PNGs beside it; it reads the records and nothing else.
+#pragma once
+
+#include "report/render_record.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace twinraster::report {
+
+struct BatchSummary {
+  std::size_t scenes = 0, identical = 0, verified = 0, differing = 0, crashed = 0, errors = 0, rendered = 0;
+  double total_ms = 0;  // the whole batch, wall clock
+};
+BatchSummary Summarize(const std::vector<RenderRecord>& records, double total_ms);
+
+// The longer side of a thumbnail, in pixels.
+inline constexpr std::uint32_t kThumbnailSide = 96;
+
+// The images a row shows, in order, and the record's file for each ("" when there is none).
+inline constexpr const char* kThumbnailKinds[] = {"gpu", "cpu", "diff", "map"};
+std::string FullImage(const RenderRecord& record, const std::string& kind);
+// Where the thumbnail of `kind` goes, relative to the report's directory.
+std::filesystem::path ThumbnailPath(const RenderRecord& record, const std::string& kind);
+
+// The records in the page's order: failures first (errors, crashes, differing), then verified,
+// identical and drawn; the batch's order within each.
+std::vector<const RenderRecord*> PageOrder(const std::vector<RenderRecord>& records);
+
+// The page, for `dir`/index.html: links to images are relative to `dir`.
+std::string BatchPageHtml(const std::vector<RenderRecord>& records, const std::filesystem::path& dir, double total_ms);
+
+}  // namespace twinraster::report

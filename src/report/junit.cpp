@@ -1,0 +1,50 @@
+#include "report/junit.hpp"
+
+#include "report/markup.hpp"
+#include "report/render_outputs.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace twinraster::report {
+
+namespace {
+
+// Seconds as xs:decimal, which has no exponent: "0.000012", never "1.2e-05".
+std::string Seconds(double ms) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", ms / 1000);
+  return text;
+}
+
+}  // namespace
+
+std::string JUnitXml(const std::vector<RenderRecord>& records, double total_ms, bool verify_asked) {
+  std::size_t failures = 0, errors = 0;
+  for (const RenderRecord& r : records) {
+    const Verdict v = VerdictOf(r);
+    if (v == Verdict::kDiffering) ++failures;
+    if (v == Verdict::kError || v == Verdict::kCrashed) ++errors;
+  }
+  const std::string counts = "tests=\"" + std::to_string(records.size()) + "\" failures=\"" + std::to_string(failures) +
+                             "\" errors=\"" + std::to_string(errors) + "\"";
+  const std::string seconds = Seconds(total_ms);
+  std::ostringstream xml;
+  xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"twinraster render\" " << counts << " time=\""
+      << seconds << "\">\n<testsuite name=\"twinraster render\" " << counts << " skipped=\"0\" time=\"" << seconds << "\">\n";
+  for (const RenderRecord& r : records) {
+    const Verdict v = VerdictOf(r);
+    xml << "<testcase classname=\"twinraster.render\" name=\"" << Escape(r.scene) << "\" time=\"" << Seconds(r.total_ms)
+        << "\">\n";
+    if (IsFailure(v)) {
+      const char* element = v == Verdict::kDiffering ? "failure" : "error";
+      xml << "<" << element << " type=\"" << VerdictName(v) << "\" message=\"" << Escape(VerdictReason(r)) << "\"/>\n";
+    }
+    xml << "<system-out>" << Escape(v == Verdict::kError ? r.error + "\n" : RenderText(r, verify_asked)) << "</system-out>\n";
+    xml << "</testcase>\n";
+  }
+  xml << "</testsuite>\n</testsuites>\n";
+  return xml.str();
+}
+
+}  // namespace twinraster::report

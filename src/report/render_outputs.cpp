@@ -1,0 +1,114 @@
+#include "report/render_outputs.hpp"
+
+#include "report/comparison_report.hpp"
+#include "report/verify_report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+namespace twinraster::report {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json OrNull(const std::string& text) { return text.empty() ? Json(nullptr) : Json(text); }
+
+Json BackendJson(const BackendRecord* b) {
+  if (!b) return nullptr;  // the backend was not asked for
+  return {{"status", b->status},
+          {"problem", OrNull(b->problem)},
+          {"output", OrNull(b->output)},
+          {"device", b->detail},
+          {"driver", OrNull(b->driver)},
+          {"timings_ms",
+           {{"setup", b->setup_ms},
+            {"draw", b->draw_ms},
+            {"readback", b->readback_ms},
+            {"png", b->png_ms},
+            {"isolation", b->isolation_ms}}}};
+}
+
+Json TwinJson(const std::optional<cpu::TwinRules>& twin) {
+  if (!twin) return nullptr;
+  const auto release_field = [&](const std::string cpu::LavapipeRelease::*field) {
+    return twin->release ? Json((*twin->release).*field) : Json(nullptr);
+  };
+  return {{"exact", twin->exact},
+          {"text", twin->text},
+          {"mesa", release_field(&cpu::LavapipeRelease::mesa)},
+          {"llvm", release_field(&cpu::LavapipeRelease::llvm)},
+          {"cpu_path", twin->path.Text()},
+          {"instruction_set", twin->path.InstructionSet()},
+          {"vector_bits", twin->release ? twin->release->vector_bits : twin->path.vector_bits}};
+}
+
+std::string BackendText(const BackendRecord& b) {
+  if (!b.Drawn()) return b.name + ": " + b.problem + "; no " + b.name + " image";
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << b.name << ": " << (b.output == "-" ? "standard output" : b.output) << "  (" << b.detail
+    << ")  setup " << b.setup_ms << " ms, draw " << b.draw_ms << " ms, readback " << b.readback_ms << " ms, png "
+    << b.png_ms << " ms";
+  if (b.name == "gpu") s << ", process " << b.isolation_ms << " ms";
+  return s.str();
+}
+
+}  // namespace
+
+std::string RenderText(const RenderRecord& r, bool verify_asked) {
+  std::ostringstream out;
+  std::ostringstream head;
+  head.precision(3);
+  head << std::fixed << r.scene << ": " << r.instances << (r.instances == 1 ? " instance, " : " instances, ") << r.triangles
+       << " triangles, " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
+  out << head.str() << "\n";
+  for (const BackendRecord& b : r.backends) out << BackendText(b) << "\n";
+  if (r.twin) out << "twin: " << r.twin->text << "\n";
+  if (r.comparison) {
+    out << "gpu vs cpu: " << ComparisonText(r.width, r.height, *r.comparison) << (r.diff.empty() ? "" : ", diff in " + r.diff)
+        << (!r.comparison->Equal() && r.twin && !r.twin->exact ? " (the twin has no rules for this driver: not a verdict)" : "")
+        << "\n";
+  } else if (r.backends.size() == 2) {
+    out << "gpu vs cpu: not compared, there is no gpu image\n";
+  }
+  if (r.verification && r.comparison && !r.comparison->Equal()) {
+    out << "verdict: " << DifferenceVerdict(r.comparison->differing_pixels, *r.verification) << "\n";
+  }
+  if (r.verification && verify_asked) {
+    out << "verify: " << r.judged << " image " << verify::VerificationText(*r.verification)
+        << (r.map.empty() ? "" : ", map in " + r.map) << "\n";
+  }
+  return out.str();
+}
+
+Json RenderJson(const RenderRecord& r) {
+  Json j;
+  j["format"] = kRenderJsonFormat;
+  j["scene"] = r.scene;
+  j["rules"] = r.rules;
+  j["wireframe"] = r.wireframe;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["instances"] = r.instances;
+  j["triangles"] = r.triangles;
+  j["load_ms"] = r.load_ms;
+  j["differing_pixels"] = r.comparison ? Json(r.comparison->differing_pixels) : Json(nullptr);
+  j["max_channel_difference"] = r.comparison ? Json(r.comparison->max_channel_difference) : Json(nullptr);
+  j["diff"] = OrNull(r.diff);
+  j["backends"] = {{"gpu", BackendJson(r.Backend("gpu"))}, {"cpu", BackendJson(r.Backend("cpu"))}};
+  j["twin_rules"] = TwinJson(r.twin);
+  if (r.verification) {
+    Json v;
+    v["image"] = r.judged;
+    const Json verdict = VerificationJson(*r.verification, r.map.empty() ? std::nullopt : std::optional(r.map), r.verify_ms);
+    for (const auto& [key, value] : verdict.items()) v[key] = value;
+    j["verify"] = v;
+  } else {
+    j["verify"] = nullptr;
+  }
+  return j;
+}
+
+}  // namespace twinraster::report
