@@ -1,5 +1,6 @@
 #include "chain/explain.hpp"
 
+#include "chain/frustum.hpp"
 #include "chain/light_trace.hpp"
 #include "chain/matrices.hpp"
 #include "chain/normals.hpp"
@@ -390,6 +391,16 @@ nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& opt
   out["canvas_to_clip"] = Rows(CanvasToClip(scene.canvas));
   out["projection_matrix"] = Rows(chain.projection);
   out["camera_matrix"] = Rows(chain.camera);
+  const auto frustum_json = [](const Frustum& f) {
+    const auto corners = [](const std::array<glm::dvec3, 4>& c) {
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (const glm::dvec3& p : c) list.push_back(Array(p));
+      return list;
+    };
+    return nlohmann::ordered_json{
+        {"eye", Array(f.eye)}, {"near", corners(f.near)}, {"viewport", corners(f.viewport)}, {"far", corners(f.far)}};
+  };
+  out["frustum"] = {{"camera", frustum_json(CameraSpaceFrustum(scene))}, {"world", frustum_json(WorldFrustum(scene, chain))}};
   out["lighting"] = nlohmann::ordered_json(nullptr);
   if (scene.lighting && !scene.wireframe) {
     nlohmann::ordered_json lights = nlohmann::ordered_json::array();

@@ -22,7 +22,7 @@ struct ExplainOptions {
 
 // ExplainJson's "format": any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/explain.schema.json).
-inline constexpr const char* kExplainJsonFormat = "twinraster.explain/2";
+inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
 
 // Both throw UsageError when the instance or vertex index does not exist.
 std::string ExplainText(const Scene& scene, const ExplainOptions& options);

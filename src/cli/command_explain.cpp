@@ -1,8 +1,11 @@
-// `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON.
+// `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON, and with
+// --html draws it as a page.
 #include "chain/explain.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
+#include "image/staged_file.hpp"
+#include "report/chain_page.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -18,11 +21,19 @@ struct ExplainArguments {
   std::string scene;
   std::optional<std::size_t> instance, vertex;
   bool json = false;
+  std::optional<std::string> html;
 };
 
 int Explain(const ExplainArguments& a) {
   const Scene scene = LoadSceneArgument(a.scene);
   const ExplainOptions options{a.instance, a.vertex};
+  if (a.html) {
+    // The page traces every vertex of the instances it shows, and marks the one asked for.
+    const nlohmann::ordered_json chain = ExplainJson(scene, {a.instance, std::nullopt});
+    if (a.vertex) ExplainJson(scene, options);  // the same checks (and messages) as without --html
+    StagedFile page(*a.html, report::ChainPageHtml(scene, chain, {.instance = 0, .vertex = a.vertex}));
+    page.Commit();
+  }
   if (a.json) {
     std::cout << ExplainJson(scene, options).dump(2) << "\n";
   } else {
@@ -46,7 +57,14 @@ CommandRun AddExplainCommand(CLI::App& app) {
       ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
   ExpectIndex(command->add_option("--vertex", a->vertex, "only vertex V of each instance (counted from 0)")->type_name("V"));
-  command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/1, docs/json-output.md)");
+  command
+      ->add_option("--html", a->html,
+                   "also draw the chain as a page: the model, the world from above and the side with\n"
+                   "the camera's frustum, camera space, NDC and the canvas, each with its matrix\n"
+                   "and the traced vertex (--instance, --vertex; default: instance 0's first\n"
+                   "vertex in view)")
+      ->type_name("FILE");
+  command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/3, docs/json-output.md)");
   return [a] { return Explain(*a); };
 }
 

@@ -27,7 +27,7 @@ TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw) (orthographic x·Cw/Vw
     const test::CliResult r = test::RunCli({"explain", file.string(), "--json"});
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(r.out);
-    REQUIRE(j.at("format") == "twinraster.explain/2");
+    REQUIRE(j.at("format") == "twinraster.explain/3");
     REQUIRE(j.at("projection_matrix").size() == 4);
     REQUIRE(j.at("camera_matrix").at(3).size() == 4);
     const double cw = j["canvas"]["width"], ch = j["canvas"]["height"];
