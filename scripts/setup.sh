@@ -26,6 +26,8 @@ test_packages=(
   clang libclang-rt-dev          # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
   llvm                           # llvm-symbolizer: file:line in sanitizer and fuzzer reports
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
+  chromium chromium-driver python3-selenium  # tests open every kind of page in headless Chromium
+  libxml2-utils                  # xmllint: render --junit's XML against docs/schemas/junit.xsd
 )
 case "${1:-}" in
   "") ;;
