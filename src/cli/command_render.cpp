@@ -195,7 +195,9 @@ void StageThumbnails(const report::RenderRecord& record, const std::string& repo
   for (const auto& [kind, image] : images) {
     if (report::FullImage(record, kind).empty()) continue;
     const std::filesystem::path file = std::filesystem::path(report_dir) / report::ThumbnailPath(record, kind);
-    staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide)));
+    const bool marks = kind == "diff" || kind == "map";  // saturated marks on grey: keep them visible
+    staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide,
+                                              marks ? ThumbnailFilter::kMostSaturated : ThumbnailFilter::kMean)));
   }
 }
 

@@ -13,7 +13,7 @@ ThumbnailSize ThumbnailSizeFor(std::uint32_t width, std::uint32_t height, std::u
   return {scaled(width), scaled(height)};
 }
 
-Image Thumbnail(const Image& image, std::uint32_t max_side) {
+Image Thumbnail(const Image& image, std::uint32_t max_side, ThumbnailFilter filter) {
   const ThumbnailSize size = ThumbnailSizeFor(image.width, image.height, max_side);
   if (size.width == image.width && size.height == image.height) return image;
   Image thumb(size.width, size.height);
@@ -25,15 +25,21 @@ Image Thumbnail(const Image& image, std::uint32_t max_side) {
       const std::uint32_t x0 = static_cast<std::uint32_t>(std::uint64_t{tx} * image.width / thumb.width);
       const std::uint32_t x1 = static_cast<std::uint32_t>(std::uint64_t{tx + 1} * image.width / thumb.width);
       std::uint32_t total[4] = {0, 0, 0, 0};
+      const std::uint8_t* most_saturated = image.pixel(x0, y0);
+      int saturation = -1;
       for (std::uint32_t y = y0; y < y1; ++y) {
         for (std::uint32_t x = x0; x < x1; ++x) {
           const std::uint8_t* p = image.pixel(x, y);
           for (int c = 0; c < 4; ++c) total[c] += p[c];
+          const int s = std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]});
+          if (s > saturation) saturation = s, most_saturated = p;
         }
       }
       const std::uint32_t count = (y1 - y0) * (x1 - x0);
       std::uint8_t* out = thumb.pixel(tx, ty);
-      for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>((total[c] + count / 2) / count);
+      for (int c = 0; c < 4; ++c) {
+        out[c] = filter == ThumbnailFilter::kMean ? static_cast<std::uint8_t>((total[c] + count / 2) / count) : most_saturated[c];
+      }
     }
   }
   return thumb;

@@ -51,7 +51,7 @@ std::string TimesText(const RenderRecord& r) {
     if (b.Drawn()) text += ", " + b.name + " " + Ms(b.setup_ms + b.draw_ms + b.readback_ms);
   }
   if (r.verification) text += ", verify " + Ms(r.verify_ms);
-  return text + ", total " + Ms(r.total_ms) + " ms";
+  return text + ", total " + Ms(r.total_ms) + " ms";  // each backend: set-up, draw and readback
 }
 
 }  // namespace
@@ -109,23 +109,25 @@ std::string BatchPageHtml(const std::vector<RenderRecord>& records, const std::f
           "was judged) and every pixel is one Vulkan allows. differing: a pixel the verifier rejects, or a difference "
           "where the twin copies this driver exactly. Thumbnails link to the full PNGs.</p>\n";
   page << "<table id=\"scenes\">\n<thead><tr><th>scene</th><th>GPU</th><th>twin</th><th>difference</th><th>verification "
-          "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device and "
-          "rules</th><th>times (ms)</th></tr></thead>\n<tbody>\n";
+          "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device, rules "
+          "and times</th></tr></thead>\n<tbody>\n";
   for (const RenderRecord* r : PageOrder(records)) {
     const Verdict verdict = VerdictOf(*r);
     std::ostringstream row;
-    row << "<tr class=\"scene\" data-verdict=\"" << VerdictName(verdict) << "\"><td class=\"name\">" << Escape(r->scene)
-        << "</td>";
+    row << "<tr class=\"scene\" data-verdict=\"" << VerdictName(verdict) << "\" data-scene=\"" << Escape(r->scene)
+        << "\"><td class=\"name\"><b>" << Escape(r->name) << "</b><br><span class=\"path\">" << Escape(r->scene)
+        << "</span></td>";
     if (verdict == Verdict::kError) {
       row << "<td colspan=\"4\" class=\"none\">no images</td>";
     } else {
       Thumbnails(row, *r, dir);
     }
-    row << "<td class=\"verdict-" << VerdictName(verdict) << "\"><b>" << VerdictName(verdict) << "</b><br>"
+    row << "<td class=\"reason verdict-" << VerdictName(verdict) << "\"><b>" << VerdictName(verdict) << "</b><br>"
         << Escape(VerdictReason(*r)) << "</td>";
     row << "<td class=\"n differing\">" << (r->comparison ? std::to_string(r->comparison->differing_pixels) : "-") << "</td>";
     row << "<td class=\"n violations\">" << (r->verification ? std::to_string(r->verification->violations) : "-") << "</td>";
-    row << "<td>" << Escape(DeviceText(*r)) << "</td><td>" << (verdict == Verdict::kError ? "-" : TimesText(*r)) << "</td></tr>\n";
+    row << "<td class=\"details\">" << Escape(DeviceText(*r)) << "<br>" << (verdict == Verdict::kError ? "" : TimesText(*r))
+        << "</td></tr>\n";
     page << row.str();
   }
   page << "</tbody></table>\n" << kPageEnd;

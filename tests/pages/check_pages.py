@@ -96,7 +96,7 @@ def screenshot(driver, directory, name):
 def rows_of(driver):
     return driver.execute_script("""
       return Array.from(document.querySelectorAll('#scenes tbody tr')).map(r => ({
-        scene: r.querySelector('td.name').textContent,
+        scene: r.dataset.scene, shown: r.querySelector('td.name .path').textContent,
         verdict: r.dataset.verdict,
         differing: r.querySelector('td.differing').textContent,
         violations: r.querySelector('td.violations').textContent}))""")
@@ -275,8 +275,13 @@ def case_hostile(a):
             check_images_load(driver, what)
             check_console(driver, what)
         open_page(driver, page)
-        names = [r["scene"] for r in rows_of(driver)]
-        check(sorted(names) == sorted(scenes), "hostile batch: names shown %s" % names)
+        rows = rows_of(driver)
+        check(sorted(r["scene"] for r in rows) == sorted(scenes), "hostile batch: names %s" % [r["scene"] for r in rows])
+        check(all(r["shown"] == r["scene"] for r in rows), "hostile batch: a name is not shown as written")
+        text = driver.execute_script("return document.body.textContent")
+        for path in scenes:
+            name = os.path.basename(path)[:-len(".json")]
+            check(name in text, "hostile batch: %s is not shown as text" % name)
         open_page(driver, chain)
         text = driver.find_element(By.TAG_NAME, "body").text
         check(HOSTILE[0] in text, "hostile chain: the model's name is not shown as text")
