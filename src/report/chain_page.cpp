@@ -182,174 +182,191 @@ std::string Figure(const Panel& p) {
          PanelSvg(p) + "<pre>" + Escape(p.text) + "</pre></figure>\n";
 }
 
+// What every panel reads: the explain object, the traced instance and vertex, and how many
+// instances' edges fit.
+struct Trace {
+  const Scene& scene;
+  const Json& e;
+  std::size_t instance;  // index into e["instances"]
+  const Json& traced;    // e["instances"][instance]
+  const Json& v;         // its traced vertex
+  bool all_instances;    // every shown instance's edges fit in kMaxTriangles
+};
+
+constexpr const char* kTraced = "#d0021b";
+
+std::string PixelText(const Json& framebuffer) {
+  return "pixel (" + Number(std::floor(At(framebuffer, 0)), 10) + ", " + Number(std::floor(At(framebuffer, 1)), 10) + ")";
+}
+
+// The edges of the shown instances (or only the traced one, for a large mesh) in one space.
+void EachInstance(const Trace& t, Panel& p, const char* space, int u, int w, bool need_positive_w) {
+  std::size_t budget = kMaxTriangles;
+  const Json& instances = t.e.at("instances");
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    if (!t.all_instances && i != t.instance) continue;
+    const Model* m = FindModel(t.scene, instances[i].at("model").get<std::string>());
+    if (m) AddEdges(p, *m, instances[i].at("vertices"), space, u, w, budget, need_positive_w);
+  }
+}
+
+void TracedEdges(const Trace& t, Panel& p, const char* space, int u, int w) {
+  std::size_t budget = kMaxTriangles;
+  if (const Model* m = FindModel(t.scene, t.traced.at("model").get<std::string>())) {
+    AddEdges(p, *m, t.traced.at("vertices"), space, u, w, budget);
+  }
+}
+
+// Edges whose ends were projected from near w = 0 run off to thousands of units: not drawn.
+void DropFarSegments(Panel& p, double limit) {
+  const auto far = [limit](const Segment& s) {
+    return std::abs(s.a.x) > limit || std::abs(s.a.y) > limit || std::abs(s.b.x) > limit || std::abs(s.b.y) > limit;
+  };
+  p.segments.erase(std::remove_if(p.segments.begin(), p.segments.end(), far), p.segments.end());
+}
+
+Panel ModelPanel(const Trace& t, const std::string& instance_name, const std::string& vertex_name) {
+  Panel p("model", "1. Model space: " + instance_name, "x", "y");  // from the front
+  TracedEdges(t, p, "object", 0, 1);
+  p.marks.push_back({Pick(t.v.at("object"), 0, 1), "V", kTraced});
+  p.fit.push_back(Pick(t.v.at("object"), 0, 1));
+  p.text = "V, " + vertex_name + " as the model lists it:\n  V = " + Vec(t.v.at("object")) + "\n";
+  return p;
+}
+
+// The world seen along -y (x right, z up the page) or along -x (z right, y up).
+Panel WorldPanel(const Trace& t, bool from_above) {
+  const int u = from_above ? 0 : 2, w = from_above ? 2 : 1;
+  Panel p(from_above ? "world-top" : "world-side",
+          from_above ? "2. World, from above: the instances, the camera and its frustum" : "3. World, from the side",
+          from_above ? "x" : "z", from_above ? "z" : "y");
+  EachInstance(t, p, "world", u, w, false);
+  AddFrustum(p, t.e.at("frustum").at("world"), u, w);
+  p.marks.push_back({Pick(t.v.at("world"), u, w), "M_Model·V", kTraced});
+  if (from_above) {
+    p.text = Matrix("M_Model", t.traced.at("model_matrix")) + "M_Model · V = " + Vec(t.v.at("world")) + "\n";
+  } else {
+    char planes[256];
+    std::snprintf(planes, sizeof planes, "near plane z = %g, viewport at d = %g, far plane z = %g (camera space)\n",
+                  t.e.at("depth").at("near").get<double>(), t.e.at("viewport").at("distance").get<double>(),
+                  t.e.at("depth").at("far").get<double>());
+    p.text = planes;
+  }
+  return p;
+}
+
+Panel CameraPanel(const Trace& t) {
+  Panel p("camera", "4. Camera space, from above: the camera at the origin looking along +z", "x", "z");
+  EachInstance(t, p, "camera", 0, 2, false);
+  AddFrustum(p, t.e.at("frustum").at("camera"), 0, 2);
+  p.marks.push_back({Pick(t.v.at("camera"), 0, 2), "M_Camera·M_Model·V", kTraced});
+  p.text = Matrix("M_Camera", t.e.at("camera_matrix")) + "M_Camera · M_Model · V = " + Vec(t.v.at("camera")) + "\n";
+  return p;
+}
+
+// Clip space divided by w: NDC, Vulkan's x right and y down, depth in [0, 1].
+Panel NdcPanel(const Trace& t) {
+  Panel p("ndc", "5. Clip space and NDC (Vulkan: +y down)", "x", "y");
+  p.y_down = true;
+  EachInstance(t, p, "ndc", 0, 1, true);
+  DropFarSegments(p, 1e3);
+  p.fit = {{-1.15, -1.15}, {1.15, 1.15}};
+  p.boxes.push_back({{-1, -1}, {1, 1}});
+  p.marks.push_back({Pick(t.v.at("ndc"), 0, 1), "NDC", kTraced});
+  const bool orthographic = t.e.at("viewport").at("projection") == "orthographic";
+  p.text = Matrix("M_Projection", t.e.at("projection_matrix")) + "clip = M_Projection · camera = " + Vec(t.v.at("clip")) +
+           "\nNDC = clip.xyz / w = " + Vec(t.v.at("ndc")) + "\n" +
+           (t.v.at("inside_clip_volume").get<bool>() ? "inside the clip volume: -w ≤ x, y ≤ w, 0 ≤ z ≤ w\n"
+                                                     : "outside the clip volume: clipped\n") +
+           (orthographic ? "orthographic: w = 1, nothing is divided\n" : "perspective: w = camera z\n");
+  return p;
+}
+
+// The chapter's canvas: origin at the centre, +y up; and the pixel Vulkan writes.
+Panel CanvasPanel(const Trace& t) {
+  const double cw = t.e.at("canvas").at("width").get<double>(), ch = t.e.at("canvas").at("height").get<double>();
+  Panel p("canvas", "6. The canvas, and the pixel", "x", "y");
+  EachInstance(t, p, "canvas", 0, 1, true);
+  DropFarSegments(p, 1e3 * std::max(cw, ch));
+  p.fit = {{-cw / 2 * 1.05, -ch / 2 * 1.05}, {cw / 2 * 1.05, ch / 2 * 1.05}};
+  p.boxes.push_back({{-cw / 2, -ch / 2}, {cw / 2, ch / 2}});
+  const Json& fb = t.v.at("framebuffer");
+  p.marks.push_back({Pick(t.v.at("canvas"), 0, 1), PixelText(fb), kTraced});
+  p.text = Matrix("F = M_Projection · M_Camera · M_Model", t.traced.at("mvp")) +
+           Matrix("ViewportToCanvas", t.e.at("viewport_to_canvas")) + "canvas (origin at the centre, +y up) = " +
+           Vec(t.v.at("canvas")) + "\nframebuffer (Vulkan: origin top-left, +y down) = " + Vec(fb) + "\n" + PixelText(fb) +
+           ", depth " + Number(At(fb, 2), 6) + "\n";
+  return p;
+}
+
+// The light at the traced vertex, in the world from above: its normal and each light's direction.
+Panel LightPanel(const Trace& t) {
+  const Json& light = t.v.at("light");
+  Panel p("light", "7. Light: the normal, N and the lights (world, from above)", "x", "z");
+  const P2 at = Pick(t.v.at("world"), 0, 2);
+  double extent = 0;  // arrows half as long as the instance is wide
+  for (const Json& x : t.traced.at("vertices")) {
+    const P2 q = Pick(x.at("world"), 0, 2);
+    extent = std::max(extent, std::hypot(q.x - at.x, q.y - at.y));
+  }
+  extent = std::max(extent, 1e-6) * 0.5;
+  TracedEdges(t, p, "world", 0, 2);
+  const Json& n = light.at("unit_normal");
+  const P2 tip{at.x + At(n, 0) * extent, at.y + At(n, 2) * extent};
+  p.segments.push_back({at, tip, "normal"});
+  p.marks.push_back({tip, "n", "#1a7f37"});
+  std::string terms;
+  const Json& lights = t.e.at("lighting").at("lights");
+  for (std::size_t k = 0; k < light.at("terms").size(); ++k) {
+    const Json& term = light.at("terms").at(k);
+    const Json& l = term.at("l");
+    const double length = std::hypot(At(l, 0), At(l, 1), At(l, 2));
+    if (length > 0) {
+      const P2 towards{at.x + At(l, 0) / length * extent, at.y + At(l, 2) / length * extent};
+      p.segments.push_back({at, towards, "light"});
+      p.marks.push_back({towards, "L" + std::to_string(k + 1), "#b8860b"});
+    }
+    terms += "  L" + std::to_string(k + 1) + " (" + lights.at(k).at("type").get<std::string>() + "): l = " + Vec(l) +
+             ", n·l = " + Number(term.at("n_dot_l").get<double>(), 6) + ", term = " +
+             Number(term.at("contribution").get<double>(), 6) + "\n";
+  }
+  p.marks.push_back({at, "V", kTraced});
+  const Json& normal_matrix = t.traced.at("normal_matrix");
+  p.text = (normal_matrix.is_null() ? std::string("N: none\n") : Matrix("N = (M_Model's upper 3x3)⁻ᵀ", normal_matrix)) +
+           "n (model) = " + Vec(light.at("normal")) + "\nN · n = " + Vec(light.at("world_normal")) +
+           "\nunit normal = " + Vec(n) + "\n(M_Model · n would give " + Vec(light.at("normal_by_model_matrix")) +
+           ")\nambient = " + Number(light.at("ambient").get<double>(), 6) + "\n" + terms +
+           "I = " + Number(light.at("intensity").get<double>(), 6) + ", colour = " + Vec(light.at("colour")) + "\n";
+  return p;
+}
+
+// The traced vertex: the one asked for, or the first the camera sees.
+std::size_t PickVertex(const Json& vertices, const std::optional<std::size_t>& asked) {
+  if (asked) return *asked;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (vertices[i].at("inside_clip_volume").get<bool>()) return i;
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string ChainPageHtml(const Scene& scene, const Json& e, const ChainPageOptions& options) {
   const Json& instances = e.at("instances");
-  const Json& traced_instance = instances.at(options.instance);
-  const Json& vertices = traced_instance.at("vertices");
-  // The traced vertex: the one asked for, or the first the camera sees.
-  std::size_t pick = 0;
-  if (options.vertex) {
-    pick = *options.vertex;
-  } else {
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      if (vertices[i].at("inside_clip_volume").get<bool>()) {
-        pick = i;
-        break;
-      }
-    }
-  }
-  const Json& v = vertices.at(pick);
-  const std::string instance_name =
-      "instance " + std::to_string(traced_instance.at("index").get<std::size_t>()) + " (model \"" + traced_instance.at("model").get<std::string>() + "\")";
-  const std::string vertex_name = "vertex " + std::to_string(v.at("index").get<std::size_t>());
-  const bool orthographic = e.at("viewport").at("projection") == "orthographic";
-
-  // How many triangles each panel may draw, shared by the instances shown.
-  std::size_t total = 0;
+  const Json& traced = instances.at(options.instance);
+  const Json& v = traced.at("vertices").at(PickVertex(traced.at("vertices"), options.vertex));
+  std::size_t total = 0;  // triangles over the instances shown
   for (const Json& x : instances) {
     if (const Model* m = FindModel(scene, x.at("model").get<std::string>())) total += m->triangles.size();
   }
-  const bool all_instances = total <= kMaxTriangles;
-  const auto each_instance = [&](Panel& p, const char* space, int u, int w, bool need_positive_w) {
-    std::size_t budget = kMaxTriangles;
-    for (std::size_t i = 0; i < instances.size(); ++i) {
-      if (!all_instances && i != options.instance) continue;
-      const Model* m = FindModel(scene, instances[i].at("model").get<std::string>());
-      if (m) AddEdges(p, *m, instances[i].at("vertices"), space, u, w, budget, need_positive_w);
-    }
-  };
-  const char* kTraced = "#d0021b";
+  const Trace t{scene, e, options.instance, traced, v, total <= kMaxTriangles};
+  const std::string instance_name = "instance " + std::to_string(traced.at("index").get<std::size_t>()) + " (model \"" +
+                                    traced.at("model").get<std::string>() + "\")";
+  const std::string vertex_name = "vertex " + std::to_string(v.at("index").get<std::size_t>());
 
-  std::vector<Panel> panels;
-  {  // Model space, from the front.
-    Panel p{"model", "1. Model space: " + instance_name, "x", "y"};
-    std::size_t budget = kMaxTriangles;
-    if (const Model* m = FindModel(scene, traced_instance.at("model").get<std::string>())) {
-      AddEdges(p, *m, vertices, "object", 0, 1, budget);
-    }
-    p.marks.push_back({Pick(v.at("object"), 0, 1), "V", kTraced});
-    p.fit.push_back(Pick(v.at("object"), 0, 1));
-    p.text = "V, " + vertex_name + " as the model lists it:\n  V = " + Vec(v.at("object")) + "\n";
-    panels.push_back(std::move(p));
-  }
-  const Json& world_frustum = e.at("frustum").at("world");
-  const std::string world_text = Matrix("M_Model", traced_instance.at("model_matrix")) +
-                                 "M_Model · V = " + Vec(v.at("world")) + "\n";
-  {  // The world from above: x right, z up the page (away from the viewer).
-    Panel p{"world-top", "2. World, from above: the instances, the camera and its frustum", "x", "z"};
-    each_instance(p, "world", 0, 2, false);
-    AddFrustum(p, world_frustum, 0, 2);
-    p.marks.push_back({Pick(v.at("world"), 0, 2), "M_Model·V", kTraced});
-    p.text = world_text;
-    panels.push_back(std::move(p));
-  }
-  {  // The world from the side: z right, y up.
-    Panel p{"world-side", "3. World, from the side", "z", "y"};
-    each_instance(p, "world", 2, 1, false);
-    AddFrustum(p, world_frustum, 2, 1);
-    p.marks.push_back({Pick(v.at("world"), 2, 1), "M_Model·V", kTraced});
-    char planes[256];
-    std::snprintf(planes, sizeof planes, "near plane z = %g, viewport at d = %g, far plane z = %g (camera space)\n",
-                  e.at("depth").at("near").get<double>(), e.at("viewport").at("distance").get<double>(),
-                  e.at("depth").at("far").get<double>());
-    p.text = planes;
-    panels.push_back(std::move(p));
-  }
-  {  // Camera space from above: the camera at the origin, looking along +z.
-    Panel p{"camera", "4. Camera space, from above: the camera at the origin looking along +z", "x", "z"};
-    each_instance(p, "camera", 0, 2, false);
-    AddFrustum(p, e.at("frustum").at("camera"), 0, 2);
-    p.marks.push_back({Pick(v.at("camera"), 0, 2), "M_Camera·M_Model·V", kTraced});
-    p.text = Matrix("M_Camera", e.at("camera_matrix")) + "M_Camera · M_Model · V = " + Vec(v.at("camera")) + "\n";
-    panels.push_back(std::move(p));
-  }
-  {  // Clip space divided by w: NDC, Vulkan's x right and y down, depth in [0, 1].
-    Panel p{"ndc", "5. Clip space and NDC (Vulkan: +y down)", "x", "y"};
-    p.y_down = true;
-    each_instance(p, "ndc", 0, 1, true);
-    p.segments.erase(std::remove_if(p.segments.begin(), p.segments.end(),
-                                    [](const Segment& s) {
-                                      return std::abs(s.a.x) > 1e3 || std::abs(s.a.y) > 1e3 || std::abs(s.b.x) > 1e3 ||
-                                             std::abs(s.b.y) > 1e3;
-                                    }),
-                     p.segments.end());
-    p.fit = {{-1.15, -1.15}, {1.15, 1.15}};
-    p.boxes.push_back({{-1, -1}, {1, 1}});
-    p.marks.push_back({Pick(v.at("ndc"), 0, 1), "NDC", kTraced});
-    const Json& clip = v.at("clip");
-    p.text = Matrix("M_Projection", e.at("projection_matrix")) + "clip = M_Projection · camera = " + Vec(clip) +
-             "\nNDC = clip.xyz / w = " + Vec(v.at("ndc")) + "\n" +
-             (v.at("inside_clip_volume").get<bool>() ? "inside the clip volume: -w ≤ x, y ≤ w, 0 ≤ z ≤ w\n"
-                                                     : "outside the clip volume: clipped\n") +
-             (orthographic ? "orthographic: w = 1, nothing is divided\n" : "perspective: w = camera z\n");
-    panels.push_back(std::move(p));
-  }
-  {  // The chapter's canvas: origin at the centre, +y up; the pixel Vulkan writes.
-    const double cw = e.at("canvas").at("width").get<double>(), ch = e.at("canvas").at("height").get<double>();
-    Panel p{"canvas", "6. The canvas, and the pixel", "x", "y"};
-    each_instance(p, "canvas", 0, 1, true);
-    p.segments.erase(std::remove_if(p.segments.begin(), p.segments.end(),
-                                    [&](const Segment& s) {
-                                      const double far_out = 1e3 * std::max(cw, ch);
-                                      return std::abs(s.a.x) > far_out || std::abs(s.a.y) > far_out ||
-                                             std::abs(s.b.x) > far_out || std::abs(s.b.y) > far_out;
-                                    }),
-                     p.segments.end());
-    p.fit = {{-cw / 2 * 1.05, -ch / 2 * 1.05}, {cw / 2 * 1.05, ch / 2 * 1.05}};
-    p.boxes.push_back({{-cw / 2, -ch / 2}, {cw / 2, ch / 2}});
-    const Json& fb = v.at("framebuffer");
-    p.marks.push_back({Pick(v.at("canvas"), 0, 1), "pixel (" + Number(std::floor(At(fb, 0)), 10) + ", " +
-                                                       Number(std::floor(At(fb, 1)), 10) + ")", kTraced});
-    p.text = Matrix("F = M_Projection · M_Camera · M_Model", traced_instance.at("mvp")) +
-             Matrix("ViewportToCanvas", e.at("viewport_to_canvas")) + "canvas (origin at the centre, +y up) = " +
-             Vec(v.at("canvas")) + "\nframebuffer (Vulkan: origin top-left, +y down) = " + Vec(fb) + "\npixel (" +
-             Number(std::floor(At(fb, 0)), 10) + ", " + Number(std::floor(At(fb, 1)), 10) + "), depth " +
-             Number(At(fb, 2), 6) + "\n";
-    panels.push_back(std::move(p));
-  }
-  if (v.contains("light") && !v.at("light").is_null()) {  // The light at this vertex, in the world from above.
-    const Json& light = v.at("light");
-    Panel p{"light", "7. Light: the normal, N and the lights (world, from above)", "x", "z"};
-    const P2 at = Pick(v.at("world"), 0, 2);
-    const Json& n = light.at("unit_normal");
-    double extent = 0;
-    for (const Json& x : vertices) {
-      const P2 q = Pick(x.at("world"), 0, 2);
-      extent = std::max(extent, std::hypot(q.x - at.x, q.y - at.y));
-    }
-    extent = std::max(extent, 1e-6) * 0.5;
-    std::size_t budget = kMaxTriangles;
-    if (const Model* m = FindModel(scene, traced_instance.at("model").get<std::string>())) {
-      AddEdges(p, *m, vertices, "world", 0, 2, budget);
-    }
-    p.segments.push_back({at, {at.x + At(n, 0) * extent, at.y + At(n, 2) * extent}, "normal"});
-    p.marks.push_back({{at.x + At(n, 0) * extent, at.y + At(n, 2) * extent}, "n", "#1a7f37"});
-    std::string terms;
-    const Json& lights = e.at("lighting").at("lights");
-    for (std::size_t k = 0; k < light.at("terms").size(); ++k) {
-      const Json& term = light.at("terms").at(k);
-      const Json& l = term.at("l");
-      const double length = std::hypot(At(l, 0), At(l, 1), At(l, 2));
-      if (length > 0) {
-        const P2 tip{at.x + At(l, 0) / length * extent, at.y + At(l, 2) / length * extent};
-        p.segments.push_back({at, tip, "light"});
-        p.marks.push_back({tip, "L" + std::to_string(k + 1), "#b8860b"});
-      }
-      terms += "  L" + std::to_string(k + 1) + " (" + lights.at(k).at("type").get<std::string>() + "): l = " + Vec(l) +
-               ", n·l = " + Number(term.at("n_dot_l").get<double>(), 6) + ", term = " +
-               Number(term.at("contribution").get<double>(), 6) + "\n";
-    }
-    p.marks.push_back({at, "V", kTraced});
-    p.text = (traced_instance.at("normal_matrix").is_null() ? std::string("N: none\n")
-                                                             : Matrix("N = (M_Model's upper 3x3)⁻ᵀ", traced_instance.at("normal_matrix"))) +
-             "n (model) = " + Vec(light.at("normal")) + "\nN · n = " + Vec(light.at("world_normal")) +
-             "\nunit normal = " + Vec(n) + "\n(M_Model · n would give " + Vec(light.at("normal_by_model_matrix")) +
-             ")\nambient = " + Number(light.at("ambient").get<double>(), 6) + "\n" + terms +
-             "I = " + Number(light.at("intensity").get<double>(), 6) + ", colour = " + Vec(light.at("colour")) + "\n";
-    panels.push_back(std::move(p));
-  }
+  std::vector<Panel> panels = {ModelPanel(t, instance_name, vertex_name), WorldPanel(t, true), WorldPanel(t, false),
+                               CameraPanel(t), NdcPanel(t), CanvasPanel(t)};
+  if (v.contains("light") && !v.at("light").is_null()) panels.push_back(LightPanel(t));
 
   std::ostringstream page;
   const std::string scene_name = e.at("scene").get<std::string>();
@@ -361,7 +378,7 @@ std::string ChainPageHtml(const Scene& scene, const Json& e, const ChainPageOpti
        << "the host, takes " << Escape(vertex_name) << " of " << Escape(instance_name)
        << " from model space to the canvas. Each panel draws one space with the matrix that leads into it and where the "
        << "vertex (red) lands there. " << instances.size() << " of " << e.at("instance_count").get<std::size_t>()
-       << " instances shown" << (all_instances ? "" : " (edges of the traced instance only: the mesh is large)")
+       << " instances shown" << (t.all_instances ? "" : " (edges of the traced instance only: the mesh is large)")
        << ".</p>\n";
   for (const Panel& p : panels) page << Figure(p);
   page << kPageEnd;
