@@ -39,7 +39,8 @@ Scale MakeScale(const PlotAxis& axis, const std::vector<double>& values, double 
   } else {
     if (axis.floor) lo = std::min(lo, *axis.floor);
     const double span = hi > lo ? hi - lo : std::max(1.0, std::abs(hi));
-    lo = lo >= 0 && lo - 0.05 * span < 0 ? 0 : lo - 0.05 * span, hi += 0.05 * span;
+    // Positive data no further from 0 than their own spread start at 0, so that sizes compare.
+    lo = lo >= 0 && lo <= span ? 0 : lo - 0.05 * span, hi += 0.05 * span;
   }
   s.lo = lo, s.hi = hi;
   return s;

@@ -135,6 +135,18 @@ TEST_CASE("PlotSvg: each point carries its numbers, and on a log axis 0 sits on 
   CHECK(svg.find("nan") == std::string::npos);
 }
 
+TEST_CASE("PlotSvg: a linear axis ticks round numbers and starts at 0 for positive data", "[report]") {
+  Plot plot;
+  plot.x = {"instances", false, std::nullopt};
+  plot.y = {"ms", false, std::nullopt};
+  plot.series = {{"twin", "#000", {{1, 2, "one"}, {9, 40, "nine"}}, true}};
+  const std::string svg = PlotSvg(plot);
+  CHECK(svg.find(">0</text>") != std::string::npos);
+  CHECK(svg.find(">10</text>") != std::string::npos);
+  CHECK(svg.find("(log)") == std::string::npos);
+  CHECK(svg.find("<polyline") != std::string::npos);
+}
+
 TEST_CASE("Thumbnail: pictures are averaged, one marked pixel of a diff survives", "[report]") {
   Image diff(600, 400);
   for (std::size_t i = 0; i < diff.rgba.size(); i += 4) diff.rgba[i] = diff.rgba[i + 1] = diff.rgba[i + 2] = 220, diff.rgba[i + 3] = 255;
