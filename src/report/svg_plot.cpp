@@ -34,7 +34,7 @@ Scale MakeScale(const PlotAxis& axis, const std::vector<double>& values, double 
   }
   if (lo > hi) lo = 0, hi = 1;
   if (axis.log) {
-    lo = std::floor(lo), hi = std::ceil(hi + 1e-9);
+    lo = std::floor(lo + 1e-9), hi = std::ceil(hi - 1e-9);  // a value on a decade ends the axis there
     if (hi <= lo) hi = lo + 1;
   } else {
     if (axis.floor) lo = std::min(lo, *axis.floor);
