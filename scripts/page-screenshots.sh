@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ctest --preset release -R '^Pages: '
-for shot in page-batch page-chain page-chain-lit page-bench page-scale; do
+for shot in page-batch page-chain page-chain-lit; do
   cp "build/page-screenshots/$shot.png" "docs/images/$shot.png"
 done
 echo "page-screenshots: docs/images/page-*.png updated"

@@ -299,22 +299,30 @@ Panel CanvasPanel(const Trace& t) {
   return p;
 }
 
-// The light at the traced vertex, in the world from above: its normal and each light's direction.
+// The light at the traced vertex: its normal and each light's direction, in the world seen along
+// the axis the normal has least of, so that the normal lies nearly in the page.
 Panel LightPanel(const Trace& t) {
   const Json& light = t.v.at("light");
-  Panel p("light", "7. Light: the normal, N and the lights (world, from above)", "x", "z");
-  const P2 at = Pick(t.v.at("world"), 0, 2);
+  const Json& n = light.at("unit_normal");
+  const std::array<double, 3> size = {std::abs(At(n, 0)), std::abs(At(n, 1)), std::abs(At(n, 2))};
+  const int dropped = size[0] <= size[1] && size[0] <= size[2] ? 0 : size[1] <= size[2] ? 1 : 2;
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  // The page shows (x, y) along z, (z, y) along x, (x, z) along y: y stays up where it is shown.
+  const int u = dropped == 0 ? 2 : 0, w = dropped == 1 ? 2 : 1;
+  Panel p("light", std::string("7. Light: the normal, N and the lights (world, seen along ") + kAxis[dropped] + ")",
+          kAxis[u], kAxis[w]);
+  const P2 at = Pick(t.v.at("world"), u, w);
   double extent = 0;  // arrows half as long as the instance is wide
   for (const Json& x : t.traced.at("vertices")) {
-    const P2 q = Pick(x.at("world"), 0, 2);
+    const P2 q = Pick(x.at("world"), u, w);
     extent = std::max(extent, std::hypot(q.x - at.x, q.y - at.y));
   }
   extent = std::max(extent, 1e-6) * 0.5;
-  TracedEdges(t, p, "world", 0, 2);
-  const Json& n = light.at("unit_normal");
-  const P2 tip{at.x + At(n, 0) * extent, at.y + At(n, 2) * extent};
+  TracedEdges(t, p, "world", u, w);
+  const P2 tip{at.x + At(n, static_cast<std::size_t>(u)) * extent, at.y + At(n, static_cast<std::size_t>(w)) * extent};
   p.segments.push_back({at, tip, "normal"});
   p.marks.push_back({tip, "n", "#1a7f37"});
+  p.fit.push_back(tip);
   std::string terms;
   const Json& lights = t.e.at("lighting").at("lights");
   for (std::size_t k = 0; k < light.at("terms").size(); ++k) {
@@ -322,8 +330,10 @@ Panel LightPanel(const Trace& t) {
     const Json& l = term.at("l");
     const double length = std::hypot(At(l, 0), At(l, 1), At(l, 2));
     if (length > 0) {
-      const P2 towards{at.x + At(l, 0) / length * extent, at.y + At(l, 2) / length * extent};
+      const P2 towards{at.x + At(l, static_cast<std::size_t>(u)) / length * extent,
+                       at.y + At(l, static_cast<std::size_t>(w)) / length * extent};
       p.segments.push_back({at, towards, "light"});
+      p.fit.push_back(towards);
       p.marks.push_back({towards, "L" + std::to_string(k + 1), "#b8860b"});
     }
     terms += "  L" + std::to_string(k + 1) + " (" + lights.at(k).at("type").get<std::string>() + "): l = " + Vec(l) +
@@ -373,7 +383,7 @@ std::string ChainPageHtml(const Scene& scene, const Json& e, const ChainPageOpti
   page << PageStart("The chain of " + scene_name) << "<style>.axis{stroke:#ddd}.box{fill:none;stroke:#555}"
        << ".edge{fill:none;stroke:#2b6cb0;stroke-width:1}.frustum{fill:none;stroke:#999;stroke-dasharray:4 3}"
        << ".far{fill:none;stroke:#bbb;stroke-dasharray:2 4}.normal{stroke:#1a7f37;stroke-width:2}"
-       << ".light{stroke:#b8860b;stroke-width:2}figure.chain-panel{width:402px}</style>\n"
+       << ".light{stroke:#b8860b;stroke-width:2}figure.chain-panel{width:402px}figure.chain-panel pre{white-space:pre-wrap}</style>\n"
        << "<h1>The chain of " << Escape(scene_name) << "</h1>\n<p>F = M_Projection · M_Camera · M_Model, computed in double by "
        << "the host, takes " << Escape(vertex_name) << " of " << Escape(instance_name)
        << " from model space to the canvas. Each panel draws one space with the matrix that leads into it and where the "
