@@ -260,9 +260,14 @@ def case_hostile(a):
     lines, page, junit = render_batch(a, scenes, work)
     chain = os.path.join(work, "chain.html")
     run([a.exe, "explain", scenes[0], "--html", chain])
+    suite = os.path.join(work, "suite")  # a bench suite of one hostile-named scene
+    os.makedirs(suite)
+    shutil.copy(scenes[0], suite)
+    bench = os.path.join(work, "bench.html")
+    run([a.exe, "bench", "--scenes", suite, "--runs", "1", "--methods", "compose-f64,cpu-twin", "--html", bench, "-q"])
     driver = browser()
     try:
-        for what, path in (("hostile batch", page), ("hostile chain", chain)):
+        for what, path in (("hostile batch", page), ("hostile chain", chain), ("hostile bench", bench)):
             open_page(driver, path)
             check_no_alert(driver, what)
             check(driver.execute_script("return document.scripts.length") == 0, what + ": the page has a <script> element")
@@ -285,6 +290,9 @@ def case_hostile(a):
         open_page(driver, chain)
         text = driver.find_element(By.TAG_NAME, "body").text
         check(HOSTILE[0] in text, "hostile chain: the model's name is not shown as text")
+        open_page(driver, bench)
+        text = driver.execute_script("return document.body.textContent")
+        check(HOSTILE[0] in text, "hostile bench: the scene's name is not shown as text")
     finally:
         driver.quit()
     xml = validate_junit(junit, a.source, "hostile")
