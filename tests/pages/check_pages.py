@@ -15,6 +15,7 @@ import shutil
 import subprocess
 import sys
 import time
+import urllib.parse
 
 from selenium import webdriver
 from selenium.common.exceptions import NoAlertPresentException
@@ -32,10 +33,10 @@ def check(condition, message):
     return condition
 
 
-def run(args, env=None, expect=(0,)):
+def run(args, env=None, expect=(0,), cwd=None):
     full_env = dict(os.environ)
     full_env.update(env or {})
-    r = subprocess.run(args, capture_output=True, text=True, env=full_env)
+    r = subprocess.run(args, capture_output=True, text=True, env=full_env, cwd=cwd)
     if r.returncode not in expect:
         sys.exit("%s exited %d (expected %s)\nstdout:\n%s\nstderr:\n%s" % (" ".join(args), r.returncode, expect, r.stdout[-4000:], r.stderr[-4000:]))
     return r
@@ -122,9 +123,9 @@ def validate_junit(path, source, what):
     return open(path, encoding="utf-8").read()
 
 
-def render_batch(a, scenes, work, env=None, expect=(0, 1, 2, 5)):
+def render_batch(a, scenes, work, env=None, expect=(0, 1, 2, 5), cwd=None):
     out, report, junit = os.path.join(work, "out"), os.path.join(work, "report"), os.path.join(work, "junit.xml")
-    r = run([a.exe, "render", *scenes, "-o", out, "--report", report, "--junit", junit, "--json", "-q"], env, expect)
+    r = run([a.exe, "render", *scenes, "-o", out, "--report", report, "--junit", junit, "--json", "-q"], env, expect, cwd)
     lines = [json.loads(line) for line in r.stdout.splitlines() if line.strip()]
     return lines, os.path.join(report, "index.html"), junit
 
@@ -137,8 +138,9 @@ def case_batch(a):
     with open(broken, "w") as f:
         f.write('{"canvas": {"width": 64, "height": 64}, "models": {')
     names = ["cgfs-transforms.json", "hard/depth-ratio-1e-4.json", "catlike-grid.json", "lit-flat.json", "cgfs-scene.json"]
-    scenes = [os.path.join(a.source, "scenes", n) for n in names] + [broken]
-    lines, page, junit = render_batch(a, scenes, work, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"})
+    # Paths relative to the repository, as a user types them (and as the README's screenshot shows).
+    scenes = [os.path.join("scenes", n) for n in names] + [os.path.relpath(broken, a.source)]
+    lines, page, junit = render_batch(a, scenes, work, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"}, cwd=a.source)
     by_scene = {j["scene"]: j for j in lines}
     check(len(lines) == len(scenes) - 1, "batch: one JSON line per readable scene, got %d" % len(lines))
 
@@ -148,7 +150,7 @@ def case_batch(a):
         rows = rows_of(driver)
         check(len(rows) == len(scenes), "batch: %d rows for %d scenes" % (len(rows), len(scenes)))
         check_failures_first(rows, "batch")
-        check(rows and rows[0]["scene"] == broken and rows[0]["verdict"] == "error", "batch: the unreadable scene is not first")
+        check(rows and rows[0]["scene"] == scenes[-1] and rows[0]["verdict"] == "error", "batch: the unreadable scene is not first")
         for row in rows:
             j = by_scene.get(row["scene"])
             if j is None:
@@ -171,7 +173,7 @@ def case_batch(a):
         count = check_images_load(driver, "batch")
         check(count >= 2 * (len(scenes) - 1), "batch: %d images for %d drawn scenes" % (count, len(scenes) - 1))
         links = driver.execute_script("return Array.from(document.querySelectorAll('#scenes a')).map(a => a.href)")
-        missing = [h for h in links if not os.path.isfile(re.sub("^file://", "", __import__("urllib.parse").parse.unquote(h)))]
+        missing = [h for h in links if not os.path.isfile(re.sub("^file://", "", urllib.parse.unquote(h)))]
         check(not missing, "batch: links to missing full-size PNGs: %s" % missing[:3])
         check_console(driver, "batch")
         driver.execute_script("window.scrollTo(0, 0)")
