@@ -1,6 +1,6 @@
 // `twinraster bench --scale`: the chapter's "one million cubes" at 1 k, 10 k, 100 k and 1 M
-// instances, each stage timed (the verifier's judgement too) (medians) with the process's peak memory, so that cost can be read
-// against instance count.
+// instances, each stage timed (medians; the verifier's judgement too) with the process's peak
+// memory, so that cost can be read against instance count.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>

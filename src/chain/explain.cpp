@@ -373,6 +373,8 @@ std::string ExplainText(const Scene& scene, const ExplainOptions& options) {
   return out.str();
 }
 
+void CheckExplainOptions(const Scene& scene, const ExplainOptions& options) { static_cast<void>(Select(scene, options)); }
+
 nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options) {
   const Explanation e = Explain(scene, options);
   const Chain& chain = e.chain;

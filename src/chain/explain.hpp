@@ -24,6 +24,9 @@ struct ExplainOptions {
 // (docs/json-output.md, docs/schemas/explain.schema.json).
 inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
 
+// Throws UsageError when the instance or vertex index does not exist, as the two below do.
+void CheckExplainOptions(const Scene& scene, const ExplainOptions& options);
+
 // Both throw UsageError when the instance or vertex index does not exist.
 std::string ExplainText(const Scene& scene, const ExplainOptions& options);
 nlohmann::ordered_json ExplainJson(const Scene& scene, const ExplainOptions& options);

@@ -7,6 +7,7 @@
 #include "bench/scale_bench.hpp"
 #include "bench/verify_bench.hpp"
 #include "cli/commands.hpp"
+#include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "image/staged_file.hpp"
@@ -100,11 +101,7 @@ int BenchVerify(const BenchArguments& a) {
 }
 
 int Bench(const BenchArguments& a) {
-  if (a.out && !std::filesystem::is_directory(*a.out)) {
-    std::error_code error;
-    std::filesystem::create_directories(*a.out, error);
-    if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
-  }
+  if (a.out) MakeDirectory(*a.out);
   // Checked before the minutes of measuring, not after.
   for (const auto& [flag, file] : {std::pair{"--html", a.html}, std::pair{"--svg", a.svg}}) {
     if (!file) continue;
@@ -125,12 +122,6 @@ int Bench(const BenchArguments& a) {
     throw UsageError("no scene directory " + options.scenes_dir.string() +
                      " (run from the repository root, or pass --scenes DIR)");
   }
-  if (a.out && !std::filesystem::is_directory(*a.out)) {
-    std::error_code error;
-    std::filesystem::create_directories(*a.out, error);
-    if (error) throw FileError(*a.out + ": cannot create the directory: " + error.message());
-  }
-
   Progress progress = Progress::OnStandardError(a.quiet);
   if (progress.active()) {
     options.on_row = [&progress](const BenchRow& row, std::size_t done, std::size_t total) {

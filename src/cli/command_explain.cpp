@@ -29,8 +29,8 @@ int Explain(const ExplainArguments& a) {
   const ExplainOptions options{a.instance, a.vertex};
   if (a.html) {
     // The page traces every vertex of the instances it shows, and marks the one asked for.
+    CheckExplainOptions(scene, options);
     const nlohmann::ordered_json chain = ExplainJson(scene, {a.instance, std::nullopt});
-    if (a.vertex) ExplainJson(scene, options);  // the same checks (and messages) as without --html
     StagedFile page(*a.html, report::ChainPageHtml(scene, chain, {.instance = 0, .vertex = a.vertex}));
     page.Commit();
   }

@@ -352,17 +352,8 @@ int Render(RenderArguments& a) {
   std::optional<GpuProcess> gpu;
   const bool several = a.scenes.size() > 1;
   const std::optional<std::string> directory = several ? std::optional(a.output.value_or(".")) : std::nullopt;
-  for (const std::optional<std::string>& dir : {directory, a.report}) {
-    if (!dir) continue;
-    std::error_code error;
-    std::filesystem::create_directories(*dir, error);
-    if (error) throw FileError(*dir + ": cannot create the directory: " + error.message());
-  }
-  if (a.report) {
-    std::error_code error;
-    std::filesystem::create_directories(std::filesystem::path(*a.report) / "thumbs", error);
-    if (error) throw FileError(*a.report + "/thumbs: cannot create the directory: " + error.message());
-  }
+  if (directory) MakeDirectory(*directory);
+  if (a.report) MakeDirectory((std::filesystem::path(*a.report) / "thumbs").string());  // and DIR with it
   // One scene's bad input is the run's error (exit 2, nothing written), unless a report or JUnit
   // file is asked for, which then records it. Several scenes: each on its own; a bad scene, an
   // unwritable output or a crashed GPU process is reported and the others still render; the exit
