@@ -62,6 +62,11 @@ for m in proc sys dev dev/pts; do
   mounted+=("$root/$m")
 done
 cp -L /etc/resolv.conf "$root/etc/resolv.conf"
+# Every installed Debian names localhost in /etc/hosts (the installer, cloud images and containers
+# write it); a minbase root may have none, and chromedriver's clients reach it by that name.
+if ! grep -qs '\blocalhost\b' "$root/etc/hosts"; then
+  printf '127.0.0.1\tlocalhost\n::1\t\tlocalhost ip6-localhost ip6-loopback\n' >>"$root/etc/hosts"
+fi
 
 # A fresh clone of what is committed, as CI and a newcomer see it (the root has no git).
 git clone -q "$PWD" "$root/root/twinraster"
