@@ -8,7 +8,6 @@
 #include "book/book_renderer.hpp"
 #include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
-#include "report/comparison_report.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
@@ -21,6 +20,8 @@
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
+#include "report/comparison_report.hpp"
+#include "report/image_notes.hpp"
 #include "report/junit.hpp"
 #include "report/render_outputs.hpp"
 #include "report/render_record.hpp"
@@ -66,6 +67,15 @@ struct RenderArguments {
 struct BackendRun : report::BackendRecord {
   Image image;
 };
+
+// Who drew a backend's image and how that device rasterizes: the judgement's rules and the
+// image's PNG notes. The twin draws lines as lavapipe does, strictly, at its subpixel precision.
+report::DrawnBy DrawnByOf(const BackendRun& run, const DeviceIdentity& device) {
+  if (run.name == "gpu") {
+    return {device.name, {.subpixel_bits = int(device.subpixel_bits), .strict_lines = device.strict_lines}};
+  }
+  return {"CPU twin", {.subpixel_bits = cpu::kSubpixelBits, .strict_lines = true}};
+}
 
 // The Vulkan work runs in a child process (gpu/isolated_gpu.hpp): a driver that crashes or hangs
 // costs this scene its GPU image, not the run. The child and its device serve every scene of a
@@ -265,9 +275,7 @@ report::RenderRecord RenderScene(const RenderArguments& a, const std::string& sc
   if (judged) {
     progress.Status("verifying the " + judged->name + " image...");
     Stopwatch clock;
-    // The GPU's own subpixel precision; the twin snaps as lavapipe does.
-    const int bits = judged->name == "gpu" ? int(device.subpixel_bits) : cpu::kSubpixelBits;
-    record.verification = verify::VerifyImage(scene, list, judged->image, {.subpixel_bits = bits});
+    record.verification = verify::VerifyImage(scene, list, judged->image, DrawnByOf(*judged, device).rasterizes);
     record.verify_ms = clock.Milliseconds();
     record.judged = judged->name;
     // A report shows the map of every judgement; otherwise --verify asks for it.
@@ -285,8 +293,9 @@ report::RenderRecord RenderScene(const RenderArguments& a, const std::string& sc
   for (BackendRun& run : runs) {
     if (!run.Drawn()) continue;
     Stopwatch clock;
-    if (to_stdout) png_bytes = EncodePng(run.image, a.png_level);
-    else staged.push_back(StagePng(run.output, run.image, a.png_level));
+    const PngNotes notes = report::NotesOf(DrawnByOf(run, device));
+    if (to_stdout) png_bytes = EncodePng(run.image, a.png_level, notes);
+    else staged.push_back(StagePng(run.output, run.image, a.png_level, notes));
     run.png_ms = clock.Milliseconds();
   }
   std::optional<Image> diff;
@@ -314,10 +323,11 @@ report::RenderRecord RenderScene(const RenderArguments& a, const std::string& sc
   if (to_stdout && !png_bytes.empty()) WriteStandardOutput(png_bytes);
 
   if (gpu_failed) record.exit_code = kExitGpuFailed;
-  else if (record.verification && !record.verification->Passed()) record.exit_code = kExitImagesDiffer;
+  else if (record.verification && !record.verification->NoViolations()) record.exit_code = kExitImagesDiffer;
   // A twin that copies this lavapipe promised identical images; one that cannot (no rules for the
   // driver) leaves the verdict to the verifier.
   else if (differ && record.TwinPromised()) record.exit_code = kExitImagesDiffer;
+  else if (report::VerdictOf(record) == report::Verdict::kInconclusive) record.exit_code = kExitInconclusive;
   record.total_ms = total_clock.Milliseconds();
   return record;
 }
@@ -378,7 +388,7 @@ int Render(RenderArguments& a) {
       record.error = e.what();
       record.exit_code = kExitBadInput;
     }
-    worst = std::max(worst, record.exit_code);
+    worst = WorseExit(worst, record.exit_code);
     if (a.report || a.junit) records.push_back(std::move(record));
   }
   WriteBatchReports(a, records, batch_clock.Milliseconds());
@@ -437,7 +447,7 @@ CommandRun AddRenderCommand(CLI::App& app) {
                     "implementation may draw, pixel by pixel (docs/verify.md), and write its\n"
                     "map beside it as OUT-map.png (OUT-gpu-map.png with both); exit 1 on a\n"
                     "violation. Without it, a difference between the two images is still judged");
-  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/3, docs/json-output.md)");
+  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/4, docs/json-output.md)");
   command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
       ->type_name("NAME");
   command

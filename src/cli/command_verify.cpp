@@ -1,12 +1,14 @@
 // `twinraster verify SCENE IMAGE.png`: judges any image of the scene by what a conformant Vulkan
-// implementation may draw (verify/verifier.hpp), writes the verification map, exits 0 or 1.
+// implementation may draw (verify/verifier.hpp), by the rules of the device that drew it (the
+// image's own notes, or the options), writes the verification map, exits 0, 1 or 6.
 #include "base/stopwatch.hpp"
 #include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
-#include "report/verify_report.hpp"
 #include "image/png_file.hpp"
+#include "report/image_notes.hpp"
+#include "report/verify_report.hpp"
 #include "verify/verifier.hpp"
 #include "verify/verify_map.hpp"
 
@@ -27,8 +29,18 @@ struct VerifyArguments {
   bool no_map = false;
   bool wireframe = false;
   int subpixel_bits = 4;  // the spec's minimum subPixelPrecisionBits
+  std::string strict_lines = "false";
+  bool bits_given = false, strict_given = false;
   bool json = false;
 };
+
+// The device's rules: each option given, else what the image's notes say, else the loosest.
+verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<report::DrawnBy>& drawn_by) {
+  verify::VerifyOptions options = drawn_by ? drawn_by->rasterizes : verify::VerifyOptions{};
+  if (a.bits_given) options.subpixel_bits = a.subpixel_bits;
+  if (a.strict_given) options.strict_lines = a.strict_lines == "true";
+  return options;
+}
 
 int Verify(const VerifyArguments& a) {
   if (a.map) ExpectPngName("--map", *a.map);
@@ -42,9 +54,8 @@ int Verify(const VerifyArguments& a) {
   }
   const DrawList list = BuildDrawList(scene);
   Stopwatch clock;
-  verify::VerifyOptions options;
-  options.subpixel_bits = a.subpixel_bits;
-  const verify::Verification v = verify::VerifyImage(scene, list, image, options);
+  const std::optional<report::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
+  const verify::Verification v = verify::VerifyImage(scene, list, image, DeviceRules(a, drawn_by));
   const double verify_ms = clock.Milliseconds();
   std::optional<std::string> map;
   if (!a.no_map) {
@@ -57,14 +68,21 @@ int Verify(const VerifyArguments& a) {
     j["scene"] = a.scene;
     j["image"] = a.image;
     j["wireframe"] = scene.wireframe;
+    j["drawn_by"] = drawn_by ? nlohmann::ordered_json(drawn_by->device) : nlohmann::ordered_json(nullptr);
     const nlohmann::ordered_json verdict = VerificationJson(v, map, verify_ms);
     for (const auto& [key, value] : verdict.items()) j[key] = value;
     std::cout << j.dump(2) << "\n";
   } else {
+    if (drawn_by) std::cout << a.image << ": drawn by " << drawn_by->device << " (its PNG notes)\n";
     std::cout << a.image << ": " << verify::VerificationText(v) << "\n";
     if (map) std::cout << "map: " << *map << " (grey: certain, amber: uncertain, red: not allowed)\n";
   }
-  return v.Passed() ? kExitOk : kExitImagesDiffer;
+  switch (v.Verdict()) {
+    case verify::Judgement::kPassed: return kExitOk;
+    case verify::Judgement::kInconclusive: return kExitInconclusive;
+    case verify::Judgement::kFailed: break;
+  }
+  return kExitImagesDiffer;
 }
 
 }  // namespace
@@ -76,20 +94,30 @@ CommandRun AddVerifyCommand(CLI::App& app) {
       "Each pixel is certain (only one surface, or only the background, may show there),\n"
       "uncertain (the spec lets more than one show) or a violation (no conformant\n"
       "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
-      "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error.");
+      "The device's rules come from the image's PNG notes (render writes them), else the options.\n"
+      "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error,\n"
+      "6 inconclusive (no violation, but too little is certain to tell a broken image).");
   command->add_option("SCENE", a->scene, "the scene file (JSON) or OBJ mesh the image is of, or - for standard input")
       ->required();
   command->add_option("IMAGE.png", a->image, "the image to judge, at the scene's canvas size")->required();
   command->add_flag("--wireframe", a->wireframe, "the image draws triangle edges only, as render --wireframe does");
   ExpectIntegerIn(command
                       ->add_option("--subpixel-bits", a->subpixel_bits,
-                                   "the device's subPixelPrecisionBits (default 4, the spec's minimum;\n"
-                                   "lavapipe has 8)")
-                      ->type_name("N"),
+                                   "the device's subPixelPrecisionBits (default: the image's notes, else 4,\n"
+                                   "the spec's minimum; lavapipe has 8, SwiftShader 4)")
+                      ->type_name("N")
+                      ->each([a](const std::string&) { a->bits_given = true; }),
                   0, 16);
+  ExpectOneOf(command
+                  ->add_option("--strict-lines", a->strict_lines,
+                               "the device's strictLines (default: the image's notes, else false, which\n"
+                               "allows every line rasterization)")
+                  ->type_name("BOOL")
+                  ->each([a](const std::string&) { a->strict_given = true; }),
+              "value", {"true", "false"});
   command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")->type_name("MAP.png");
   command->add_flag("--no-map", a->no_map, "write no map");
-  command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/1, docs/json-output.md)");
+  command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/2, docs/json-output.md)");
   return [a] { return Verify(*a); };
 }
 

@@ -18,7 +18,12 @@ enum ExitCode : int {
   kExitNoVulkan = 3,
   kExitInternalError = 4,
   kExitGpuFailed = 5,  // the Vulkan driver crashed or timed out; everything else was still done
+  kExitInconclusive = 6,  // no pixel is wrong, but the verifier could not tell a correct image from a broken one
 };
+
+// Of two scenes' exit codes, the one a batch reports: any problem outranks an inconclusive
+// judgement, which outranks success.
+int WorseExit(int a, int b);
 
 // Runs a parsed command and returns the exit code; throws SceneError, FileError, UsageError or
 // GpuUnavailable for main() to report.

@@ -64,7 +64,8 @@ int Run(int argc, char** argv) {
                "Vulkan (lavapipe) and on a bit-exact CPU twin.",
                "twinraster");
   SetUpParser(app);
-  app.set_version_flag("--version", VersionText(), "print the version and exit");
+  // A function, called only when --version is given: it reaches Vulkan to list the devices.
+  app.set_version_flag("--version", VersionText, "print the version and exit");
   app.footer("Run 'twinraster COMMAND --help' for a command's arguments.\n"
              "Exit codes: 0 done (images identical, or verified), 1 images differ (or violate), 2 bad input or usage,\n"
              "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out.");

@@ -53,7 +53,8 @@ CLI::App* AddSubcommand(CLI::App& app, const std::string& name, const std::strin
   CLI::App* command = app.add_subcommand(name, description);
   command->group("Commands");
   command->allow_extras();
-  command->set_version_flag("--version", VersionText(), "print the version and exit");
+  // A function, called only when --version is given: it reaches Vulkan to list the devices.
+  command->set_version_flag("--version", VersionText, "print the version and exit");
   if (!footer.empty()) command->footer(footer);
   return command;
 }

@@ -3,16 +3,50 @@
 #include "cli/build_version.hpp"  // generated at build time by build_version.cmake
 #include "cpu/lavapipe_path.hpp"
 #include "cpu/twin_rules.hpp"
+#include "gpu/device_list.hpp"
+#include "gpu/driver_files.hpp"
 
 namespace twinraster {
+namespace {
+
+// "llvmpipe (...): llvmpipe, Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230, 8 subpixel bits,
+// strictLines true; twin: bit-exact (lavapipe rules, ...)"
+std::string DeviceLine(const DeviceIdentity& d, const cpu::CpuPath& path) {
+  std::string driver = d.driver_name;
+  if (!d.driver_info.empty()) driver += (driver.empty() ? "" : ", ") + d.driver_info;
+  const cpu::TwinRules twin = cpu::ChooseTwinRules(d.name, d.driver_info, path);
+  return "  " + d.name + ": " + (driver.empty() ? "driver not named" : driver) + ", Vulkan " +
+         gpu::VulkanVersionText(d.api_version) + ", " + std::to_string(d.subpixel_bits) +
+         " subpixel bits, strictLines " + (d.strict_lines ? "true" : "false") + "; twin: " +
+         (twin.exact ? "bit-exact (" + twin.text + ")" : "no bit-exact rules (the verifier judges its images)");
+}
+
+std::string DevicesText(const cpu::CpuPath& path) {
+  const gpu::ExtraDriverOffer offer;  // held across ListDevices(), whose own offer then stands aside
+  std::string heading = "Vulkan devices", offered;
+  for (const std::string& file : offer.files()) offered += (offered.empty() ? "" : ", ") + file;
+  if (!offered.empty()) heading += " (also offered to the loader: " + offered + ")";
+  try {
+    const std::vector<DeviceIdentity> devices = gpu::ListDevices();
+    if (devices.empty()) return heading + ": none reachable (the loader found no device)";
+    std::string text = heading + ":";
+    for (const DeviceIdentity& device : devices) text += "\n" + DeviceLine(device, path);
+    return text;
+  } catch (const GpuUnavailable& e) {
+    return heading + ": none reachable (" + e.what() + ")";
+  }
+}
+
+}  // namespace
 
 std::string VersionText() {
   const std::string describe = TWINRASTER_GIT_DESCRIBE;
-  // No Vulkan here (--version stays instant): the driver is named by render's report.
+  const cpu::CpuPath path = cpu::DetectCpuPath();
   return std::string("twinraster ") + TWINRASTER_VERSION + (describe.empty() ? "" : " (" + describe + ")") +
-         "\nlavapipe's CPU path on this machine: " + cpu::DetectCpuPath().Text() +
-         "\nthe twin has bit-exact rules for:\n" + cpu::KnownRulesText() +
-         "any other driver is reported as \"no bit-exact rules for ...\" (render names the driver)";
+         "\nlavapipe's CPU path on this machine: " + path.Text() + "\nthe twin has bit-exact rules for:\n" +
+         cpu::KnownRulesText() +
+         "any other driver is reported as \"no bit-exact rules for ...\" (render names the driver)\n" +
+         DevicesText(path);
 }
 
 }  // namespace twinraster

@@ -43,6 +43,10 @@ struct DeviceIdentity {
   std::string driver_info;  // driverInfo, e.g. "Mesa 22.3.6 (LLVM 15.0.6)"
   std::uint32_t vendor_id = 0, device_id = 0, driver_id = 0, driver_version = 0, api_version = 0;
   std::uint32_t subpixel_bits = 0;  // limits.subPixelPrecisionBits
+  bool strict_lines = false;        // limits.strictLines
+  // twinraster never sets VK_EXT_line_rasterization state, so lines are drawn in the device's
+  // default mode.
+  std::string line_rasterization = "default";
 };
 
 // No usable Vulkan device, or the validation layer is missing; the message says what to install.

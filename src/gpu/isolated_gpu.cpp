@@ -150,6 +150,7 @@ bool ServeList(GpuRenderer& renderer, const DrawList& list, int fd) {
     Writer(kDevice)
         .Text(d.name).Text(d.driver_name).Text(d.driver_info)
         .U32(d.vendor_id).U32(d.device_id).U32(d.driver_id).U32(d.driver_version).U32(d.api_version).U32(d.subpixel_bits)
+        .U32(d.strict_lines ? 1 : 0)
         .F64(clock.Milliseconds())
         .Send(fd);
   } catch (const GpuUnavailable& e) {
@@ -274,6 +275,9 @@ IsolatedGpuResult GpuProcess::Render(const DrawList& list) {
       for (std::uint32_t* number : numbers) {
         if (status == Status::kOk) status = reader.Value(*number);
       }
+      std::uint32_t strict_lines = 0;
+      if (status == Status::kOk) status = reader.Value(strict_lines);
+      d.strict_lines = strict_lines != 0;
       if (status == Status::kOk) status = reader.Value(result.device_ms);
     } else if (tag == kRendered) {
       GpuTimings& t = result.timings;

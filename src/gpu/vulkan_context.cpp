@@ -1,5 +1,6 @@
 #include "gpu/vulkan_context.hpp"
 
+#include "gpu/driver_files.hpp"
 #include "gpu/keep_loaded.hpp"
 
 #include <algorithm>
@@ -72,36 +73,14 @@ std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
   return names.empty() ? "none" : names;
 }
 
-bool DeviceHasExtension(const vk::raii::PhysicalDevice& device, std::string_view name) {
-  for (const vk::ExtensionProperties& e : device.enumerateDeviceExtensionProperties()) {
-    if (name == e.extensionName.data()) return true;
-  }
-  return false;
-}
-
-DeviceIdentity Identify(const vk::raii::PhysicalDevice& device, const vk::PhysicalDeviceProperties& p) {
-  DeviceIdentity id;
-  id.name = p.deviceName.data();
-  id.vendor_id = p.vendorID, id.device_id = p.deviceID, id.driver_version = p.driverVersion;
-  id.api_version = p.apiVersion;
-  id.subpixel_bits = p.limits.subPixelPrecisionBits;
-  // VkPhysicalDeviceDriverProperties is core from Vulkan 1.2, an extension before it.
-  if (VK_API_VERSION_MINOR(p.apiVersion) >= 2 || VK_API_VERSION_MAJOR(p.apiVersion) > 1 ||
-      DeviceHasExtension(device, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
-    const auto chain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>();
-    const auto& driver = chain.get<vk::PhysicalDeviceDriverProperties>();
-    id.driver_name = driver.driverName.data();
-    id.driver_info = driver.driverInfo.data();
-    id.driver_id = static_cast<std::uint32_t>(driver.driverID);
-  }
-  return id;
-}
-
 }  // namespace
 
 // The loader is linked in (Vulkan::Vulkan), so we hand vulkan.hpp its entry point directly rather
 // than have it dlopen the library a second time.
 VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanceProcAddr) {
+  // A device asked by name may be one outside the loader's search path; the default goes without
+  // (loading SwiftShader's driver costs instance creation time).
+  const ExtraDriverOffer offer(!options.device.empty());
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
   const std::vector<vk::ValidationFeatureEnableEXT> enabled_features = {
@@ -173,11 +152,12 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   if (options.validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
 
   // Pick the device: the first usable one whose name contains options.device if that is set;
-  // otherwise lavapipe (a CPU device: the same pixels on every machine), else the first usable one.
+  // otherwise lavapipe, else another CPU device (the same pixels on every machine; SwiftShader is
+  // one), else the first usable one.
   const std::vector<vk::raii::PhysicalDevice> devices = instance_.enumeratePhysicalDevices();
   const vk::raii::PhysicalDevice* chosen = nullptr;
   std::uint32_t chosen_family = 0;
-  int chosen_score = 0;  // 0: not usable or not asked for, 1: usable, 2: what we look for
+  int chosen_score = 0;  // 0: not usable or not asked for, 1: usable, 3: what we look for
   for (const vk::raii::PhysicalDevice& device : devices) {
     const std::optional<std::uint32_t> family = UsableQueueFamily(device);
     if (!family) continue;
@@ -185,11 +165,10 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
     const std::string_view name = properties.deviceName.data();
     int score = 0;
     if (!options.device.empty()) {
-      score = ContainsIgnoringCase(name, options.device) ? 2 : 0;
+      score = ContainsIgnoringCase(name, options.device) ? 3 : 0;
     } else {
-      const bool lavapipe = properties.deviceType == vk::PhysicalDeviceType::eCpu ||
-                            ContainsIgnoringCase(name, "llvmpipe");
-      score = lavapipe ? 2 : 1;
+      const bool cpu = properties.deviceType == vk::PhysicalDeviceType::eCpu;
+      score = ContainsIgnoringCase(name, "llvmpipe") ? 3 : cpu ? 2 : 1;
     }
     if (score > chosen_score) {
       chosen = &device;

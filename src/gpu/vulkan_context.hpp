@@ -12,6 +12,10 @@
 
 namespace twinraster::gpu {
 
+// What a renderer on `device` reports of it (`properties` is its getProperties()). Defined in
+// device_list.cpp, which lists devices by it too.
+DeviceIdentity Identify(const vk::raii::PhysicalDevice& device, const vk::PhysicalDeviceProperties& properties);
+
 class VulkanContext {
  public:
   explicit VulkanContext(const GpuOptions& options);  // throws GpuUnavailable

@@ -2,9 +2,13 @@
 
 #include <libdeflate.h>
 
+#include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -53,19 +57,58 @@ std::vector<std::uint8_t> FilteredScanlines(const Image& image) {
   return raw;
 }
 
+constexpr char kSignature[] = "\x89PNG\r\n\x1a\n";
+constexpr std::size_t kMaxNotes = 64;
+constexpr std::size_t kMaxKey = 79;
+constexpr std::size_t kMaxValue = 1024;
+constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;  // PNG spec, 5.3
+
+// A tEXt keyword (PNG spec, 11.3.4.3): Latin-1 printable characters, spaces single and inside.
+bool IsValidKeyword(std::string_view key) {
+  if (key.empty() || key.size() > kMaxKey || key.front() == ' ' || key.back() == ' ') return false;
+  if (key.find("  ") != std::string_view::npos) return false;
+  return std::all_of(key.begin(), key.end(), [](char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return (b >= 0x20 && b <= 0x7e) || b >= 0xa1;
+  });
+}
+
+bool HasControlCharacter(std::string_view text) {
+  return std::any_of(text.begin(), text.end(), [](char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return b < 0x20 || b == 0x7f;
+  });
+}
+
+// All the notes' tEXt chunks, checked before any pixel work is done.
+std::string TextChunks(const PngNotes& notes) {
+  std::string chunks;
+  for (const auto& [key, value] : notes) {
+    if (!IsValidKeyword(key)) {
+      throw std::invalid_argument("PNG note key \"" + key + "\" is not 1-" + std::to_string(kMaxKey) +
+                                  " printable Latin-1 characters without leading, trailing or double spaces");
+    }
+    if (value.find('\0') != std::string::npos) throw std::invalid_argument("PNG note \"" + key + "\" has a NUL in its value");
+    const std::string data = key + '\0' + value;
+    AppendChunk(chunks, "tEXt", reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
+  }
+  return chunks;
+}
+
 struct CompressorDeleter {
   void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
 }  // namespace
 
-std::string EncodePng(const Image& image, int level) {
+std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   if (level < 0 || level > kPngSmallest) {
     throw std::invalid_argument("PNG level " + std::to_string(level) + " is outside 0.." + std::to_string(kPngSmallest));
   }
   if (image.width == 0 || image.height == 0 || image.rgba.size() != std::size_t{image.width} * image.height * 4) {
     throw std::invalid_argument("cannot encode an empty or malformed image as PNG");
   }
+  const std::string text_chunks = TextChunks(notes);
   const std::vector<std::uint8_t> raw = FilteredScanlines(image);
   const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
   if (!compressor) throw std::bad_alloc();
@@ -73,8 +116,8 @@ std::string EncodePng(const Image& image, int level) {
   const std::size_t zlib_size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
   if (zlib_size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
 
-  std::string png("\x89PNG\r\n\x1a\n", 8);
-  png.reserve(8 + 25 + 12 + zlib_size + 12);
+  std::string png(kSignature, 8);
+  png.reserve(8 + 25 + text_chunks.size() + 12 + zlib_size + 12);
   std::uint8_t header[13] = {};
   for (int i = 0; i < 4; ++i) {
     header[i] = static_cast<std::uint8_t>(image.width >> (24 - 8 * i));
@@ -86,16 +129,19 @@ std::string EncodePng(const Image& image, int level) {
   header[11] = 0;  // filtering: adaptive (per-row filter bytes)
   header[12] = 0;  // no interlace
   AppendChunk(png, "IHDR", header, sizeof header);
+  png += text_chunks;
   AppendChunk(png, "IDAT", zlib.data(), zlib_size);
   AppendChunk(png, "IEND", nullptr, 0);
   return png;
 }
 
-StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level) {
-  return StagedFile(file, EncodePng(image, level));
+StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level, const PngNotes& notes) {
+  return StagedFile(file, EncodePng(image, level, notes));
 }
 
-void WritePng(const std::filesystem::path& file, const Image& image, int level) { StagePng(file, image, level).Commit(); }
+void WritePng(const std::filesystem::path& file, const Image& image, int level, const PngNotes& notes) {
+  StagePng(file, image, level, notes).Commit();
+}
 
 Image ReadPng(const std::filesystem::path& file) {
   int width = 0, height = 0, channels = 0;
@@ -105,6 +151,78 @@ Image ReadPng(const std::filesystem::path& file) {
   std::memcpy(image.rgba.data(), pixels, image.rgba.size());
   stbi_image_free(pixels);
   return image;
+}
+
+namespace {
+
+struct ChunkHeader {
+  std::uint32_t length = 0;
+  std::string type;
+};
+
+std::uint32_t BigEndian(const char* bytes) {
+  std::uint32_t value = 0;
+  for (int i = 0; i < 4; ++i) value = value << 8 | static_cast<unsigned char>(bytes[i]);
+  return value;
+}
+
+bool ReadBytes(std::istream& in, char* data, std::size_t size) {
+  in.read(data, static_cast<std::streamsize>(size));
+  return static_cast<std::size_t>(in.gcount()) == size;
+}
+
+// The bytes after the signature, or 0 if `in` is not a PNG; sizing the file first lets every
+// chunk length be checked before anything is read or allocated for it.
+std::uint64_t BytesAfterSignature(std::istream& in) {
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0);
+  char signature[8];
+  if (size < 8 || !ReadBytes(in, signature, 8) || std::memcmp(signature, kSignature, 8) != 0) return 0;
+  return static_cast<std::uint64_t>(size) - 8;
+}
+
+// The next chunk's header, if its data and CRC lie within the `left` bytes of the file.
+std::optional<ChunkHeader> NextChunk(std::istream& in, std::uint64_t& left) {
+  char header[8];
+  if (left < 8 || !ReadBytes(in, header, 8)) return std::nullopt;
+  const ChunkHeader chunk{BigEndian(header), std::string(header + 4, 4)};
+  if (chunk.length > kMaxChunkLength || std::uint64_t{chunk.length} + 4 > left - 8) return std::nullopt;
+  left -= 8 + std::uint64_t{chunk.length} + 4;
+  return chunk;
+}
+
+// The note in a tEXt chunk's data and CRC, if the CRC is right and the note passes the rules.
+std::optional<std::pair<std::string, std::string>> ReadNote(std::istream& in, std::uint32_t length) {
+  std::string data(std::size_t{length} + 4, '\0');
+  if (!ReadBytes(in, data.data(), data.size())) return std::nullopt;
+  const std::uint32_t crc = libdeflate_crc32(libdeflate_crc32(0, "tEXt", 4), data.data(), length);
+  if (crc != BigEndian(data.data() + length)) return std::nullopt;
+  data.resize(length);
+  const std::size_t nul = data.find('\0');
+  if (nul == std::string::npos) return std::nullopt;
+  std::string key = data.substr(0, nul), value = data.substr(nul + 1);
+  if (!IsValidKeyword(key) || value.size() > kMaxValue || HasControlCharacter(value)) return std::nullopt;
+  return std::pair{std::move(key), std::move(value)};
+}
+
+}  // namespace
+
+PngNotes ReadPngNotes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::uint64_t left = BytesAfterSignature(in);
+  PngNotes notes;
+  while (notes.size() < kMaxNotes) {
+    const std::optional<ChunkHeader> chunk = NextChunk(in, left);
+    if (!chunk || chunk->type == "IDAT" || chunk->type == "IEND") break;
+    // A tEXt chunk too long for a kept note is skipped unread, so a hostile one costs no memory.
+    if (chunk->type == "tEXt" && chunk->length <= kMaxKey + 1 + kMaxValue) {
+      if (auto note = ReadNote(in, chunk->length)) notes.push_back(std::move(*note));
+    } else {
+      in.seekg(std::streamoff{chunk->length} + 4, std::ios::cur);
+    }
+  }
+  return notes;
 }
 
 }  // namespace twinraster

@@ -1,6 +1,7 @@
-// PNG files in and out: written by a small encoder over libdeflate (fast enough for a 1920x1080
-// frame in a few tens of milliseconds), read by stb_image. Outputs are staged (staged_file.hpp),
-// so a failed run never leaves a truncated PNG or destroys an earlier one.
+// PNG files in and out, with optional text notes: written by a small encoder over libdeflate (fast
+// enough for a 1920x1080 frame in a few tens of milliseconds), read by stb_image, notes read by a
+// chunk walker of our own. Outputs are staged (staged_file.hpp), so a failed run never leaves a
+// truncated PNG or destroys an earlier one.
 #pragma once
 
 #include "image/image.hpp"
@@ -8,6 +9,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace twinraster {
 
@@ -16,9 +19,22 @@ namespace twinraster {
 inline constexpr int kPngFastest = 1;
 inline constexpr int kPngSmallest = 12;
 
-std::string EncodePng(const Image& image, int level = kPngFastest);  // the bytes of a PNG file
-StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest);
-void WritePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest);  // staged and committed at once
-Image ReadPng(const std::filesystem::path& file);  // converted to RGBA; throws FileError
+// Text notes as (key, value) pairs, in file order, each one a tEXt chunk between IHDR and IDAT:
+// e.g. how the device that rendered the image rasterizes, for `verify` to read back. A key is a PNG
+// keyword: 1-79 printable Latin-1 characters, without leading, trailing or double spaces. A value
+// is Latin-1 text without NUL; the reader keeps only values of at most 1024 bytes without control
+// characters. Writing an invalid note throws std::invalid_argument.
+using PngNotes = std::vector<std::pair<std::string, std::string>>;
+
+std::string EncodePng(const Image& image, int level = kPngFastest, const PngNotes& notes = {});  // the bytes of a PNG file
+StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,
+                    const PngNotes& notes = {});
+void WritePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,
+              const PngNotes& notes = {});  // staged and committed at once
+Image ReadPng(const std::filesystem::path& file);  // converted to RGBA, notes ignored; throws FileError
+// The first 64 notes before the pixels whose chunk CRC is right and that pass the rules above;
+// the rest are dropped. Never throws on a file's contents: a file that cannot be opened or is not
+// a PNG has no notes (ReadPng reports that), and a malformed or cut-off chunk ends the walk.
+PngNotes ReadPngNotes(const std::filesystem::path& file);
 
 }  // namespace twinraster

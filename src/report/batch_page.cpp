@@ -65,6 +65,7 @@ BatchSummary Summarize(const std::vector<RenderRecord>& records, double total_ms
       case Verdict::kError: ++s.errors; break;
       case Verdict::kCrashed: ++s.crashed; break;
       case Verdict::kDiffering: ++s.differing; break;
+      case Verdict::kInconclusive: ++s.inconclusive; break;
       case Verdict::kVerified: ++s.verified; break;
       case Verdict::kIdentical: ++s.identical; break;
       case Verdict::kRendered: ++s.rendered; break;
@@ -98,7 +99,8 @@ std::string BatchPageHtml(const std::vector<RenderRecord>& records, const std::f
   page << PageStart("twinraster render: " + std::to_string(s.scenes) + " scenes") << "<h1>twinraster render</h1>\n";
   page << "<table class=\"summary\" id=\"summary\"><tr>";
   const std::pair<const char*, std::size_t> counts[] = {{"scenes", s.scenes},       {"identical", s.identical},
-                                                        {"verified", s.verified},   {"differing", s.differing},
+                                                        {"verified", s.verified},   {"inconclusive", s.inconclusive},
+                                                        {"differing", s.differing},
                                                         {"crashed", s.crashed},     {"errors", s.errors},
                                                         {"drawn only", s.rendered}};
   for (const auto& [name, count] : counts) page << "<th class=\"n\">" << name << "</th>";
@@ -106,7 +108,8 @@ std::string BatchPageHtml(const std::vector<RenderRecord>& records, const std::f
   for (const auto& [name, count] : counts) page << "<td class=\"n\" data-count=\"" << name << "\">" << count << "</td>";
   page << "<td class=\"n\" data-count=\"seconds\">" << Number(total_ms / 1000, 4) << " s</td></tr></table>\n";
   page << "<p>identical: the GPU's and the twin's images agree bit for bit. verified: they differ (or one image "
-          "was judged) and every pixel is one Vulkan allows. differing: a pixel the verifier rejects, or a difference "
+          "was judged) and every pixel is one Vulkan allows. inconclusive: no pixel is wrong, but too few are certain "
+          "to tell a broken image (docs/verify.md). differing: a pixel the verifier rejects, or a difference "
           "where the twin copies this driver exactly. Thumbnails link to the full PNGs.</p>\n";
   page << "<table id=\"scenes\">\n<thead><tr><th>scene</th><th>GPU</th><th>twin</th><th>difference</th><th>verification "
           "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device, rules "

@@ -14,7 +14,7 @@
 namespace twinraster::report {
 
 struct BatchSummary {
-  std::size_t scenes = 0, identical = 0, verified = 0, differing = 0, crashed = 0, errors = 0, rendered = 0;
+  std::size_t scenes = 0, identical = 0, verified = 0, inconclusive = 0, differing = 0, crashed = 0, errors = 0, rendered = 0;
   double total_ms = 0;  // the whole batch, wall clock
 };
 BatchSummary Summarize(const std::vector<RenderRecord>& records, double total_ms);

@@ -14,7 +14,7 @@ namespace twinraster {
 
 // Each --json output's "format"; any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/).
-inline constexpr const char* kRenderJsonFormat = "twinraster.render/3";
+inline constexpr const char* kRenderJsonFormat = "twinraster.render/4";
 inline constexpr const char* kCompareJsonFormat = "twinraster.compare/1";
 
 struct NamedImage {

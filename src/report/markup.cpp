@@ -65,6 +65,7 @@ std::string PageStart(std::string_view title) {
          ".none{color:#999}td.name{max-width:16em;overflow-wrap:anywhere}.path{font-size:11px;color:#666}td.details{font-size:12px;max-width:26em;color:#444}\n"
          "td.reason{max-width:24em}\n"
          ".verdict-identical{color:#17692b}.verdict-verified{color:#1a5a96}.verdict-rendered{color:#444}\n"
+         ".verdict-inconclusive{color:#8a5a00;font-style:italic}\n"
          ".verdict-differing,.verdict-crashed,.verdict-error{color:#b00020;font-weight:bold}\n"
          ".summary td{font-size:1.1em}code,pre{font:12px/1.35 ui-monospace,monospace}\n"
          "pre{background:#f7f7f7;padding:6px 8px;margin:4px 0;overflow-x:auto}\n"

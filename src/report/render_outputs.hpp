@@ -13,7 +13,7 @@ namespace twinraster::report {
 // given, so the verification's own line is printed too.
 std::string RenderText(const RenderRecord& record, bool verify_asked);
 
-// The twinraster.render/3 object (docs/json-output.md).
+// The twinraster.render/4 object (docs/json-output.md).
 nlohmann::ordered_json RenderJson(const RenderRecord& record);
 
 }  // namespace twinraster::report

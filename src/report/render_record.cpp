@@ -16,12 +16,15 @@ Verdict VerdictOf(const RenderRecord& r) {
   for (const BackendRecord& b : r.backends) {
     if (!b.Drawn()) return Verdict::kCrashed;
   }
-  if (r.verification && !r.verification->Passed()) return Verdict::kDiffering;
+  if (r.verification && !r.verification->NoViolations()) return Verdict::kDiffering;
   const bool differ = r.comparison && !r.comparison->Equal();
   if (differ && r.TwinPromised()) return Verdict::kDiffering;
-  if (differ) return r.verification ? Verdict::kVerified : Verdict::kDiffering;
+  const auto judged = [&] {
+    return r.verification->Verdict() == verify::Judgement::kPassed ? Verdict::kVerified : Verdict::kInconclusive;
+  };
+  if (differ) return r.verification ? judged() : Verdict::kDiffering;
   if (r.comparison) return Verdict::kIdentical;
-  return r.verification ? Verdict::kVerified : Verdict::kRendered;
+  return r.verification ? judged() : Verdict::kRendered;
 }
 
 const char* VerdictName(Verdict verdict) {
@@ -29,6 +32,7 @@ const char* VerdictName(Verdict verdict) {
     case Verdict::kError: return "error";
     case Verdict::kCrashed: return "crashed";
     case Verdict::kDiffering: return "differing";
+    case Verdict::kInconclusive: return "inconclusive";
     case Verdict::kVerified: return "verified";
     case Verdict::kIdentical: return "identical";
     case Verdict::kRendered: return "rendered";
@@ -50,6 +54,7 @@ std::string VerdictReason(const RenderRecord& r) {
       }
       return "crashed";
     case Verdict::kDiffering:
+    case Verdict::kInconclusive:
     case Verdict::kVerified:
       if (r.comparison && !r.comparison->Equal() && r.verification) {
         return DifferenceVerdict(r.comparison->differing_pixels, *r.verification);

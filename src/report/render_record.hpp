@@ -62,6 +62,7 @@ enum class Verdict {
   kError,      // bad input, or an output that could not be written
   kCrashed,    // the Vulkan driver crashed or timed out
   kDiffering,  // the images differ where the twin promised they would not, or the verifier found a violation
+  kInconclusive,  // the images differ, or one was judged, and the verifier could not tell (neither pass nor fail)
   kVerified,   // the images differ, or one was judged, and the verifier passed it
   kIdentical,  // gpu and cpu agree bit for bit
   kRendered,   // one backend drew, nothing was compared or judged

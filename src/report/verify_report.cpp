@@ -21,11 +21,19 @@ nlohmann::ordered_json ViolationJson(const std::optional<verify::Violation>& v) 
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,
                                         double verify_ms) {
   using Json = nlohmann::ordered_json;
-  return {{"passed", v.Passed()},
-          {"subpixel_bits", v.subpixel_bits},
+  return {{"verdict", verify::JudgementName(v.Verdict())},
+          {"passed", v.Verdict() == verify::Judgement::kPassed},
+          {"subpixel_bits", v.options.subpixel_bits},
+          {"strict_lines", v.options.strict_lines},
           {"width", v.width},
           {"height", v.height},
-          {"pixels", {{"certain", v.certain}, {"uncertain", v.uncertain}, {"violations", v.violations}, {"covered", v.covered}}},
+          {"pixels",
+           {{"certain", v.certain},
+            {"uncertain", v.uncertain},
+            {"uncertain_shared_edges", v.uncertain_shared_edges},
+            {"violations", v.violations},
+            {"covered", v.covered},
+            {"background_excluded", v.background_excluded}}},
           {"uncertain_fraction", v.UncertainFraction()},
           {"worst", ViolationJson(v.worst)},
           {"first", ViolationJson(v.first)},
@@ -35,9 +43,10 @@ nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std
 
 std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Verification& v) {
   std::ostringstream s;
-  if (v.Passed()) {
+  if (v.NoViolations()) {
     s << "the images differ in " << differing_pixels << " px, all within what Vulkan allows (" << v.uncertain
-      << " px uncertain, subpixel bits " << v.subpixel_bits << ")";
+      << " px uncertain, subpixel bits " << v.options.subpixel_bits << ")";
+    if (v.Verdict() == verify::Judgement::kInconclusive) s << ", but the judgement is inconclusive";
   } else {
     s << v.violations << " px " << (v.violations == 1 ? "is" : "are") << " not allowed: first at (" << v.first->x << ", "
       << v.first->y << "), worst at (" << v.worst->x << ", " << v.worst->y << ") "

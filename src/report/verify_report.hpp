@@ -1,4 +1,4 @@
-// How `verify` and `render --verify` report a verification, as JSON (twinraster.verify/1) or as
+// How `verify` and `render --verify` report a verification, as JSON (twinraster.verify/2) or as
 // the sentence render prints about a GPU image that differs from the twin's.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace twinraster {
 
-inline constexpr const char* kVerifyJsonFormat = "twinraster.verify/1";
+inline constexpr const char* kVerifyJsonFormat = "twinraster.verify/2";
 
 // The verdict and counts, without file names: render nests it, verify adds its files around it.
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,

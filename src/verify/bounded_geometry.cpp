@@ -114,13 +114,14 @@ WindowVertex MapToWindow(const BoundedVertex& v, std::uint32_t width, std::uint3
 }
 
 WindowPolygon ClipToWindow(const BoundedVertex& a, const BoundedVertex& b, const BoundedVertex& c, std::uint32_t width,
-                           std::uint32_t height, int subpixel_bits) {
+                           std::uint32_t height, int subpixel_bits, ClipVolume volume) {
   WindowPolygon window;
   if (!IsFinite(a.clip) || !IsFinite(b.clip) || !IsFinite(c.clip)) return window;
   ClipPolygon polygon;
   polygon.v[0] = a, polygon.v[1] = b, polygon.v[2] = c;
   polygon.size = 3;
-  for (int plane = 0; plane < truth::kClipPlaneCount && polygon.size > 0; ++plane) {
+  const int first_plane = volume == ClipVolume::kView ? 0 : 4;  // planes 4 and 5 bound z
+  for (int plane = first_plane; plane < truth::kClipPlaneCount && polygon.size > 0; ++plane) {
     polygon = ClipAgainst(polygon, plane);
   }
   for (std::size_t i = 0; i < polygon.size; ++i) {

@@ -42,8 +42,8 @@ struct WindowVertex {
   double w = 1;  // clip w, for perspective-correct colour
 };
 
-// A triangle clipped to the view volume (at most 9 vertices, a convex fan), in the framebuffer.
-// edge_from_clipping[i] is true for the edge v[i] -> v[i + 1] made by clipping (it lies on a plane).
+// A triangle clipped (at most 9 vertices, a convex fan), in the framebuffer. edge_from_clipping[i]
+// is true for the edge v[i] -> v[i + 1] made by clipping (it lies on a plane).
 struct WindowPolygon {
   std::array<WindowVertex, 9> v;
   std::array<bool, 9> edge_from_clipping{};
@@ -54,10 +54,16 @@ struct WindowPolygon {
 WindowVertex MapToWindow(const BoundedVertex& v, std::uint32_t width, std::uint32_t height, int subpixel_bits);
 bool InsideViewVolume(const BoundedVertex& v);  // no clip plane cuts it off (finite too)
 
-// Clips (a, b, c) by -w <= x, y <= w, 0 <= z <= w as the truth does, widening each new vertex's
-// bound by the float arithmetic of finding it, then maps every vertex to the W x H framebuffer.
-// An empty polygon: nothing inside, or not finite.
+// Which planes ClipToWindow cuts by. kView: -w <= x, y <= w, 0 <= z <= w, as the truth does.
+// kDepth: 0 <= z <= w only, for lines: an implementation may clip a line at the viewport, at a
+// guard band or not at all (Primitive Clipping: a line "may be clipped"), so a wireframe edge is
+// kept whole across the canvas's border and the border is only where its pixels end.
+enum class ClipVolume { kView, kDepth };
+
+// Clips (a, b, c) by `volume`'s planes, widening each new vertex's bound by the float arithmetic
+// of finding it, then maps every vertex to the W x H framebuffer. An empty polygon: nothing
+// inside, or not finite.
 WindowPolygon ClipToWindow(const BoundedVertex& a, const BoundedVertex& b, const BoundedVertex& c, std::uint32_t width,
-                           std::uint32_t height, int subpixel_bits);
+                           std::uint32_t height, int subpixel_bits, ClipVolume volume = ClipVolume::kView);
 
 }  // namespace twinraster::verify

@@ -206,9 +206,39 @@ ColourRange TriangleShape::Colour(glm::dvec2 p, Rgb8 flat) const {
           {ToUnorm(hi.x, true), ToUnorm(hi.y, true), ToUnorm(hi.z, true)}};
 }
 
-LineShape::LineShape(const WindowVertex& a, const WindowVertex& b, bool from_clipping)
-    : a_(a), b_(b), from_clipping_(from_clipping) {
-  radius_ = std::sqrt(2.0) * std::max(a.xy_error, b.xy_error);
+namespace {
+
+// The part of a -> b inside [0, W] x [0, H], as fractions {from, to}; from > to when none is.
+std::array<double, 2> InsideCanvas(glm::dvec2 a, glm::dvec2 b, std::uint32_t width, std::uint32_t height) {
+  double from = 0, to = 1;
+  const glm::dvec2 d = b - a;
+  const auto keep = [&](double start, double delta, double limit) {  // start + t delta <= limit
+    if (delta == 0) {
+      if (start > limit) from = 2, to = -1;
+      return;
+    }
+    const double t = (limit - start) / delta;
+    if (delta > 0) to = std::min(to, t);
+    else from = std::max(from, t);
+  };
+  keep(a.x, d.x, double(width)), keep(-a.x, -d.x, 0.0), keep(a.y, d.y, double(height)), keep(-a.y, -d.y, 0.0);
+  return {from, to};
+}
+
+}  // namespace
+
+LineShape::LineShape(const WindowVertex& a, const WindowVertex& b, bool from_clipping, LineRules rules,
+                     std::uint32_t width, std::uint32_t height)
+    : a_(a), b_(b), from_clipping_(from_clipping), rules_(rules) {
+  // Each endpoint may move by its own error; a strict line's corners are then offset from it and
+  // rounded to the subpixel grid again, which may move them as much once more.
+  const double corners = rules == LineRules::kStrict ? 2.0 : 1.0;
+  radius_a_ = corners * std::sqrt(2.0) * a.xy_error;
+  radius_b_ = corners * std::sqrt(2.0) * b.xy_error;
+  radius_ = std::max(radius_a_, radius_b_);
+  length_ = glm::length(b.xy - a.xy);
+  if (length_ > 0) direction_ = (b.xy - a.xy) / length_;
+  canvas_ = InsideCanvas(a.xy, b.xy, width, height);
   const glm::dvec2 d = glm::abs(b.xy - a.xy);
   major_ = d.x >= d.y ? 0 : 1;
   const double along = major_ == 0 ? d.x : d.y, across = major_ == 0 ? d.y : d.x;
@@ -228,6 +258,32 @@ PixelBox LineShape::Box(std::uint32_t width, std::uint32_t height) const {
 
 Coverage LineShape::Covers(glm::dvec2 p) const {
   if (!std::isfinite(radius_)) return Coverage::kMaybe;
+  return rules_ == LineRules::kStrict ? CoversStrict(p) : CoversNotStrict(p);
+}
+
+// The rectangle: certain more than the endpoints' movement inside its long sides and inside its
+// square ends, where the ends are the endpoints or the canvas's border (a line may be clipped there,
+// or at a guard band, or not at all).
+Coverage LineShape::CoversStrict(glm::dvec2 p) const {
+  if (SegmentDistance(p, a_.xy, b_.xy) > 0.5 + radius_) return Coverage::kOut;
+  if (from_clipping_ || !(length_ > 0)) return Coverage::kMaybe;
+  const glm::dvec2 ap = p - a_.xy;
+  const double s = glm::dot(ap, direction_), across = std::abs(Cross(direction_, ap));
+  const double t = std::clamp(s / length_, 0.0, 1.0);
+  // The moved segment passes within this of the point of the segment beside p.
+  if (across >= 0.5 - ((1 - t) * radius_a_ + t * radius_b_)) return Coverage::kMaybe;
+  // Along the moved segment, p's place shifts by the endpoints' movement and by the turn of the
+  // segment (at most their sum over its length) times how far p lies from it.
+  const double turn = (radius_a_ + radius_b_) / length_;
+  const double along = 2 * radius_ + 0.5 * turn + 0.5 * turn * turn * length_;
+  if (s <= canvas_[0] * length_ + along || s >= canvas_[1] * length_ - along) return Coverage::kMaybe;
+  return Coverage::kIn;
+}
+
+// A Bresenham, parallelogram or rectangle rasterization may each be used: only centres within half
+// a pixel of the segment along the minor axis, more than a pixel from its ends (or the canvas's
+// border), are certain.
+Coverage LineShape::CoversNotStrict(glm::dvec2 p) const {
   const int minor = 1 - major_;
   const double a_major = a_.xy[major_], b_major = b_.xy[major_];
   const double low = std::min(a_major, b_major), high = std::max(a_major, b_major);
@@ -240,9 +296,10 @@ Coverage LineShape::Covers(glm::dvec2 p) const {
   }
   const double t = high > low ? (p[major_] - a_major) / (b_major - a_major) : 0.0;
   const double across = std::abs(p[minor] - (a_.xy[minor] + t * (b_.xy[minor] - a_.xy[minor])));
-  if (!from_clipping_ && across < 0.5 - r * (1 + slope_) && p[major_] > low + 1 + r && p[major_] < high - 1 - r) {
-    return Coverage::kIn;
-  }
+  const double c0 = a_major + canvas_[0] * (b_major - a_major), c1 = a_major + canvas_[1] * (b_major - a_major);
+  const bool inside_ends = canvas_[0] <= canvas_[1] && p[major_] > std::min(c0, c1) + 1 + r &&
+                           p[major_] < std::max(c0, c1) - 1 - r;
+  if (!from_clipping_ && inside_ends && across < 0.5 - r * (1 + slope_)) return Coverage::kIn;
   // A strict line is a rectangle one pixel wide: up to sqrt(1 + slope^2) / 2 along the minor axis.
   return across <= 0.5 * std::sqrt(1 + slope_ * slope_) + r * (1 + slope_) ? Coverage::kMaybe : Coverage::kOut;
 }
@@ -365,13 +422,16 @@ bool FrameJudge::MayShow(int x, int y, std::array<double, 2> depth) const {
   return near_gap > 0 && near_gap >= gap_[Index(x, y)];
 }
 
-void FrameJudge::Offer(int x, int y, const ColourRange& colours) {
+void FrameJudge::Offer(int x, int y, const ColourRange& colours, bool certain_line) {
   State& s = state_[Index(x, y)];
   const auto gap = [](std::uint8_t g, std::uint8_t hi) { return std::max<std::uint8_t>(g, std::uint8_t(255 - hi)); };
   s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g), std::max(s.max_lo.b, colours.lo.b)};
   s.hi_gap = {gap(s.hi_gap.r, colours.hi.r), gap(s.hi_gap.g, colours.hi.g), gap(s.hi_gap.b, colours.hi.b)};
   s.offers = std::uint8_t(std::min(2, s.offers + 1));
   s.closeness = std::max<std::uint8_t>(s.closeness, std::uint8_t(255 - colours.Distance(ImageColour(x, y))));
+  s.background_closeness =
+      std::max<std::uint8_t>(s.background_closeness, std::uint8_t(255 - colours.Distance(background_)));
+  if (!certain_line) s.not_certain_line = 1;
 }
 
 void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
@@ -384,6 +444,7 @@ void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
       if (gap_[i] == 0) Offer(x, y, ColourRange::Exactly(background_));
       const bool disjoint = s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
       const int distance = 255 - s.closeness;
+      if (s.background_closeness < 255) ++v.background_excluded;
       const PixelClass c = distance > 0 ? PixelClass::kViolation : disjoint ? PixelClass::kUncertain : PixelClass::kCertain;
       pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
       if (c == PixelClass::kViolation) {
@@ -393,6 +454,7 @@ void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
         if (distance > worst_distance) worst_distance = distance, v.worst = found;
       } else if (c == PixelClass::kUncertain) {
         ++v.uncertain;
+        if (gap_[i] != 0 && !s.not_certain_line) ++v.uncertain_shared_edges;
       } else {
         ++v.certain;
       }

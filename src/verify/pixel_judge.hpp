@@ -61,12 +61,19 @@ class TriangleShape {
   double depth_error_ = 0, depth_relative_ = 0;
 };
 
-// One edge of a polygon drawn as a 1-pixel line (polygonMode LINE): a Bresenham, parallelogram or
-// rectangle rasterization may each be used (strictLines false), so only centres near the segment's
-// middle within half a pixel of it along the minor axis are certain.
+// How the device draws 1-pixel lines (polygonMode LINE; twinraster sets no line rasterization
+// state, so the device's default mode). Strict: the rectangle of Basic Line Segment Rasterization,
+// half a pixel either side of the segment and ending square at its endpoints. Not strict: that
+// rectangle, the non-strict parallelogram or a Bresenham rasterization, whichever the device uses.
+enum class LineRules { kNotStrict, kStrict };
+
+// One edge of a polygon drawn as a 1-pixel line. `a` and `b` are the edge clipped by depth only
+// (ClipVolume::kDepth): the part inside the canvas, [canvas_from, canvas_to] as fractions of a -> b,
+// is where a pixel may be certain; beyond the canvas the edge may be clipped anywhere or not at all.
 class LineShape {
  public:
-  LineShape(const WindowVertex& a, const WindowVertex& b, bool from_clipping);
+  LineShape(const WindowVertex& a, const WindowVertex& b, bool from_clipping, LineRules rules, std::uint32_t width,
+            std::uint32_t height);
   PixelBox Box(std::uint32_t width, std::uint32_t height) const;
   Coverage Covers(glm::dvec2 p) const;
   std::array<double, 2> Depth(glm::dvec2 p) const;
@@ -74,9 +81,17 @@ class LineShape {
   std::array<double, 2> DepthRange() const;
 
  private:
+  Coverage CoversStrict(glm::dvec2 p) const;
+  Coverage CoversNotStrict(glm::dvec2 p) const;
+
   WindowVertex a_, b_;
   bool from_clipping_ = false;
-  double radius_ = 0;
+  LineRules rules_ = LineRules::kNotStrict;
+  double radius_ = 0;              // how far either endpoint may move (Euclidean)
+  double radius_a_ = 0, radius_b_ = 0;
+  double length_ = 0;
+  glm::dvec2 direction_{1, 0};     // unit, a -> b
+  std::array<double, 2> canvas_{0, 0};  // the part inside the canvas, as fractions of a -> b
   int major_ = 0;  // 0: x-major, 1: y-major
   double slope_ = 0;
   double depth_error_ = 0;
@@ -97,7 +112,8 @@ class FrameJudge {
   void Occlude(int x, int y, std::array<double, 2> depth);
   // Pass 2: whether a surface that may cover (x, y) with this depth may also be what shows there.
   bool MayShow(int x, int y, std::array<double, 2> depth) const;
-  void Offer(int x, int y, const ColourRange& colours);
+  // `certain_line`: a line certain to cover (x, y) offers it (see Verification's shared edges).
+  void Offer(int x, int y, const ColourRange& colours, bool certain_line = false);
   bool BackgroundMayShow(int x, int y) const { return gap_[Index(x, y)] == 0; }
   Rgb8 background() const { return background_; }
 
@@ -134,6 +150,8 @@ class FrameJudge {
     Rgb8 hi_gap{0, 0, 0};       // 255 - the smallest high end
     std::uint8_t offers = 0;    // saturates at 2
     std::uint8_t closeness = 0; // 255 - the image colour's distance from the nearest offer
+    std::uint8_t background_closeness = 0;  // the same for the background's colour
+    std::uint8_t not_certain_line = 0;      // 1: some offer came from other than a certain line
   };
   std::vector<State> state_;
   friend struct FrameBuffers;

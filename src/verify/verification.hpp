@@ -25,26 +25,46 @@ struct Violation {
   std::vector<ColourRange> allowed;  // what each surface (or the background) that may show here allows
 };
 
+// What the verifier concludes about the image as a whole.
+enum class Judgement : std::uint8_t {
+  kPassed,        // no violation, and the certain pixels could have caught a broken image
+  kInconclusive,  // no violation, but too little is certain to tell a correct image from a broken one
+  kFailed,        // some pixel has a colour no conformant implementation may write there
+};
+const char* JudgementName(Judgement judgement);  // "passed", "inconclusive", "failed"
+
+// How the device that drew the image rasterizes, as it reports (limits of VkPhysicalDeviceLimits);
+// the spec's loosest values by default, which judge any device's image but certify less.
 struct VerifyOptions {
-  // subPixelPrecisionBits of the device that drew the image; the spec's minimum by default.
-  int subpixel_bits = 4;
+  int subpixel_bits = 4;      // subPixelPrecisionBits; the spec's minimum is 4
+  bool strict_lines = false;  // strictLines
 };
 
 struct Verification {
   std::uint32_t width = 0, height = 0;
-  int subpixel_bits = 4;
+  VerifyOptions options;
   std::vector<PixelClass> pixels;  // row by row, top first
   std::uint64_t certain = 0, uncertain = 0, violations = 0;
   std::uint64_t covered = 0;  // pixels where some surface may show (the background is not certain)
+  // Uncertain pixels that lines certain to cover them all cover, with depths too close to order:
+  // coinciding edges of different colours, as where a cube's faces meet (wireframes only).
+  std::uint64_t uncertain_shared_edges = 0;
+  // Pixels where the background's colour is not allowed: where an empty image would fail.
+  std::uint64_t background_excluded = 0;
   std::optional<Violation> worst;
   std::optional<Violation> first;  // in row order
 
-  bool Passed() const { return violations == 0; }
+  bool NoViolations() const { return violations == 0; }
+  // Failed on any violation. Inconclusive when an empty image would pass as well, or when the
+  // uncertain pixels, less those of shared edges, are half the covered pixels or more (a broken
+  // image then mostly passes too: docs/verify.md, "Passed, failed or inconclusive").
+  Judgement Verdict() const;
+  std::uint64_t UncertainOther() const { return uncertain - uncertain_shared_edges; }
   double UncertainFraction() const { return covered ? double(uncertain) / double(covered) : 0.0; }
 };
 
-// "passes: 21503 px certain, 97 uncertain (0.45 % of the 21600 covered), 0 violations" or
-// "fails: 12 violations, worst at (x, y): ..."
+// "passes: 21503 px certain, 97 uncertain (0.45 % of the 21600 covered), 0 violations",
+// "inconclusive: ..." or "fails: 12 violations, worst at (x, y): ..."
 std::string VerificationText(const Verification& v);
 // "(12, 40..42, 200)"
 std::string RangeText(const ColourRange& range);

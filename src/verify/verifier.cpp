@@ -97,8 +97,11 @@ struct DrawGeometry {
 // or in wireframe each clipped polygon's edges.
 class Primitives {
  public:
-  Primitives(const Scene& scene, const DrawList& list, int subpixel_bits)
-      : list_(list), subpixel_bits_(subpixel_bits), neighbours_(list.meshes.size()) {
+  Primitives(const Scene& scene, const DrawList& list, const VerifyOptions& options)
+      : list_(list),
+        subpixel_bits_(options.subpixel_bits),
+        line_rules_(options.strict_lines ? LineRules::kStrict : LineRules::kNotStrict),
+        neighbours_(list.meshes.size()) {
     if (list.lighting && !list.wireframe) light_.emplace(scene);
   }
 
@@ -131,17 +134,33 @@ class Primitives {
       if (!corner.empty()) {
         for (std::size_t k = 0; k < 3; ++k) v[k].colour = corner[t][k];
       }
-      const WindowPolygon polygon = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
+      const WindowPolygon polygon = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_,
+                                                 list_.wireframe ? ClipVolume::kDepth : ClipVolume::kView);
       if (list_.wireframe) {
-        for (std::size_t i = 0; i < polygon.size; ++i) {
-          visit(LineShape(polygon.v[i], polygon.v[(i + 1) % polygon.size], polygon.edge_from_clipping[i]),
-                mesh.colours[t], t, false);
+        VisitLines(polygon, mesh.colours[t], t, visit);
+        // An implementation that clips by the whole view volume may also draw the edges that clipping
+        // makes along the canvas's border: they may show, never must.
+        const WindowPolygon view = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
+        for (std::size_t i = 0; i < view.size; ++i) {
+          if (view.edge_from_clipping[i]) {
+            visit(LineShape(view.v[i], view.v[(i + 1) % view.size], true, line_rules_, list_.width, list_.height),
+                  mesh.colours[t], t, false);
+          }
         }
         continue;
       }
       for (std::size_t i = 2; i < polygon.size; ++i) {
         visit(TriangleShape(polygon.v[0], polygon.v[i - 1], polygon.v[i], lit), mesh.colours[t], t, false);
       }
+    }
+  }
+
+  template <class Visit>
+  void VisitLines(const WindowPolygon& polygon, Rgb8 colour, std::size_t t, Visit&& visit) const {
+    for (std::size_t i = 0; i < polygon.size; ++i) {
+      visit(LineShape(polygon.v[i], polygon.v[(i + 1) % polygon.size], polygon.edge_from_clipping[i], line_rules_,
+                      list_.width, list_.height),
+            colour, t, false);
     }
   }
 
@@ -230,6 +249,7 @@ class Primitives {
 
   const DrawList& list_;
   int subpixel_bits_;
+  LineRules line_rules_;
   std::optional<ExactLight> light_;
   std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours_;  // per mesh, when needed
 };
@@ -251,9 +271,9 @@ std::vector<ColourRange> AllowedAt(const Primitives& primitives, FrameJudge& jud
 
 // One band of rows judged whole: both passes, then each pixel's class into `pixels` (the whole
 // frame's; the band writes only its rows) and the band's counts into `counts`.
-void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, int subpixel_bits, int row0, int row1,
-               Verification& counts, std::vector<PixelClass>& pixels) {
-  Primitives primitives(scene, list, subpixel_bits);
+void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0,
+               int row1, Verification& counts, std::vector<PixelClass>& pixels) {
+  Primitives primitives(scene, list, options);
   FrameJudge judge(image, list.background, list.reversed_z, row0, row1);
   const std::uint32_t w = image.width, h = image.height;
   primitives.Occlude(judge);
@@ -261,8 +281,9 @@ void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, int
   primitives.ForEach(true, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
     const PixelBox box = judge.Clip(shape.Box(w, h));
     if (!judge.CouldMatter(box, shape.DepthRange(), true)) return;
-    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage) {
-      if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat));
+    constexpr bool kLine = std::is_same_v<std::decay_t<decltype(shape)>, LineShape>;
+    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+      if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat), kLine && c == Coverage::kIn);
     });
   });
   judge.Finish(counts, pixels);
@@ -276,7 +297,7 @@ void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, int
 Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options) {
   CheckInputs(scene, list, image, options);
   Verification result;
-  result.width = image.width, result.height = image.height, result.subpixel_bits = options.subpixel_bits;
+  result.width = image.width, result.height = image.height, result.options = options;
   result.pixels.resize(std::size_t{image.width} * image.height);
   // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
   // its own pixels, so they share nothing but the read-only inputs and the pixel classes.
@@ -288,13 +309,14 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   for (std::size_t b = 0; b < bands.size(); ++b) {
     const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
     running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
-      JudgeBand(scene, list, image, options.subpixel_bits, row0, row1, bands[b], result.pixels);
+      JudgeBand(scene, list, image, options, row0, row1, bands[b], result.pixels);
     }));
   }
   for (auto& r : running) r.get();  // rethrows a band's exception
   for (const Verification& band : bands) {  // top to bottom: the first violation is the first band's
     result.certain += band.certain, result.uncertain += band.uncertain, result.violations += band.violations;
-    result.covered += band.covered;
+    result.covered += band.covered, result.uncertain_shared_edges += band.uncertain_shared_edges;
+    result.background_excluded += band.background_excluded;
     if (!result.first && band.first) result.first = band.first;
     if (band.worst && (!result.worst || band.worst->distance > result.worst->distance)) result.worst = band.worst;
   }

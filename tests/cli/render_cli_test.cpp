@@ -27,7 +27,7 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["format"] == "twinraster.render/3");
+  REQUIRE(j["format"] == "twinraster.render/4");
   REQUIRE(j["scene"] == kScene);
   REQUIRE(j["width"] == 600);
   REQUIRE(j["height"] == 600);

@@ -111,7 +111,7 @@ def summary_of(driver):
 
 
 def check_failures_first(rows, what):
-    order = ["error", "crashed", "differing", "verified", "identical", "rendered"]
+    order = ["error", "crashed", "differing", "inconclusive", "verified", "identical", "rendered"]
     ranks = [order.index(r["verdict"]) for r in rows]
     check(ranks == sorted(ranks), "%s: rows not in failures-first order: %s" % (what, [r["verdict"] for r in rows]))
 
@@ -123,7 +123,7 @@ def validate_junit(path, source, what):
     return open(path, encoding="utf-8").read()
 
 
-def render_batch(a, scenes, work, env=None, expect=(0, 1, 2, 5), cwd=None):
+def render_batch(a, scenes, work, env=None, expect=(0, 1, 2, 5, 6), cwd=None):
     out, report, junit = os.path.join(work, "out"), os.path.join(work, "report"), os.path.join(work, "junit.xml")
     r = run([a.exe, "render", *scenes, "-o", out, "--report", report, "--junit", junit, "--json", "-q"], env, expect, cwd)
     lines = [json.loads(line) for line in r.stdout.splitlines() if line.strip()]
@@ -160,15 +160,18 @@ def case_batch(a):
             v = j["verify"]
             want = "-" if v is None else str(v["pixels"]["violations"])
             check(row["violations"] == want, "batch: %s violations %s on the page, %s in --json" % (row["scene"], row["violations"], want))
-            expected = "identical" if j["differing_pixels"] == 0 else ("verified" if v and v["passed"] else "differing")
+            expected = "identical" if j["differing_pixels"] == 0 else (v["verdict"].replace("passed", "verified").replace("failed", "differing") if v else "differing")
             check(row["verdict"] == expected, "batch: %s is %s on the page, %s by its --json" % (row["scene"], row["verdict"], expected))
         verified = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["passed"])
         identical = sum(1 for j in lines if j["differing_pixels"] == 0)
+        inconclusive = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["verdict"] == "inconclusive")
+        check(inconclusive >= 1, "batch: no inconclusive judgement (hard/depth-ratio-1e-4 without SSE gives one)")
         check(verified >= 1, "batch: lavapipe without SSE made no difference to judge (the test needs one)")
         s = summary_of(driver)
         check(s.get("scenes") == str(len(scenes)), "batch: summary scenes %s" % s.get("scenes"))
         check(s.get("identical") == str(identical), "batch: summary identical %s, --json says %d" % (s.get("identical"), identical))
         check(s.get("verified") == str(verified), "batch: summary verified %s, --json says %d" % (s.get("verified"), verified))
+        check(s.get("inconclusive") == str(inconclusive), "batch: summary inconclusive %s, --json says %d" % (s.get("inconclusive"), inconclusive))
         check(s.get("errors") == "1", "batch: summary errors %s" % s.get("errors"))
         count = check_images_load(driver, "batch")
         check(count >= 2 * (len(scenes) - 1), "batch: %d images for %d drawn scenes" % (count, len(scenes) - 1))

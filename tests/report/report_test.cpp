@@ -28,6 +28,7 @@ RenderRecord Drawn(const std::string& name, std::uint64_t differing, std::option
   if (verified) {
     r.verification = verify::Verification{};
     r.verification->violations = *verified ? 0 : 2;
+    r.verification->covered = 50, r.verification->certain = 3000, r.verification->background_excluded = 40;
     if (!*verified) r.verification->first = r.verification->worst = verify::Violation{1, 2, {}, 9, {}};
     r.judged = "gpu";
   }

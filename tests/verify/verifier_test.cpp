@@ -46,7 +46,7 @@ TEST_CASE("verify: the twin's image of a square passes, its inside and outside c
           "[verify]") {
   const Case c = Square();
   const verify::Verification v = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 8});
-  CHECK(v.Passed());
+  CHECK(v.NoViolations());
   CHECK(v.violations == 0);
   CHECK(v.certain + v.uncertain == 64u * 48u);
   // The square spans window x 20..44, y 12..36 (48 px per unit of the viewport, z = 4): its edges
@@ -62,7 +62,7 @@ TEST_CASE("verify: a wrong colour inside the square, or a grey pixel outside it,
   Paint(c.image, 30, 20, {0, 0, 255});
   Paint(c.image, 5, 5, {240, 240, 240});
   const verify::Verification v = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 8});
-  CHECK_FALSE(v.Passed());
+  CHECK_FALSE(v.NoViolations());
   CHECK(v.violations == 2);
   REQUIRE(v.first);
   CHECK(v.first->x == 5);
@@ -93,8 +93,8 @@ TEST_CASE("verify: with an edge through pixel centres, both answers are allowed 
   c.image = RenderOnCpu(c.list);
   const verify::Verification sharp = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 4});
   const verify::Verification loose = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 1});
-  CHECK(sharp.Passed());
-  CHECK(loose.Passed());
+  CHECK(sharp.NoViolations());
+  CHECK(loose.NoViolations());
   CHECK(loose.uncertain >= 2u * 24u);  // a column at each side edge
   CHECK(sharp.uncertain < loose.uncertain);
 }

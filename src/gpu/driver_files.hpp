@@ -1,0 +1,40 @@
+// Offers the Vulkan loader the drivers Debian installs outside its search path (Chromium's
+// SwiftShader), so `--device swiftshader` works without VK_ICD_FILENAMES. It loads no driver,
+// picks no device, and never overrides a loader variable the user set.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace twinraster::gpu {
+
+// ICD manifests outside /usr/share/vulkan/icd.d. Debian's chromium-common (a dependency of
+// chromium) installs SwiftShader's here, libvk_swiftshader.so beside it.
+inline constexpr std::array<std::string_view, 1> kExtraDriverFiles = {
+    "/usr/lib/chromium/vk_swiftshader_icd.json",
+};
+
+// For its lifetime, when none of VK_ICD_FILENAMES, VK_DRIVER_FILES, VK_ADD_DRIVER_FILES is in the
+// environment (even empty: the loader then finds no driver at all, and that is the user's call),
+// sets VK_ADD_DRIVER_FILES to the kExtraDriverFiles that exist; unsets it again when destroyed.
+// Scoped, not process-wide: a later default renderer must not load SwiftShader (nor pick it: it
+// is a CPU device too). The loader reads the variable when an instance is created, so hold the
+// offer across vkCreateInstance, and create no instance on another thread meanwhile.
+class ExtraDriverOffer {
+ public:
+  explicit ExtraDriverOffer(bool wanted = true);
+  ~ExtraDriverOffer();
+  ExtraDriverOffer(const ExtraDriverOffer&) = delete;
+  ExtraDriverOffer& operator=(const ExtraDriverOffer&) = delete;
+
+  // The files offered; empty when not wanted, when the user's variables are set, when an outer
+  // offer is active, or when none is installed.
+  const std::vector<std::string>& files() const { return files_; }
+
+ private:
+  std::vector<std::string> files_;
+};
+
+}  // namespace twinraster::gpu

@@ -1,0 +1,131 @@
+// The verdict as a whole: passed, failed or inconclusive; an empty image never passes; lines judged
+// by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
+#include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "scene/obj_scene.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/test_support.hpp"
+#include "verify/verifier.hpp"
+
+#include "support/catch.hpp"
+
+using namespace twinraster;
+
+namespace {
+
+Image Blank(const DrawList& list) {
+  Image image(list.width, list.height);
+  for (std::uint32_t y = 0; y < list.height; ++y) {
+    for (std::uint32_t x = 0; x < list.width; ++x) {
+      std::uint8_t* p = image.pixel(x, y);
+      p[0] = list.background.r, p[1] = list.background.g, p[2] = list.background.b, p[3] = 255;
+    }
+  }
+  return image;
+}
+
+// One triangle, one of whose corners is `z` units in front of the eye (behind it when negative).
+std::string TriangleScene(double z) {
+  return R"({"canvas": {"width": 64, "height": 48, "background": [255, 255, 255]},
+    "viewport": {"width": 1.3333333333333333, "height": 1, "distance": 1}, "depth": {"near": 0.5, "far": 50},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"t": {"vertices": [[0, -1, )" + std::to_string(z) + R"(], [-1, 0.5, 3], [1, 0.5, 3]], "triangles": [[0, 1, 2, "red"]]}},
+    "instances": [{"model": "t"}], "wireframe": true})";
+}
+
+}  // namespace
+
+TEST_CASE("verify: an empty image of a scene that draws something never passes, filled or in wireframe", "[verify]") {
+  int judged = 0, failed = 0;
+  for (const auto& file : test::ShippedScenes()) {
+    for (const bool wireframe : {false, true}) {
+      Scene scene = LoadSceneOrObj(file);
+      scene.wireframe = wireframe;
+      const DrawList list = BuildDrawList(scene);
+      for (const verify::VerifyOptions options : {verify::VerifyOptions{4, false}, verify::VerifyOptions{8, true}}) {
+        const verify::Verification v = verify::VerifyImage(scene, list, Blank(list), options);
+        INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << verify::VerificationText(v));
+        CHECK(v.Verdict() != verify::Judgement::kPassed);
+        failed += v.Verdict() == verify::Judgement::kFailed;
+        ++judged;
+      }
+    }
+  }
+  CHECK(judged == int(test::ShippedScenes().size()) * 4);
+  CHECK(failed >= judged * 9 / 10);  // mostly caught outright; the rest cannot tell
+}
+
+TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, not passed", "[verify]") {
+  // Vertices 1e8 units across through the eye: no edge's place is known to a pixel.
+  const Scene scene = ParseScene(R"({"canvas": {"width": 32, "height": 32, "background": [0, 0, 0]},
+    "viewport": {"width": 1, "height": 1, "distance": 1}, "depth": {"near": 1e-6, "far": 1e9},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"t": {"vertices": [[-1e8, -1e8, 1e-5], [1e8, -1e8, 1e-5], [0, 1e8, 1e8]], "triangles": [[0, 1, 2, "red"]]}},
+    "instances": [{"model": "t"}]})", "huge.json");
+  const DrawList list = BuildDrawList(scene);
+  const verify::Verification drawn = verify::VerifyImage(scene, list, RenderOnCpu(list), {8, true});
+  const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
+  INFO(verify::VerificationText(drawn) << "\n" << verify::VerificationText(empty));
+  CHECK(drawn.NoViolations());
+  CHECK(drawn.Verdict() == verify::Judgement::kInconclusive);
+  CHECK(empty.Verdict() != verify::Judgement::kPassed);
+}
+
+TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's lines pass both", "[verify]") {
+  int sharper = 0, judged = 0;
+  for (const auto& file : test::ShippedScenes()) {
+    Scene scene = LoadSceneOrObj(file);
+    scene.wireframe = true;
+    const DrawList list = BuildDrawList(scene);
+    const Image image = RenderOnCpu(list);
+    const verify::Verification loose = verify::VerifyImage(scene, list, image, {8, false});
+    const verify::Verification strict = verify::VerifyImage(scene, list, image, {8, true});
+    INFO(file.string() << ": " << verify::VerificationText(loose) << "\n" << verify::VerificationText(strict));
+    CHECK(loose.NoViolations());
+    CHECK(strict.NoViolations());
+    CHECK(strict.UncertainOther() <= loose.UncertainOther());
+    sharper += strict.UncertainOther() < loose.UncertainOther();
+    ++judged;
+  }
+  CHECK(judged == int(test::ShippedScenes().size()));
+  CHECK(sharper >= judged / 2);
+}
+
+TEST_CASE("verify: an edge through the eye plane must be drawn where it is in front of the near plane", "[verify]") {
+  // The twin draws the clipped polygon's edges; an image without the two edges that run to the
+  // corner behind the eye breaks Polygon Mode's "the polygon is clipped ... before these modes are
+  // applied" (docs/verify.md: SwiftShader does this).
+  const Scene scene = ParseScene(TriangleScene(-1), "behind.json");
+  const DrawList list = BuildDrawList(scene);
+  const Image drawn = RenderOnCpu(list);
+  Image dropped = Blank(list);
+  for (std::uint32_t x = 0; x < list.width; ++x) {  // keep the one edge in front: row 15, as drawn
+    std::copy_n(drawn.pixel(x, 15), 4, dropped.pixel(x, 15));
+  }
+  const verify::Verification good = verify::VerifyImage(scene, list, drawn, {8, true});
+  const verify::Verification bad = verify::VerifyImage(scene, list, dropped, {8, true});
+  INFO(verify::VerificationText(good) << "\n" << verify::VerificationText(bad));
+  CHECK(good.NoViolations());
+  CHECK(bad.Verdict() == verify::Judgement::kFailed);
+  CHECK(bad.violations >= 20);
+}
+
+TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyond it", "[verify]") {
+  // Nearly horizontal, crossing the top border far from either endpoint: an implementation that
+  // clips at the viewport ends it at the border, one with a guard band (Mesa 25) or none draws on.
+  const Scene scene = ParseScene(R"({"canvas": {"width": 512, "height": 8, "background": [255, 255, 255]},
+    "viewport": {"width": 64, "height": 1, "distance": 1, "projection": "orthographic"},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"t": {"vertices": [[-40, 0.52, 2], [200, 0.44, 2], [-40, -0.4, 2]], "triangles": [[0, 1, 2, "blue"]]}},
+    "instances": [{"model": "t"}], "wireframe": true})", "graze.json");
+  const DrawList list = BuildDrawList(scene);
+  const Image twin = RenderOnCpu(list);
+  CpuOptions guard;
+  guard.rules.wireframe_guard_band = true;
+  const Image guarded = RenderOnCpu(list, guard);
+  for (const Image* image : {&twin, &guarded}) {
+    const verify::Verification v = verify::VerifyImage(scene, list, *image, {8, true});
+    INFO(verify::VerificationText(v));
+    CHECK(v.NoViolations());
+  }
+}
