@@ -68,7 +68,8 @@ int Run(int argc, char** argv) {
   app.set_version_flag("--version", VersionText, "print the version and exit");
   app.footer("Run 'twinraster COMMAND --help' for a command's arguments.\n"
              "Exit codes: 0 done (images identical, or verified), 1 images differ (or violate), 2 bad input or usage,\n"
-             "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out.");
+             "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out,\n"
+             "6 inconclusive (the verifier found no violation but could not tell a broken image).");
   const std::map<std::string, CommandRun> commands = {
       {"explain", AddExplainCommand(app)}, {"render", AddRenderCommand(app)}, {"verify", AddVerifyCommand(app)},
       {"compare", AddCompareCommand(app)}, {"bench", AddBenchCommand(app)},   {"help", AddHelpCommand(app)},
