@@ -118,7 +118,7 @@ void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
         if (created >= kMaxClippedVertices + 1 || count >= kMaxClippedVertices) return;
         ++created;
         next[count] = IntersectEdge(in[i - 1], d_prev, in[i], d, vp);
-        next[count++].edge = d < 0.0f ? false : in[i - 1].edge;
+        next[count++].edge = d < 0.0f ? vp.rules.wireframe_clip_edges : in[i - 1].edge;
       }
       d_prev = d;
     }

@@ -19,6 +19,10 @@ struct RasterRules {
   // Polygon mode LINE clips x and y at the guard band |x|, |y| <= 2w (Mesa 25: lines and points
   // take draw's guard band), not at the view volume's |x|, |y| <= w as filled triangles do.
   bool wireframe_guard_band = false;
+  // Polygon mode LINE also draws the edges clipping makes along a clip plane. No driver the twin
+  // copies does (lavapipe clears their edge flags); Polygon Mode read strictly would, so the
+  // verifier's tests draw it as a conformant variant.
+  bool wireframe_clip_edges = false;
   // lavapipe's native vector width in bits (LP_NATIVE_VECTOR_WIDTH; 256 with AVX, else 128).
   int vector_bits = 256;
 };

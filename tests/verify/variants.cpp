@@ -123,6 +123,11 @@ std::vector<TwinVariant> ConformantVariants() {
                  return RenderWith(list, cpu::RasterRules{.lines_round_half_even = true, .wireframe_guard_band = true});
                },
                {}});
+  v.push_back({"the edges clipping makes drawn too (Polygon Mode read strictly)", true, 8, false,
+               [](const Scene&, const DrawList& list) {
+                 return RenderWith(list, cpu::RasterRules{.wireframe_clip_edges = true});
+               },
+               {}});
   return v;
 }
 

@@ -24,7 +24,8 @@ struct TwinVariant {
 };
 
 // The conformant ones: 4 subpixel bits, the bottom-right tie rule, everything in double (the
-// truth's rasterizer on the list's positions), no FMA, Mesa 25's lines (guard-band clipping).
+// truth's rasterizer on the list's positions), no FMA, Mesa 25's lines (guard-band clipping), the
+// edges clipping makes drawn too. The twin itself is the one that leaves those edges out.
 std::vector<TwinVariant> ConformantVariants();
 
 // The defects: F transposed, y not flipped, sampling at pixel corners, every vertex shifted half a

@@ -68,7 +68,9 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
     const Image lavapipe = variant.baseline ? variant.baseline(list) : test::DrawTwin(list);
     const Image image = variant.draw(scene, list);
     const Comparison c = CompareImages(lavapipe, image);
-    const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = variant.subpixel_bits});
+    // Every variant draws lines as the twin does, as strict rectangles.
+    const verify::VerifyOptions rules{.subpixel_bits = variant.subpixel_bits, .strict_lines = true};
+    const verify::Verification v = verify::VerifyImage(scene, list, image, rules);
     t.differing += c.differing_pixels;
     t.violating += v.violations;
     if (c.differing_pixels > 0) {
@@ -76,7 +78,7 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
       if (v.violations > 0) {
         ++t.scenes_caught;
       } else if (ChangedOnlyWhereUncertain(
-                     lavapipe, image, verify::VerifyImage(scene, list, lavapipe, {.subpixel_bits = variant.subpixel_bits}))) {
+                     lavapipe, image, verify::VerifyImage(scene, list, lavapipe, rules))) {
         ++t.scenes_within_freedom;
       } else {
         t.missed.push_back(JobName(job) + " (" + std::to_string(c.differing_pixels) + " px)");
@@ -127,4 +129,32 @@ TEST_CASE("Twins with a real bug give violations on every shipped scene where th
     if (v.name == "front and back faces swapped") CHECK(t.differing == 0);
     else CHECK(t.violating > 0);
   }
+}
+
+// The same defects drawn as wireframes: a verifier that accepted any line pixel would pass these.
+TEST_CASE("Twins with a real bug give violations on every shipped wireframe where the bug changes the picture",
+          "[verify][variants]") {
+  std::vector<Job> jobs;
+  for (const Job& j : Jobs(true)) {
+    if (j.wireframe) jobs.push_back(j);
+  }
+  REQUIRE(jobs.size() == test::ShippedScenes().size());
+  std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-defects-wireframe.md");
+  int caught = 0, judged = 0;
+  for (const test::TwinVariant& v : test::DefectVariants()) {
+    if (v.filled_only) continue;
+    const Tally t = Run(v, jobs);
+    AppendRow("verify-defects-wireframe.md", v, t, jobs.size());
+    std::ostringstream missed;
+    for (const std::string& m : t.missed) missed << "\n  " << m;
+    INFO(v.name << ": changed " << t.scenes_changed << " wireframes, caught in " << t.scenes_caught << "; missed:" << missed.str());
+    CHECK(t.missed.empty());
+    caught += t.violating > 0;
+    ++judged;
+  }
+  CHECK(judged == 11);
+  // Lines are unlit and nothing is culled: the two lighting defects change no line, and swapping
+  // the faces only reverses lines, which moves pixels where coinciding edges tie. Every other
+  // defect is caught.
+  CHECK(caught == 8);
 }
