@@ -121,3 +121,38 @@ TEST_CASE("render --backend both says what a difference is: within what Vulkan a
   CHECK_THAT(r.out, HasSubstring(" px, all within what Vulkan allows"));
   CHECK_THAT(r.out, HasSubstring("but the judgement is inconclusive"));
 }
+
+TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the verifier judges; verify reads the image's notes",
+          "[cli][verify][render][swiftshader]") {
+  const test::TempDir dir;
+  const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
+  const test::CliResult r = test::RunCli(
+      {"render", scene, "--backend", "both", "--device", "swiftshader", "--verify", "-o", (dir / "ss.png").string()});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("(SwiftShader Device"));
+  CHECK_THAT(r.out, HasSubstring("twin: no bit-exact rules for SwiftShader"));
+  CHECK_THAT(r.out, HasSubstring("0 violations (subpixel bits 4, strict lines)"));
+  // Judged later, by the rules the image carries: SwiftShader's 4 bits and strict lines.
+  const test::CliResult v = test::RunCli({"verify", scene, (dir / "ss-gpu.png").string(), "--no-map"});
+  INFO(v.out << v.err);
+  CHECK(v.exit_code == 0);
+  CHECK_THAT(v.out, HasSubstring("drawn by SwiftShader Device"));
+  CHECK_THAT(v.out, HasSubstring("(subpixel bits 4, strict lines)"));
+  // The same image judged as if from an unknown device: the loosest rules, still no violation.
+  const test::CliResult loose =
+      test::RunCli({"verify", scene, (dir / "ss-gpu.png").string(), "--no-map", "--strict-lines", "false"});
+  CHECK(loose.exit_code == 0);
+  CHECK_THAT(loose.out, HasSubstring("(subpixel bits 4)"));
+}
+
+TEST_CASE("--version lists every Vulkan device it reaches, SwiftShader and lavapipe, with the twin's rules for each",
+          "[cli][swiftshader]") {
+  const test::CliResult r = test::RunCli({"--version"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("SwiftShader Device"));
+  CHECK_THAT(r.out, HasSubstring("twin: no bit-exact rules"));
+  CHECK_THAT(r.out, HasSubstring("llvmpipe"));
+  CHECK_THAT(r.out, HasSubstring("twin: bit-exact"));
+}
