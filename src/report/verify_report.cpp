@@ -46,7 +46,9 @@ std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Veri
   if (v.NoViolations()) {
     s << "the images differ in " << differing_pixels << " px, all within what Vulkan allows (" << v.uncertain
       << " px uncertain, subpixel bits " << v.options.subpixel_bits << ")";
-    if (v.Verdict() == verify::Judgement::kInconclusive) s << ", but the judgement is inconclusive";
+    if (v.Verdict() == verify::Judgement::kInconclusive) {
+      s << ", but the judgement is inconclusive: " << verify::InconclusiveReason(v);
+    }
   } else {
     s << v.violations << " px " << (v.violations == 1 ? "is" : "are") << " not allowed: first at (" << v.first->x << ", "
       << v.first->y << "), worst at (" << v.worst->x << ", " << v.worst->y << ") "

@@ -27,6 +27,13 @@ Judgement Verification::Verdict() const {
   return Judgement::kPassed;
 }
 
+std::string InconclusiveReason(const Verification& v) {
+  if (v.Verdict() != Judgement::kInconclusive) return "";
+  if (v.background_excluded == 0) return "an empty image would pass too";
+  const double share = v.covered ? 100.0 * double(v.UncertainOther()) / double(v.covered) : 0.0;
+  return std::to_string(int(share)) + " % of the covered pixels are uncertain (shared edges apart)";
+}
+
 std::string RangeText(const ColourRange& r) {
   if (r.lo == r.hi) return Colour(r.lo);
   const auto channel = [](int lo, int hi) { return lo == hi ? std::to_string(lo) : std::to_string(lo) + ".." + std::to_string(hi); };
@@ -44,10 +51,7 @@ std::string VerificationText(const Verification& v) {
       << " uncertain (" << percent << " % of the " << v.covered << " covered";
     if (v.uncertain_shared_edges > 0) s << ", " << v.uncertain_shared_edges << " of them on shared edges";
     s << "), 0 violations";
-    if (verdict == Judgement::kInconclusive) {
-      s << (v.background_excluded == 0 ? "; an empty image would pass too"
-                                       : "; too few pixels are certain to tell a broken image");
-    }
+    if (verdict == Judgement::kInconclusive) s << "; " << InconclusiveReason(v);
   } else {
     s << "fails: " << v.violations << (v.violations == 1 ? " pixel is" : " pixels are") << " not allowed; worst at ("
       << v.worst->x << ", " << v.worst->y << "): " << Colour(v.worst->colour) << ", allowed ";

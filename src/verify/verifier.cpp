@@ -263,7 +263,10 @@ std::vector<ColourRange> AllowedAt(const Primitives& primitives, FrameJudge& jud
     const Coverage c = shape.Covers(glm::dvec2(x + 0.5, y + 0.5));
     if (c == Coverage::kOut) return;
     const glm::dvec2 p(x + 0.5, y + 0.5);
-    if (judge.MayShow(x, y, shape.Depth(p))) allowed.push_back(shape.Colour(p, flat));
+    const ColourRange colours = shape.Colour(p, flat);
+    if (judge.MayShow(x, y, shape.Depth(p)) && std::find(allowed.begin(), allowed.end(), colours) == allowed.end()) {
+      allowed.push_back(colours);
+    }
   });
   if (judge.BackgroundMayShow(x, y)) allowed.push_back(ColourRange::Exactly(judge.background()));
   return allowed;
