@@ -7,6 +7,8 @@
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
 
+#include "../twin/random_scene.hpp"
+
 #include "support/catch.hpp"
 
 using namespace twinraster;
@@ -53,6 +55,25 @@ TEST_CASE("verify: an empty image of a scene that draws something never passes, 
   }
   CHECK(judged == int(test::ShippedScenes().size()) * 4);
   CHECK(failed >= judged * 9 / 10);  // mostly caught outright; the rest cannot tell
+}
+
+TEST_CASE("verify: an empty image of a random scene that draws something never passes", "[verify][random]") {
+  int drawing = 0;
+  for (std::uint32_t seed = 1; seed <= 100; ++seed) {
+    for (const bool wireframe : {false, true}) {
+      nlohmann::ordered_json json = test::RandomSceneJson(seed);
+      json["wireframe"] = wireframe;
+      const Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
+      const DrawList list = BuildDrawList(scene);
+      const Image empty = Blank(list);
+      if (RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
+      const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
+      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << verify::VerificationText(v));
+      CHECK(v.Verdict() != verify::Judgement::kPassed);
+      ++drawing;
+    }
+  }
+  CHECK(drawing >= 160);  // the random scenes mostly draw something (twin/random_scenes_test asks 80 %)
 }
 
 TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, not passed", "[verify]") {
