@@ -7,6 +7,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh --tests
 cmake --preset sanitize >/dev/null
 cmake --build --preset sanitize
-# SwiftShader's cases run in the g++ suite only: its JIT-compiled code and its allocator are not
-# instrumented, and no run under LeakSanitizer has yet shown which of its allocations it frees.
-ctest --preset sanitize -E "SwiftShader"
+ctest --preset sanitize

@@ -45,7 +45,12 @@ inline EdgeFunction MakeEdge(std::int64_t xi, std::int64_t yi, std::int64_t xj, 
   EdgeFunction e;
   e.dcdx = yi - yj;
   e.dcdy = xi - xj;
-  e.c = e.dcdx * xi - e.dcdy * yi;
+  // Wrapping, as the machine's 64-bit multiply does: snapped coordinates of a NaN or a vertex
+  // far out of range (a broken scene) can reach 2^32, whose products overflow; in range it is exact.
+  const auto wrap = [](std::int64_t a, std::int64_t b) {
+    return static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b);
+  };
+  e.c = static_cast<std::int64_t>(wrap(e.dcdx, xi) - wrap(e.dcdy, yi));
   const bool left_edge = e.dcdx < 0;
   const bool top_edge = e.dcdx == 0 && e.dcdy > 0;
   if (left_edge || top_edge) e.c += 1;

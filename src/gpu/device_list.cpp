@@ -1,6 +1,7 @@
 #include "gpu/device_list.hpp"
 
 #include "gpu/driver_files.hpp"
+#include "gpu/keep_loaded.hpp"
 #include "gpu/vulkan_context.hpp"
 
 #include <string_view>
@@ -56,6 +57,7 @@ std::vector<DeviceIdentity> ListDevices() {
     for (const vk::raii::PhysicalDevice& device : instance.enumeratePhysicalDevices()) {
       devices.push_back(Identify(device, device.getProperties()));
     }
+    KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
     return devices;
   } catch (const vk::SystemError& error) {
     throw GpuUnavailable(error.what());

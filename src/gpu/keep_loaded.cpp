@@ -20,12 +20,14 @@ namespace twinraster::gpu {
 
 void KeepVulkanLibrariesLoaded() {
 #ifdef TWINRASTER_ASAN
-  // Every loaded Vulkan driver (libvulkan_*.so) and layer (libVkLayer_*.so): opened once more
-  // with RTLD_NODELETE, which keeps an already loaded object mapped until exit.
+  // Every loaded Vulkan driver (Mesa's libvulkan_*.so, SwiftShader's libvk_swiftshader.so) and
+  // layer (libVkLayer_*.so): opened once more with RTLD_NODELETE, which keeps an already loaded
+  // object mapped until exit.
   dl_iterate_phdr(
       [](dl_phdr_info* info, std::size_t, void*) {
         const std::string_view name = info->dlpi_name != nullptr ? info->dlpi_name : "";
-        if (name.find("libvulkan_") != std::string_view::npos || name.find("libVkLayer_") != std::string_view::npos) {
+        if (name.find("libvulkan_") != std::string_view::npos || name.find("libvk_") != std::string_view::npos ||
+            name.find("libVkLayer_") != std::string_view::npos) {
           dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
         }
         return 0;

@@ -122,7 +122,7 @@ TEST_CASE("render --backend both says what a difference is: within what Vulkan a
   CHECK_THAT(r.out, HasSubstring("but the judgement is inconclusive"));
 }
 
-TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the verifier judges; verify reads the image's notes",
+TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the verifier judges, and verify reads the image's notes",
           "[cli][verify][render][swiftshader]") {
   const test::TempDir dir;
   const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
@@ -146,7 +146,7 @@ TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the veri
   CHECK_THAT(loose.out, HasSubstring("(subpixel bits 4)"));
 }
 
-TEST_CASE("--version lists every Vulkan device it reaches, SwiftShader and lavapipe, with the twin's rules for each",
+TEST_CASE("Version: --version lists every Vulkan device it reaches, SwiftShader and lavapipe, with the twin's rules for each",
           "[cli][swiftshader]") {
   const test::CliResult r = test::RunCli({"--version"});
   INFO(r.out << r.err);
