@@ -1,9 +1,37 @@
-# Guards against test cases that CTest never runs: every Catch2 test case compiled into a test
-# binary must be exactly one CTest entry, and every CTest entry must name exactly one test case.
+# Guards against tests that never run: every tests/**/*_test.cpp must be compiled into a test
+# binary, every test binary must list a case, every Catch2 test case compiled into a test binary
+# must be exactly one CTest entry, and every CTest entry must name exactly one test case.
 # (catch_discover_tests splits names at ';', and a split entry would otherwise "pass" running
-# nothing.) Run as: cmake -DBUILD_DIR=<build> -DCATCH2_MAJOR=<2|3> -P check_test_lists.cmake
-if(NOT BUILD_DIR)
-  message(FATAL_ERROR "check_test_lists: set -DBUILD_DIR")
+# nothing.) The binaries and their sources come from BUILD_DIR/test_binaries.txt, written by
+# tests/CMakeLists.txt. Run as:
+#   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DCATCH2_MAJOR=<2|3> -P check_test_lists.cmake
+if(NOT BUILD_DIR OR NOT SOURCE_DIR)
+  message(FATAL_ERROR "check_test_lists: set -DBUILD_DIR and -DSOURCE_DIR")
+endif()
+
+# Every test file is in some binary.
+file(STRINGS ${BUILD_DIR}/test_binaries.txt binary_lines)
+set(compiled)
+set(listed_binaries)
+foreach(line IN LISTS binary_lines)
+  string(REPLACE "|" ";" parts "${line}")
+  list(GET parts 0 binary)
+  list(GET parts 1 source)
+  list(APPEND listed_binaries "${binary}")
+  list(APPEND compiled "${source}")
+endforeach()
+list(REMOVE_DUPLICATES listed_binaries)
+file(GLOB_RECURSE test_files ${SOURCE_DIR}/tests/*_test.cpp)
+foreach(file IN LISTS test_files)
+  list(FIND compiled "${file}" found)
+  if(found EQUAL -1)
+    message(SEND_ERROR "test file in no test binary (add it to its folder's add_executable): ${file}")
+  endif()
+endforeach()
+list(LENGTH test_files nfiles)
+list(LENGTH listed_binaries nlisted)
+if(nfiles EQUAL 0 OR nlisted EQUAL 0)
+  message(FATAL_ERROR "check_test_lists: found ${nfiles} test files and ${nlisted} test binaries")
 endif()
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --show-only=json-v1 WORKING_DIRECTORY ${BUILD_DIR}
                 OUTPUT_VARIABLE json RESULT_VARIABLE rc)
@@ -40,6 +68,9 @@ foreach(i RANGE ${last})
   endif()
 endforeach()
 list(REMOVE_DUPLICATES binaries)
+# A binary with no CTest entry (no case at all, or none discovered) is looked at too.
+list(APPEND binaries ${listed_binaries})
+list(REMOVE_DUPLICATES binaries)
 
 # Catch2 2 and 3 spell "print the test names, nothing else" differently.
 if(CATCH2_MAJOR EQUAL 3)
@@ -53,11 +84,16 @@ foreach(binary IN LISTS binaries)
   execute_process(COMMAND ${binary} ${list_names} OUTPUT_VARIABLE names RESULT_VARIABLE ignored)
   string(REPLACE ";" "\\;" names "${names}")
   string(REPLACE "\n" ";" names "${names}")
+  set(binary_cases 0)
   foreach(name IN LISTS names)
     if(NOT name STREQUAL "")
       list(APPEND cases "${binary}|${name}")
+      math(EXPR binary_cases "${binary_cases} + 1")
     endif()
   endforeach()
+  if(binary_cases EQUAL 0)
+    message(SEND_ERROR "test binary that lists no test case: ${binary}")
+  endif()
 endforeach()
 
 set(problems 0)
@@ -77,4 +113,5 @@ foreach(e IN LISTS entries)
 endforeach()
 list(LENGTH cases ncases)
 list(LENGTH entries nentries)
-message(STATUS "check_test_lists: ${ncases} Catch2 test cases, ${nentries} CTest entries, ${problems} problems")
+message(STATUS "check_test_lists: ${nfiles} test files in ${nlisted} test binaries, ${ncases} Catch2 test cases, "
+               "${nentries} CTest entries, ${problems} problems")
