@@ -15,13 +15,11 @@
 using namespace twinraster;
 
 TEST_CASE("Truth vs CPU twin: at most a few edge pixels differ on the chapter's scenes", "[truth][twin]") {
-  int scenes = 0;
   // The seeds' own scenes. Not catlike-grid.json: its symmetric grid puts hundreds of edges exactly
   // through pixel centres, ties the truth breaks exactly and float rounding breaks either way
   // (measured: 1190 of its 44852 edge pixels differ); that is what the hard scenes are for.
   for (const char* name : {"cgfs-scene", "cgfs-instances", "cgfs-transforms", "lookat", "catlike-rotations"}) {
     const auto file = test::SourcePath(std::string("scenes/") + name + ".json");
-    ++scenes;
     INFO(file.string());
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
@@ -50,5 +48,4 @@ TEST_CASE("Truth vs CPU twin: at most a few edge pixels differ on the chapter's 
     CHECK(differing * 5000 <= covered);
     CHECK(differing * 100 <= edges);  // measured: at most 1 in 1891
   }
-  CHECK(scenes >= 5);
 }
