@@ -409,7 +409,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
       "the driver and the verifier passes the GPU's), 1 the images differ (or --verify found a\n"
       "violation), 2 bad input or usage,\n"
       "3 no usable Vulkan device (--backend cpu needs none), 4 internal error, 5 the Vulkan\n"
-      "driver crashed or timed out (the twin's image and the report were still written).");
+      "driver crashed or timed out (the twin's image and the report were still written), 6 the\n"
+      "verifier found no violation but could not tell a broken image (inconclusive).");
   command
       ->add_option("SCENE", a->scenes,
                    "scene files (JSON) or OBJ meshes (.obj: framed, lit by a headlight), or - to\n"
