@@ -90,8 +90,27 @@ std::vector<std::filesystem::path> SceneFiles(bool large) {
 }
 }  // namespace
 
-std::vector<std::filesystem::path> ShippedScenes() { return SceneFiles(false); }
-std::vector<std::filesystem::path> LargeShippedScenes() { return SceneFiles(true); }
+// How many of each the repository ships: a loop over them judges exactly these, never a list that
+// a moved folder or a wrong pattern left empty. Adding or removing a scene changes the count here.
+constexpr std::size_t kShippedSceneCount = 44;
+
+std::vector<std::filesystem::path> ShippedScenes() {
+  std::vector<std::filesystem::path> scenes = SceneFiles(false);
+  if (scenes.size() != kShippedSceneCount) {
+    throw std::logic_error("tests found " + std::to_string(scenes.size()) + " shipped scenes under scenes/, expected " +
+                           std::to_string(kShippedSceneCount) + " (tests/support/test_support.cpp)");
+  }
+  return scenes;
+}
+
+std::vector<std::filesystem::path> LargeShippedScenes() {
+  std::vector<std::filesystem::path> scenes = SceneFiles(true);
+  if (scenes.size() != std::size(kLargeScenes)) {
+    throw std::logic_error("tests found " + std::to_string(scenes.size()) + " of the " +
+                           std::to_string(std::size(kLargeScenes)) + " large scenes (tests/support/test_support.cpp)");
+  }
+  return scenes;
+}
 
 namespace {
 

@@ -13,6 +13,7 @@
 using namespace twinraster;
 
 TEST_CASE("Every shipped scene, filled and in wireframe: GPU image == CPU image, bit for bit", "[twin]") {
+  std::size_t judged = 0;
   for (const auto& file : test::ShippedScenes()) {
     for (const bool wireframe : {false, true}) {
       INFO(file.string() << (wireframe ? " --wireframe" : ""));
@@ -23,8 +24,10 @@ TEST_CASE("Every shipped scene, filled and in wireframe: GPU image == CPU image,
       REQUIRE(r.Equal());
       // Not a blank image: the scene drew something besides the background.
       REQUIRE(test::CountNotColour(r.cpu, scene.canvas.background) > 100);
+      ++judged;
     }
   }
+  CHECK(judged == 2 * 44);  // test::ShippedScenes() checks there are 44
   test::RequireNoValidationMessages();
 }
 
