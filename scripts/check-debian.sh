@@ -18,7 +18,30 @@ if [ "$(id -u)" -ne 0 ]; then
   echo "check-debian: needs root (debootstrap, mount, chroot)" >&2
   exit 2
 fi
-mirror="${DEBIAN_MIRROR:-http://deb.debian.org/debian}"
+# The Debian archive this machine's own apt sources use (deb822 .sources or one-line lists): the
+# first URI of an entry for the main archive, not its security suites. DEBIAN_MIRROR overrides it.
+machine_mirror() {
+  local f
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$f" ] || continue
+    awk 'BEGIN { RS = ""; FS = "\n" }
+         { uris = ""; suites = ""
+           for (i = 1; i <= NF; i++) {
+             if ($i ~ /^URIs:/) { sub(/^URIs:[ \t]*/, "", $i); split($i, u, /[ \t]+/); uris = u[1] }
+             if ($i ~ /^Suites:/) suites = $i
+           }
+           if (uris != "" && suites !~ /-security/ && uris ~ /debian\/?$/) { print uris; exit } }' "$f"
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [ -f "$f" ] || continue
+    awk '$1 == "deb" && $0 !~ /-security/ { sub(/\[[^]]*\]/, ""); $0 = $0; if ($2 ~ /debian\/?$/) print $2 }' "$f"
+  done
+}
+mirror="${DEBIAN_MIRROR:-$(machine_mirror | head -n 1)}"
+if [ -z "$mirror" ]; then
+  echo "check-debian: no Debian archive in this machine's apt sources; set DEBIAN_MIRROR" >&2
+  exit 2
+fi
 export DEBIAN_FRONTEND=noninteractive
 command -v debootstrap >/dev/null || { apt-get update -qq && apt-get install -y -qq debootstrap >/dev/null; }
 
