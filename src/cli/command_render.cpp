@@ -322,12 +322,8 @@ report::RenderRecord RenderScene(const RenderArguments& a, const std::string& sc
   progress.Clear();
   if (to_stdout && !png_bytes.empty()) WriteStandardOutput(png_bytes);
 
-  if (gpu_failed) record.exit_code = kExitGpuFailed;
-  else if (record.verification && !record.verification->NoViolations()) record.exit_code = kExitImagesDiffer;
-  // A twin that copies this lavapipe promised identical images; one that cannot (no rules for the
-  // driver) leaves the verdict to the verifier.
-  else if (differ && record.TwinPromised()) record.exit_code = kExitImagesDiffer;
-  else if (report::VerdictOf(record) == report::Verdict::kInconclusive) record.exit_code = kExitInconclusive;
+  // The one verdict the page and the JUnit file show decides the exit code too.
+  record.exit_code = ExitCodeOf(report::VerdictOf(record));
   record.total_ms = total_clock.Milliseconds();
   return record;
 }

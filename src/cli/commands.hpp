@@ -8,6 +8,10 @@ namespace CLI {
 class App;  // CLI11 itself is included only by the .cpp files: it is a large header
 }
 
+namespace twinraster::report {
+enum class Verdict;
+}
+
 namespace twinraster {
 
 // Exit codes shared by every command.
@@ -20,6 +24,10 @@ enum ExitCode : int {
   kExitGpuFailed = 5,  // the Vulkan driver crashed or timed out; everything else was still done
   kExitInconclusive = 6,  // no pixel is wrong, but the verifier could not tell a correct image from a broken one
 };
+
+// The exit code of one scene's verdict (report/render_record.hpp): crashed 5, differing 1,
+// inconclusive 6, an error 2, anything else 0.
+int ExitCodeOf(report::Verdict verdict);
 
 // Of two scenes' exit codes, the one a batch reports: any problem outranks an inconclusive
 // judgement, which outranks success.
