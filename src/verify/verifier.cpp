@@ -138,6 +138,7 @@ class Primitives {
                                                  list_.wireframe ? ClipVolume::kDepth : ClipVolume::kView);
       if (list_.wireframe) {
         VisitLines(polygon, mesh.colours[t], t, visit);
+        if (g.inside[tri[0]] && g.inside[tri[1]] && g.inside[tri[2]]) continue;  // no clipping, no new edge
         // An implementation that clips by the whole view volume may also draw the edges that clipping
         // makes along the canvas's border: they may show, never must.
         const WindowPolygon view = ClipToWindow(v[0], v[1], v[2], list_.width, list_.height, subpixel_bits_);
