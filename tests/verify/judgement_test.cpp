@@ -7,7 +7,7 @@
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
 
-#include "../twin/random_scene.hpp"
+#include "verify_scenes.hpp"
 
 #include "support/catch.hpp"
 
@@ -41,9 +41,7 @@ TEST_CASE("verify: an empty image of a scene that draws something never passes, 
   int judged = 0, failed = 0;
   for (const auto& file : test::ShippedScenes()) {
     for (const bool wireframe : {false, true}) {
-      Scene scene = LoadSceneOrObj(file);
-      scene.wireframe = wireframe;
-      const DrawList list = BuildDrawList(scene);
+      const auto [scene, list] = test::ShippedScene(file, wireframe);
       for (const verify::VerifyOptions options : {verify::VerifyOptions{4, false}, verify::VerifyOptions{8, true}}) {
         const verify::Verification v = verify::VerifyImage(scene, list, Blank(list), options);
         INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << verify::VerificationText(v));
@@ -61,10 +59,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
   int drawing = 0;
   for (std::uint32_t seed = 1; seed <= 100; ++seed) {
     for (const bool wireframe : {false, true}) {
-      nlohmann::ordered_json json = test::RandomSceneJson(seed);
-      json["wireframe"] = wireframe;
-      const Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
-      const DrawList list = BuildDrawList(scene);
+      const auto [scene, list] = test::RandomScene(seed, wireframe);
       const Image empty = Blank(list);
       if (RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
       const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
@@ -95,9 +90,7 @@ TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, n
 TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's lines pass both", "[verify]") {
   int sharper = 0, judged = 0;
   for (const auto& file : test::ShippedScenes()) {
-    Scene scene = LoadSceneOrObj(file);
-    scene.wireframe = true;
-    const DrawList list = BuildDrawList(scene);
+    const auto [scene, list] = test::ShippedScene(file, true);
     const Image image = RenderOnCpu(list);
     const verify::Verification loose = verify::VerifyImage(scene, list, image, {8, false});
     const verify::Verification strict = verify::VerifyImage(scene, list, image, {8, true});

@@ -3,13 +3,11 @@
 // under every release's and CPU path's rules on 500 random scenes.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "scene/obj_scene.hpp"
-#include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
 
-#include "../twin/random_scene.hpp"
 #include "../twin/twin_support.hpp"
+#include "verify_scenes.hpp"
 
 #include "support/catch.hpp"
 
@@ -35,33 +33,6 @@ const std::array kLavapipeRules = {
     NamedRules{"Mesa 25.0.7, sse4.1", {.fused_multiply_add = false, .lines_round_half_even = true, .wireframe_guard_band = true}},
 };
 
-std::vector<std::filesystem::path> ShippedScenesAndMeshes() {
-  std::vector<std::filesystem::path> files = test::ShippedScenes();
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("scenes/meshes"))) {
-    if (entry.path().extension() == ".obj") files.push_back(entry.path());
-  }
-  return files;
-}
-
-// Random scene `seed`, filled or as a wireframe, with its draw list.
-struct Drawn {
-  Scene scene;
-  DrawList list;
-};
-Drawn RandomScene(std::uint32_t seed, bool wireframe) {
-  nlohmann::ordered_json json = test::RandomSceneJson(seed);
-  json["wireframe"] = wireframe;
-  Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
-  DrawList list = BuildDrawList(scene);
-  return {std::move(scene), std::move(list)};
-}
-Drawn ShippedScene(const std::filesystem::path& file, bool wireframe) {
-  Scene scene = LoadSceneOrObj(file);
-  scene.wireframe = wireframe;
-  DrawList list = BuildDrawList(scene);
-  return {std::move(scene), std::move(list)};
-}
-
 // Judged by the device's own rules: lavapipe reports strictLines, and the twin draws its lines.
 void RequirePasses(const Scene& scene, const DrawList& list, const Image& image, int bits, const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = bits, .strict_lines = true});
@@ -78,9 +49,9 @@ TEST_CASE("Lavapipe's image of every shipped scene, filled and in wireframe, pas
   REQUIRE(bits >= 4);
   REQUIRE(gpu.Device().strict_lines);
   int judged = 0;
-  for (const auto& file : ShippedScenesAndMeshes()) {
+  for (const auto& file : test::ShippedScenesAndMeshes()) {
     for (const bool wireframe : {false, true}) {
-      const Drawn d = ShippedScene(file, wireframe);
+      const test::Drawn d = test::ShippedScene(file, wireframe);
       RequirePasses(d.scene, d.list, gpu.Render(d.list), bits, file.string() + (wireframe ? " --wireframe" : ""));
       ++judged;
     }
@@ -94,7 +65,7 @@ TEST_CASE("500 random scenes drawn by lavapipe pass, filled and in wireframe", "
   const int bits = int(gpu.Device().subpixel_bits);
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {
-      const Drawn d = RandomScene(seed, wireframe);
+      const test::Drawn d = test::RandomScene(seed, wireframe);
       RequirePasses(d.scene, d.list, gpu.Render(d.list), bits, "seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
     }
   }
@@ -105,7 +76,7 @@ TEST_CASE("500 random scenes under every lavapipe release's and path's rules pas
           "[verify][random]") {
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {
-      const Drawn d = RandomScene(seed, wireframe);
+      const test::Drawn d = test::RandomScene(seed, wireframe);
       for (const NamedRules& r : kLavapipeRules) {
         CpuOptions options;
         options.rules = r.rules;
@@ -118,9 +89,9 @@ TEST_CASE("500 random scenes under every lavapipe release's and path's rules pas
 
 TEST_CASE("Every shipped scene under every lavapipe release's and path's rules passes, filled and in wireframe",
           "[verify]") {
-  for (const auto& file : ShippedScenesAndMeshes()) {
+  for (const auto& file : test::ShippedScenesAndMeshes()) {
     for (const bool wireframe : {false, true}) {
-      const Drawn d = ShippedScene(file, wireframe);
+      const test::Drawn d = test::ShippedScene(file, wireframe);
       for (const NamedRules& r : kLavapipeRules) {
         CpuOptions options;
         options.rules = r.rules;

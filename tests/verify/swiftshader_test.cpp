@@ -8,7 +8,7 @@
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
 
-#include "../twin/random_scene.hpp"
+#include "verify_scenes.hpp"
 
 #include "support/catch.hpp"
 
@@ -70,20 +70,15 @@ TEST_CASE("SwiftShader is found by name with no environment variable, and report
 TEST_CASE("SwiftShader's image of every shipped scene passes, filled and in wireframe, but its dropped edges",
           "[verify][gpu][swiftshader]") {
   GpuRenderer& gpu = SwiftShader();
-  std::vector<std::filesystem::path> files = test::ShippedScenes();
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("scenes/meshes"))) {
-    if (entry.path().extension() == ".obj") files.push_back(entry.path());
-  }
+  const std::vector<std::filesystem::path> files = test::ShippedScenesAndMeshes();
   const std::set<std::string> dropping = {"near-plane.json", "camera-inside-cube.json"};
   int judged = 0, dropped = 0;
   for (const auto& file : files) {
     for (const bool wireframe : {false, true}) {
-      Scene scene = LoadSceneOrObj(file);
-      scene.wireframe = wireframe;
-      const DrawList list = BuildDrawList(scene);
+      const test::Drawn d = test::ShippedScene(file, wireframe);
       const bool drops = wireframe && dropping.count(file.filename().string()) > 0;
-      CHECK(drops == (wireframe && CrossesEyePlane(list)));
-      Judge(gpu, scene, list, gpu.Render(list), drops, file.string() + (wireframe ? " --wireframe" : ""));
+      CHECK(drops == (wireframe && CrossesEyePlane(d.list)));
+      Judge(gpu, d.scene, d.list, gpu.Render(d.list), drops, file.string() + (wireframe ? " --wireframe" : ""));
       ++judged, dropped += drops;
     }
   }
@@ -97,10 +92,7 @@ TEST_CASE("SwiftShader's images of 40 random scenes pass, filled and in wirefram
   int judged = 0, crossing = 0;
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     for (const bool wireframe : {false, true}) {
-      nlohmann::ordered_json json = test::RandomSceneJson(seed);
-      json["wireframe"] = wireframe;
-      const Scene scene = ParseScene(json.dump(), "random-" + std::to_string(seed) + ".json");
-      const DrawList list = BuildDrawList(scene);
+      const auto [scene, list] = test::RandomScene(seed, wireframe);
       const Image image = gpu.Render(list);
       const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
       INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << verify::VerificationText(v));

@@ -6,6 +6,7 @@
 #include "scene/obj_scene.hpp"
 #include "support/test_support.hpp"
 #include "variants.hpp"
+#include "verify_scenes.hpp"
 #include "verify/verifier.hpp"
 
 #include "support/catch.hpp"
@@ -33,11 +34,7 @@ struct Job {
 
 std::vector<Job> Jobs(bool with_wireframes) {
   std::vector<Job> jobs;
-  std::vector<std::filesystem::path> files = test::ShippedScenes();
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("scenes/meshes"))) {
-    if (entry.path().extension() == ".obj") files.push_back(entry.path());
-  }
-  for (const auto& f : files) {
+  for (const auto& f : test::ShippedScenesAndMeshes()) {
     jobs.push_back({f, false});
     if (with_wireframes && f.extension() == ".json") jobs.push_back({f, true});
   }
@@ -62,9 +59,7 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
   Tally t;
   for (const Job& job : jobs) {
     if (job.wireframe && variant.filled_only) continue;
-    Scene scene = LoadSceneOrObj(job.file);
-    scene.wireframe = job.wireframe;
-    const DrawList list = BuildDrawList(scene);
+    const auto [scene, list] = test::ShippedScene(job.file, job.wireframe);
     const Image lavapipe = variant.baseline ? variant.baseline(list) : test::DrawTwin(list);
     const Image image = variant.draw(scene, list);
     const Comparison c = CompareImages(lavapipe, image);
