@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up, builds, and runs the whole test suite (CTest + Catch2). Warnings are errors.
-# Fails if any CTest entry runs no test case (a CTest test checks that) or if the tests leave a
-# file in the source tree outside build/ and out/.
+# First the guard against tests that never run (tests/check_test_lists.cmake: a test file in no
+# binary, a binary with no case, cases and CTest entries that differ), so such a run fails at once
+# naming why; then everything. Fails too if the tests leave a file in the source tree outside
+# build/ and out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --tests
@@ -13,6 +15,10 @@ if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then in_git=true; fi
 untracked() { git status --porcelain --ignored --untracked-files=all | grep -vE '^(\?\?|!!) "?(build[^/]*|out)/' || true; }
 if $in_git; then before=$(untracked); fi
 
+if ! ctest --preset release -R '^CTest entries match the test binaries' --no-tests=error; then
+  echo "test.sh: the guard against tests that never run failed (its messages are above)" >&2
+  exit 1
+fi
 ctest --preset release
 
 if $in_git; then

@@ -1,76 +1,93 @@
-# Guards against tests that never run: every tests/**/*_test.cpp must be compiled into a test
-# binary, every test binary must list a case, every Catch2 test case compiled into a test binary
-# must be exactly one CTest entry, and every CTest entry must name exactly one test case.
-# (catch_discover_tests splits names at ';', and a split entry would otherwise "pass" running
-# nothing.) The binaries and their sources come from BUILD_DIR/test_binaries.txt, written by
-# tests/CMakeLists.txt. Run as:
+# Guards against tests that never run. Fails when
+#   - a tests/**/*_test.cpp is compiled into no test binary;
+#   - a test binary lists no test case;
+#   - a binary's test cases and its CTest entries differ, in number or by name (a case CTest never
+#     runs, or an entry that names no case: catch_discover_tests splits names at ';', and a split
+#     entry would otherwise "pass" running nothing).
+# A test binary is any executable target defined under tests/; they and their sources come from
+# BUILD_DIR/test_binaries.txt (written by tests/CMakeLists.txt from the targets, so that a binary
+# with no CTest entry at all is still looked at). A case run again on another lavapipe path is an
+# extra entry named "<path> path: <case>" (tests/twin, tests/verify); it must name a real case too.
+# It does not build anything, nor run any test case: it only asks each binary for its list.
+# Run as:
 #   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DCATCH2_MAJOR=<2|3> -P check_test_lists.cmake
+cmake_policy(VERSION 3.25)  # IN_LIST, string(JSON)
 if(NOT BUILD_DIR OR NOT SOURCE_DIR)
   message(FATAL_ERROR "check_test_lists: set -DBUILD_DIR and -DSOURCE_DIR")
 endif()
 
-# Every test file is in some binary.
+# The binaries and the sources compiled into them.
 file(STRINGS ${BUILD_DIR}/test_binaries.txt binary_lines)
 set(compiled)
-set(listed_binaries)
+set(binaries)
 foreach(line IN LISTS binary_lines)
   string(REPLACE "|" ";" parts "${line}")
   list(GET parts 0 binary)
-  list(GET parts 1 source)
-  list(APPEND listed_binaries "${binary}")
-  list(APPEND compiled "${source}")
+  list(APPEND binaries "${binary}")
+  list(LENGTH parts nparts)
+  if(nparts GREATER 1)
+    list(GET parts 1 source)
+    list(APPEND compiled "${source}")
+  endif()
 endforeach()
-list(REMOVE_DUPLICATES listed_binaries)
+list(REMOVE_DUPLICATES binaries)
+
+# Every test file is in some binary.
+set(problems 0)
 file(GLOB_RECURSE test_files ${SOURCE_DIR}/tests/*_test.cpp)
 foreach(file IN LISTS test_files)
-  list(FIND compiled "${file}" found)
-  if(found EQUAL -1)
+  if(NOT file IN_LIST compiled)
     message(SEND_ERROR "test file in no test binary (add it to its folder's add_executable): ${file}")
+    math(EXPR problems "${problems} + 1")
   endif()
 endforeach()
 list(LENGTH test_files nfiles)
-list(LENGTH listed_binaries nlisted)
-if(nfiles EQUAL 0 OR nlisted EQUAL 0)
-  message(FATAL_ERROR "check_test_lists: found ${nfiles} test files and ${nlisted} test binaries")
+list(LENGTH binaries nbinaries)
+if(nfiles EQUAL 0 OR nbinaries EQUAL 0)
+  message(FATAL_ERROR "check_test_lists: found ${nfiles} test files and ${nbinaries} test binaries")
 endif()
+
+# The CTest entries that run a test binary, as "binary|case".
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --show-only=json-v1 WORKING_DIRECTORY ${BUILD_DIR}
                 OUTPUT_VARIABLE json RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "check_test_lists: ctest --show-only failed in ${BUILD_DIR}")
 endif()
-
 string(JSON count LENGTH "${json}" tests)
-set(binaries)
 set(entries)
+set(path_entries)
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   string(JSON name GET "${json}" tests ${i} name)
   string(JSON command_length ERROR_VARIABLE no_command LENGTH "${json}" tests ${i} command)
-  if(no_command OR command_length LESS 2)
-    continue()
+  if(no_command OR command_length LESS 1)
+    continue()  # an entry whose executable was not built (catch_discover_tests found nothing)
   endif()
   string(JSON binary GET "${json}" tests ${i} command 0)
-  if(NOT binary MATCHES "_tests$")
-    continue()  # not a Catch2 test binary (this guard itself, the fuzz run, ...)
+  if(NOT binary IN_LIST binaries)
+    continue()  # not a test binary: this guard itself, the page checks, the fuzz run, ...
   endif()
-  list(APPEND binaries "${binary}")
-  string(JSON spec GET "${json}" tests ${i} command 1)
+  set(spec "")
+  if(command_length GREATER 1)
+    string(JSON spec GET "${json}" tests ${i} command 1)
+  endif()
   # catch_discover_tests escapes , [ ] \ in the spec; undo that to compare with the plain names.
   string(REGEX REPLACE "\\\\(.)" "\\1" spec "${spec}")
-  list(APPEND entries "${binary}|${spec}")
   if(spec MATCHES "^-")
     message(SEND_ERROR "CTest entry \"${name}\" starts with '-': Catch2 reads it as an option, not a test name")
+    math(EXPR problems "${problems} + 1")
   endif()
-  # A case run again on another lavapipe path is named "<path> path: <case>" (tests/twin).
   string(REGEX REPLACE "^[^ ]+ path: " "" case_name "${name}")
   if(NOT spec STREQUAL case_name)
     message(SEND_ERROR "CTest entry \"${name}\" runs the Catch2 spec \"${spec}\": a name CTest split or changed")
+    math(EXPR problems "${problems} + 1")
+  endif()
+  if(name STREQUAL case_name)
+    list(APPEND entries "${binary}|${spec}")
+  else()
+    list(APPEND path_entries "${binary}|${spec}")
   endif()
 endforeach()
-list(REMOVE_DUPLICATES binaries)
-# A binary with no CTest entry (no case at all, or none discovered) is looked at too.
-list(APPEND binaries ${listed_binaries})
-list(REMOVE_DUPLICATES binaries)
 
 # Catch2 2 and 3 spell "print the test names, nothing else" differently.
 if(CATCH2_MAJOR EQUAL 3)
@@ -79,39 +96,48 @@ else()
   set(list_names --list-test-names-only)
 endif()
 
-set(cases)
+# Each binary's own list of cases against its entries, binary by binary.
+set(ncases 0)
 foreach(binary IN LISTS binaries)
-  execute_process(COMMAND ${binary} ${list_names} OUTPUT_VARIABLE names RESULT_VARIABLE ignored)
+  execute_process(COMMAND ${binary} ${list_names} OUTPUT_VARIABLE names RESULT_VARIABLE ignored TIMEOUT 120)
   string(REPLACE ";" "\\;" names "${names}")
   string(REPLACE "\n" ";" names "${names}")
-  set(binary_cases 0)
+  set(cases)
   foreach(name IN LISTS names)
     if(NOT name STREQUAL "")
       list(APPEND cases "${binary}|${name}")
-      math(EXPR binary_cases "${binary_cases} + 1")
     endif()
   endforeach()
-  if(binary_cases EQUAL 0)
+  set(binary_entries)
+  foreach(e IN LISTS entries)
+    if(e MATCHES "^([^|]*)\\|" AND CMAKE_MATCH_1 STREQUAL binary)
+      list(APPEND binary_entries "${e}")
+    endif()
+  endforeach()
+  list(LENGTH cases case_count)
+  list(LENGTH binary_entries entry_count)
+  math(EXPR ncases "${ncases} + ${case_count}")
+  if(case_count EQUAL 0)
     message(SEND_ERROR "test binary that lists no test case: ${binary}")
-  endif()
-endforeach()
-
-set(problems 0)
-foreach(c IN LISTS cases)
-  list(FIND entries "${c}" found)
-  if(found EQUAL -1)
-    message(SEND_ERROR "test case never run by CTest: ${c}")
+    math(EXPR problems "${problems} + 1")
+  elseif(NOT case_count EQUAL entry_count)
+    message(SEND_ERROR "test binary with ${case_count} test cases but ${entry_count} CTest entries: ${binary}")
     math(EXPR problems "${problems} + 1")
   endif()
+  foreach(c IN LISTS cases)
+    if(NOT c IN_LIST binary_entries)
+      message(SEND_ERROR "test case never run by CTest: ${c}")
+      math(EXPR problems "${problems} + 1")
+    endif()
+  endforeach()
+  foreach(e IN LISTS binary_entries path_entries)
+    if(e MATCHES "^([^|]*)\\|" AND CMAKE_MATCH_1 STREQUAL binary AND NOT e IN_LIST cases)
+      message(SEND_ERROR "CTest entry that matches no test case: ${e}")
+      math(EXPR problems "${problems} + 1")
+    endif()
+  endforeach()
 endforeach()
-foreach(e IN LISTS entries)
-  list(FIND cases "${e}" found)
-  if(found EQUAL -1)
-    message(SEND_ERROR "CTest entry that matches no test case: ${e}")
-    math(EXPR problems "${problems} + 1")
-  endif()
-endforeach()
-list(LENGTH cases ncases)
 list(LENGTH entries nentries)
-message(STATUS "check_test_lists: ${nfiles} test files in ${nlisted} test binaries, ${ncases} Catch2 test cases, "
-               "${nentries} CTest entries, ${problems} problems")
+list(LENGTH path_entries npath)
+message(STATUS "check_test_lists: ${nfiles} test files in ${nbinaries} test binaries, ${ncases} Catch2 test cases, "
+               "${nentries} CTest entries (and ${npath} on other lavapipe paths), ${problems} problems")
