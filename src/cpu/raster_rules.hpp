@@ -25,6 +25,8 @@ struct RasterRules {
   bool wireframe_clip_edges = false;
   // lavapipe's native vector width in bits (LP_NATIVE_VECTOR_WIDTH; 256 with AVX, else 128).
   int vector_bits = 256;
+
+  bool operator==(const RasterRules&) const = default;
 };
 
 }  // namespace twinraster::cpu

@@ -1,6 +1,7 @@
 #include "cpu/twin_rules.hpp"
 
 #include <array>
+#include <span>
 #include <regex>
 #include <string_view>
 
@@ -9,17 +10,6 @@ namespace {
 
 // The default release: the one the twin was first written against (Debian 12's).
 constexpr std::string_view kDefaultMesa = "22.3.6";
-
-// One row per lavapipe the twin has been proven against, image for image, by the GPU == CPU tests
-// (docs/lavapipe-paths.md). A release is named exactly: another point release may have changed the
-// arithmetic, and only a test run can say it has not.
-struct KnownLavapipe {
-  std::string_view mesa;
-  std::string_view llvm_major;     // LLVM's major version the release was proven with
-  std::string_view instruction_set;  // CpuPath::InstructionSet()
-  int vector_bits;
-  RasterRules rules;
-};
 
 // Mesa 22.3.6: the JIT fuses where the CPU path has FMA; lines round half away, and are clipped at
 // the view volume like triangles.
@@ -35,16 +25,24 @@ constexpr RasterRules kMesa25NoFma{.fused_multiply_add = false, .lines_round_hal
 // The sse4.1 path (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, or an x86-64 CPU without AVX) has no FMA and
 // 128-bit vectors; LP_NATIVE_VECTOR_WIDTH=128 keeps FMA. Debian 12 builds Mesa 22.3.6 with LLVM 15;
 // Mesa 25.0.7 is Debian 13's (LLVM 19) and Debian 12's backport (LLVM 15).
+// Each row names the CI step (.ci/run) that proves it; docs/lavapipe-paths.md gives the counts.
+constexpr std::string_view kDebian12Suite = "the whole suite on Debian 12 (scripts/test.sh, check-debian.sh bookworm)";
+constexpr std::string_view kDebian12Sse41 = "the suite's \"sse4.1 path:\" entries on Debian 12";
+constexpr std::string_view kDebian12Wide128 = "the 128-bit render test (lavapipe_paths_cli_test) on Debian 12";
+constexpr std::string_view kAarch64 = "scripts/check-aarch64.sh, a sample under qemu with Debian 12's arm64 lavapipe";
+constexpr std::string_view kBackport = "scripts/check-mesa25-bookworm.sh, a sample with Debian 12's backport";
+constexpr std::string_view kDebian13Suite = "the whole suite in a Debian 13 root (check-debian.sh trixie)";
+constexpr std::string_view kDebian13Sse41 = "the suite's \"sse4.1 path:\" entries in a Debian 13 root";
 constexpr std::array kKnown = {
-    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kMesa22Fma},
-    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 128, kMesa22Fma},
-    KnownLavapipe{"22.3.6", "15", "SSE4.1", 128, kMesa22NoFma},
-    KnownLavapipe{"22.3.6", "15", "NEON", 128, kMesa22Aarch64},
-    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 256, kMesa25Fma},
-    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 128, kMesa25Fma},
-    KnownLavapipe{"25.0.7", "15", "SSE4.1", 128, kMesa25NoFma},
-    KnownLavapipe{"25.0.7", "19", "AVX2+FMA", 256, kMesa25Fma},
-    KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma},
+    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 256, kMesa22Fma, kDebian12Suite},
+    KnownLavapipe{"22.3.6", "15", "AVX2+FMA", 128, kMesa22Fma, kDebian12Wide128},
+    KnownLavapipe{"22.3.6", "15", "SSE4.1", 128, kMesa22NoFma, kDebian12Sse41},
+    KnownLavapipe{"22.3.6", "15", "NEON", 128, kMesa22Aarch64, kAarch64},
+    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 256, kMesa25Fma, kBackport},
+    KnownLavapipe{"25.0.7", "15", "AVX2+FMA", 128, kMesa25Fma, kBackport},
+    KnownLavapipe{"25.0.7", "15", "SSE4.1", 128, kMesa25NoFma, kBackport},
+    KnownLavapipe{"25.0.7", "19", "AVX2+FMA", 256, kMesa25Fma, kDebian13Suite},
+    KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma, kDebian13Sse41},
 };
 
 // "15.0.6" -> "15"; "15" stays.
@@ -119,11 +117,16 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
   return twin;
 }
 
+std::span<const KnownLavapipe> KnownLavapipes() { return kKnown; }
+
 std::string KnownRulesText() {
   std::string text;
   for (const KnownLavapipe& known : kKnown) {
-    text += "lavapipe rules, Mesa " + std::string(known.mesa) + " (LLVM " + std::string(known.llvm_major) + "), " +
-            std::string(known.instruction_set) + ", " + std::to_string(known.vector_bits) + "-bit\n";
+    text += "  Mesa " + std::string(known.mesa) + " (LLVM " + std::string(known.llvm_major) + "), " +
+            std::string(known.instruction_set) + ", " + std::to_string(known.vector_bits) + "-bit: " +
+            (known.proven_by.empty() ? "not proven by any CI step (by hand once, docs/lavapipe-paths.md)"
+                                     : "proven in CI by " + std::string(known.proven_by)) +
+            "\n";
   }
   return text;
 }

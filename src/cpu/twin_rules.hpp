@@ -8,7 +8,9 @@
 #include "cpu/raster_rules.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 
 namespace twinraster::cpu {
 
@@ -37,7 +39,22 @@ struct TwinRules {
 // on this machine's path and says so.
 TwinRules ChooseTwinRules(const std::string& device_name, const std::string& driver_info, const CpuPath& path);
 
-// The releases and paths the table knows, one line each, for --version and the docs.
+// One lavapipe the twin copies bit for bit: a release named exactly (another point release may
+// have changed the arithmetic, and only a run can say it has not), one CPU path, its rules, and
+// the CI step that renders on that very driver and path and finds 0 differing pixels.
+struct KnownLavapipe {
+  std::string_view mesa;
+  std::string_view llvm_major;       // LLVM's major version the release was proven with
+  std::string_view instruction_set;  // CpuPath::InstructionSet()
+  int vector_bits;
+  RasterRules rules;
+  std::string_view proven_by;  // empty: proven by hand once, by no CI step (--version says so)
+};
+
+// The table, in the order --version lists it.
+std::span<const KnownLavapipe> KnownLavapipes();
+
+// The releases and paths the table knows, one line each, with what proves each, for --version.
 std::string KnownRulesText();
 
 }  // namespace twinraster::cpu

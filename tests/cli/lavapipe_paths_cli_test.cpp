@@ -25,6 +25,10 @@ std::vector<nlohmann::json> JsonLines(const std::string& out) {
 
 }  // namespace
 
+// How many of the shipped scenes lavapipe may crash on at 128 bits in one pass: the known bug
+// (docs/mesa-128bit-crash.md) takes one or two draws here, not at every run; more is a new failure.
+constexpr int kMaxCrashes = 4;
+
 TEST_CASE("render on lavapipe's 128-bit path: every scene the driver draws equals the twin's", "[cli][paths]") {
   const test::TempDir dir;
   std::vector<std::string> args = {"render", "--backend", "both", "--json", "-o", dir.path().string()};
@@ -37,45 +41,58 @@ TEST_CASE("render on lavapipe's 128-bit path: every scene the driver draws equal
     INFO(r.out << r.err);
     const std::vector<nlohmann::json> results = JsonLines(r.out);
     REQUIRE(results.size() == scenes.size());
-    int drawn = 0;
+    int compared = 0, crashed = 0, without_rules = 0;
+    std::string no_rules;
     for (const nlohmann::json& result : results) {
       INFO(result["scene"] << (wireframe ? " --wireframe" : ""));
-      const std::string status = result["backends"]["gpu"]["status"];
+      const nlohmann::json& gpu = result["backends"]["gpu"];
       CHECK(result["backends"]["cpu"]["status"] == "rendered");
-      if (status == "crashed") continue;  // lavapipe's own bug (docs/mesa-128bit-crash.md)
-      REQUIRE(status == "rendered");
+      if (gpu["status"] == "crashed") {
+        ++crashed;  // lavapipe's own bug: reported as such, the twin's image still written
+        continue;
+      }
+      REQUIRE(gpu["status"] == "rendered");
+      // The path was taken: the driver itself names its vector width.
+      CHECK_THAT(gpu["device"].get<std::string>(), HasSubstring(", 128 bits)"));
       REQUIRE(result["twin_rules"]["vector_bits"] == 128);
       if (!result["twin_rules"]["exact"]) {
         // A release the table does not know on this path: named, never compared as known.
-        CHECK(result["twin_rules"]["text"].get<std::string>().starts_with("no bit-exact rules for Mesa"));
+        no_rules = result["twin_rules"]["text"];
+        CHECK(no_rules.starts_with("no bit-exact rules for Mesa"));
+        ++without_rules;
         continue;
       }
       CHECK(result["differing_pixels"] == 0);
-      ++drawn;
+      ++compared;
     }
-    // Debian 12's Mesa draws most scenes at 128 bits; at least the comparison ran somewhere.
-    const std::string driver = results.front()["backends"]["gpu"]["driver"];
-    if (driver == "Mesa 22.3.6 (LLVM 15.0.6)") CHECK(drawn > static_cast<int>(scenes.size()) / 2);
+    INFO(compared << " compared, " << crashed << " crashed, " << without_rules << " without rules");
+    CHECK(compared + crashed + without_rules == static_cast<int>(scenes.size()));
+    CHECK(crashed <= kMaxCrashes);
+    if (compared == 0 && without_rules > 0) TWINRASTER_SKIP("nothing to compare at 128 bits: " + no_rules);
+    // One lavapipe, one path: the table has its row for every scene or for none.
+    CHECK(without_rules == 0);
+    CHECK(compared >= static_cast<int>(scenes.size()) - kMaxCrashes);
   }
 }
 
 TEST_CASE("render on lavapipe's no-SSE path: the twin says it has no rules, and gives no verdict", "[cli][paths]") {
   const test::TempDir dir;
-  const test::CliResult r =
-      test::RunCli({"render", test::SourcePath("scenes/cgfs-transforms.json").string(), "--backend", "both", "--json",
-                    "-o", (dir / "t.png").string()},
-                   {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
+  // catlike-grid: x87 arithmetic moves edge pixels there (docs/lavapipe-paths.md).
+  const std::string scene = test::SourcePath("scenes/catlike-grid.json").string();
+  const test::CliResult r = test::RunCli(
+      {"render", scene, "--backend", "both", "--json", "-o", (dir / "t.png").string()}, {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
   INFO(r.out << r.err);
   const nlohmann::json result = nlohmann::json::parse(r.out);
+  // lavapipe took the path: it names 128-bit vectors, and its picture is not the twin's.
+  CHECK_THAT(result["backends"]["gpu"]["device"].get<std::string>(), HasSubstring(", 128 bits)"));
+  CHECK(result["differing_pixels"].get<int>() > 0);
   CHECK(result["twin_rules"]["exact"] == false);
   CHECK(result["twin_rules"]["instruction_set"] == "no SSE");
   const std::string text = result["twin_rules"]["text"];
   CHECK(text.starts_with("no bit-exact rules for Mesa "));
   CHECK(text.find("no SSE") != std::string::npos);
-  const test::CliResult plain =
-      test::RunCli({"render", test::SourcePath("scenes/cgfs-transforms.json").string(), "--backend", "both", "-o",
-                    (dir / "u.png").string()},
-                   {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
+  const test::CliResult plain = test::RunCli(
+      {"render", scene, "--backend", "both", "-o", (dir / "u.png").string()}, {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
   INFO(plain.out << plain.err);
   CHECK(plain.out.find("twin: no bit-exact rules for Mesa ") != std::string::npos);
 }

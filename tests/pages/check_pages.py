@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """Opens twinraster's pages in headless Chromium (Debian's chromium and chromium-driver, through
 python3-selenium) and checks what a reader sees: every image loads, no console error, the numbers
-equal the matching --json output, failures come first, a 1,000-scene report opens in seconds, and
-names from scene files are shown as text, never run as markup. Saves screenshots for the README.
+equal the matching --json output, failures come first, a 1,000-scene report stays small and loads
+its thumbnails lazily, and names from scene files are shown as text, never run as markup. Every
+command must end with the one exit code its case produces, and every loop that judges rows checks
+how many it judged. Saves screenshots for the README. How fast the 1,000-scene report opens is
+measured by scripts/bench-pages.py, not judged here.
 
 Usage: check_pages.py CASE --exe TWINRASTER --source REPO --work DIR [--screenshots DIR]
 CASE: batch, crashes, thousand, hostile, chain, bench."""
@@ -25,6 +28,10 @@ from selenium.webdriver.common.by import By
 
 FAILURES = []
 
+# twinraster's exit codes, as `twinraster render --help` lists them.
+EXIT_CODES = {0: "done", 1: "the images differ", 2: "bad input or usage", 3: "no usable Vulkan device",
+              4: "internal error", 5: "the Vulkan driver crashed or timed out", 6: "inconclusive"}
+
 
 def check(condition, message):
     if not condition:
@@ -33,12 +40,21 @@ def check(condition, message):
     return condition
 
 
-def run(args, env=None, expect=(0,), cwd=None):
+def exit_code_text(code):
+    if code < 0:
+        return "%d (killed by signal %d)" % (code, -code)
+    return "%d (%s)" % (code, EXIT_CODES.get(code, "not a twinraster exit code"))
+
+
+def run(args, env=None, expect=0, cwd=None):
+    """Runs a command that must exit with exactly `expect`; any other code ends the case, since what
+    it wrote is then not what the case checks."""
     full_env = dict(os.environ)
     full_env.update(env or {})
     r = subprocess.run(args, capture_output=True, text=True, env=full_env, cwd=cwd)
-    if r.returncode not in expect:
-        sys.exit("%s exited %d (expected %s)\nstdout:\n%s\nstderr:\n%s" % (" ".join(args), r.returncode, expect, r.stdout[-4000:], r.stderr[-4000:]))
+    if r.returncode != expect:
+        sys.exit("FAIL: %s exited %s, this case expects %s\nstdout:\n%s\nstderr:\n%s"
+                 % (" ".join(args), exit_code_text(r.returncode), exit_code_text(expect), r.stdout[-4000:], r.stderr[-4000:]))
     return r
 
 
@@ -58,9 +74,11 @@ def open_page(driver, path):
     return time.monotonic() - start
 
 
-def check_images_load(driver, what):
-    """Scrolls every <img> into view (they load lazily) and checks that each one decoded."""
+def check_images_load(driver, what, expected):
+    """Scrolls every <img> into view (they load lazily) and checks that each one decoded, and that
+    there are `expected` of them: no broken image is no proof when there is no image at all."""
     images = driver.find_elements(By.TAG_NAME, "img")
+    check(len(images) == expected, "%s: %d images, expected %d" % (what, len(images), expected))
     for img in images:
         driver.execute_script("arguments[0].scrollIntoView()", img)
     deadline = time.monotonic() + 20
@@ -75,8 +93,17 @@ def check_images_load(driver, what):
     return len(images)
 
 
+CONSOLE_PROBE = "check_pages: console probe"
+
+
 def check_console(driver, what):
-    errors = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+    """No console error. An error of our own is logged first and must come back: a browser log that
+    captures nothing would otherwise pass every page."""
+    driver.execute_script("console.error(arguments[0])", CONSOLE_PROBE)
+    log = driver.get_log("browser")
+    probes = [e for e in log if CONSOLE_PROBE in e.get("message", "")]
+    check(len(probes) == 1, "%s: the browser log did not capture a console.error, so it would miss the page's errors" % what)
+    errors = [e for e in log if e.get("level") == "SEVERE" and e not in probes]
     check(not errors, "%s: console errors: %s" % (what, errors[:5]))
 
 
@@ -110,6 +137,13 @@ def summary_of(driver):
       return s""")
 
 
+def thumbnails_of(j):
+    """The images a report row shows for a --json line: each backend's image, the diff and the
+    verifier's map (the report writes one for every judgement)."""
+    drawn = sum(1 for b in j["backends"].values() if b and b["output"])
+    return drawn + (j["diff"] is not None) + (j["verify"] is not None)
+
+
 def check_failures_first(rows, what):
     order = ["error", "crashed", "differing", "inconclusive", "verified", "identical", "rendered"]
     ranks = [order.index(r["verdict"]) for r in rows]
@@ -123,7 +157,9 @@ def validate_junit(path, source, what):
     return open(path, encoding="utf-8").read()
 
 
-def render_batch(a, scenes, work, env=None, expect=(0, 1, 2, 5, 6), cwd=None):
+def render_batch(a, scenes, work, expect, env=None, cwd=None):
+    """Renders a batch with --report, --junit and --json; `expect` is the one exit code the batch
+    must end with (the worst of its scenes')."""
     out, report, junit = os.path.join(work, "out"), os.path.join(work, "report"), os.path.join(work, "junit.xml")
     r = run([a.exe, "render", *scenes, "-o", out, "--report", report, "--junit", junit, "--json", "-q"], env, expect, cwd)
     lines = [json.loads(line) for line in r.stdout.splitlines() if line.strip()]
@@ -140,9 +176,11 @@ def case_batch(a):
     names = ["cgfs-transforms.json", "hard/depth-ratio-1e-4.json", "catlike-grid.json", "lit-flat.json", "cgfs-scene.json"]
     # Paths relative to the repository, as a user types them (and as the README's screenshot shows).
     scenes = [os.path.join("scenes", n) for n in names] + [os.path.relpath(broken, a.source)]
-    lines, page, junit = render_batch(a, scenes, work, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"}, cwd=a.source)
+    # Exit 2: the unreadable scene is bad input, which outranks the inconclusive judgement's 6.
+    lines, page, junit = render_batch(a, scenes, work, 2, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"}, cwd=a.source)
     by_scene = {j["scene"]: j for j in lines}
     check(len(lines) == len(scenes) - 1, "batch: one JSON line per readable scene, got %d" % len(lines))
+    check(sorted(by_scene) == sorted(scenes[:-1]), "batch: --json lines for %s, expected the readable %s" % (sorted(by_scene), sorted(scenes[:-1])))
 
     driver = browser()
     try:
@@ -151,10 +189,13 @@ def case_batch(a):
         check(len(rows) == len(scenes), "batch: %d rows for %d scenes" % (len(rows), len(scenes)))
         check_failures_first(rows, "batch")
         check(rows and rows[0]["scene"] == scenes[-1] and rows[0]["verdict"] == "error", "batch: the unreadable scene is not first")
+        judged, unjudged = 0, []
         for row in rows:
             j = by_scene.get(row["scene"])
             if j is None:
+                unjudged.append(row["scene"])  # render prints no --json line for a scene it cannot read
                 continue
+            judged += 1
             want = "-" if j["differing_pixels"] is None else str(j["differing_pixels"])
             check(row["differing"] == want, "batch: %s differing px %s on the page, %s in --json" % (row["scene"], row["differing"], want))
             v = j["verify"]
@@ -162,9 +203,15 @@ def case_batch(a):
             check(row["violations"] == want, "batch: %s violations %s on the page, %s in --json" % (row["scene"], row["violations"], want))
             expected = "identical" if j["differing_pixels"] == 0 else (v["verdict"].replace("passed", "verified").replace("failed", "differing") if v else "differing")
             check(row["verdict"] == expected, "batch: %s is %s on the page, %s by its --json" % (row["scene"], row["verdict"], expected))
+        check(judged == len(scenes) - 1, "batch: %d rows matched a --json line, expected %d (every drawn scene)" % (judged, len(scenes) - 1))
+        check(unjudged == [scenes[-1]], "batch: rows without a --json line %s, expected only the unreadable %s" % (unjudged, scenes[-1]))
         verified = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["passed"])
         identical = sum(1 for j in lines if j["differing_pixels"] == 0)
         inconclusive = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["verdict"] == "inconclusive")
+        differing = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["verdict"] == "failed")
+        check(verified + identical + inconclusive + differing == len(lines),
+              "batch: %d --json lines, but %d identical, %d verified, %d inconclusive and %d differing"
+              % (len(lines), identical, verified, inconclusive, differing))
         check(inconclusive >= 1, "batch: no inconclusive judgement (hard/depth-ratio-1e-4 without SSE gives one)")
         check(verified >= 1, "batch: lavapipe without SSE made no difference to judge (the test needs one)")
         s = summary_of(driver)
@@ -172,10 +219,13 @@ def case_batch(a):
         check(s.get("identical") == str(identical), "batch: summary identical %s, --json says %d" % (s.get("identical"), identical))
         check(s.get("verified") == str(verified), "batch: summary verified %s, --json says %d" % (s.get("verified"), verified))
         check(s.get("inconclusive") == str(inconclusive), "batch: summary inconclusive %s, --json says %d" % (s.get("inconclusive"), inconclusive))
+        check(s.get("differing") == str(differing), "batch: summary differing %s, --json says %d" % (s.get("differing"), differing))
+        check(s.get("crashed") == "0", "batch: summary crashed %s" % s.get("crashed"))
         check(s.get("errors") == "1", "batch: summary errors %s" % s.get("errors"))
-        count = check_images_load(driver, "batch")
-        check(count >= 2 * (len(scenes) - 1), "batch: %d images for %d drawn scenes" % (count, len(scenes) - 1))
+        count = check_images_load(driver, "batch", sum(thumbnails_of(j) for j in lines))
         links = driver.execute_script("return Array.from(document.querySelectorAll('#scenes a')).map(a => a.href)")
+        # Each thumbnail links to its full-size PNG; with no links, "none missing" would prove nothing.
+        check(len(links) == count, "batch: %d links for %d thumbnails" % (len(links), count))
         missing = [h for h in links if not os.path.isfile(re.sub("^file://", "", urllib.parse.unquote(h)))]
         check(not missing, "batch: links to missing full-size PNGs: %s" % missing[:3])
         check_console(driver, "batch")
@@ -191,57 +241,81 @@ def case_batch(a):
 def case_crashes(a):
     """A driver that crashes on every scene: each row says crashed, the twin's image still shows."""
     scenes = [os.path.join(a.source, "scenes", n) for n in ("cgfs-transforms.json", "lookat.json")]
-    lines, page, junit = render_batch(a, scenes, a.work, {"TWINRASTER_TEST_GPU_FAULT": "abort"})
+    lines, page, junit = render_batch(a, scenes, a.work, 5, {"TWINRASTER_TEST_GPU_FAULT": "abort"})
+    gpu = [(j["scene"], j["backends"]["gpu"]["status"]) for j in lines]
+    check(gpu == [(scene, "crashed") for scene in scenes], "crashes: --json gpu status %s, expected crashed for each of %s" % (gpu, scenes))
     driver = browser()
     try:
         open_page(driver, page)
         rows = rows_of(driver)
-        check([r["verdict"] for r in rows] == ["crashed", "crashed"], "crashes: verdicts %s" % [r["verdict"] for r in rows])
-        check(summary_of(driver).get("crashed") == "2", "crashes: summary crashed count")
-        check_images_load(driver, "crashes")
+        check([r["verdict"] for r in rows] == ["crashed"] * len(scenes), "crashes: verdicts %s" % [r["verdict"] for r in rows])
+        check(summary_of(driver).get("crashed") == str(len(scenes)), "crashes: summary crashed count")
+        check_images_load(driver, "crashes", len(scenes))  # the twin's image, one per scene
         check_console(driver, "crashes")
     finally:
         driver.quit()
     xml = validate_junit(junit, a.source, "crashes")
-    check(xml.count('<error type="crashed"') == 2, "crashes: JUnit errors for crashed scenes")
+    check(xml.count('<error type="crashed"') == len(scenes), "crashes: JUnit errors for crashed scenes")
 
 
-def case_thousand(a):
-    """1,000 small scenes: the page stays under ~2 MB and opens within a few seconds."""
-    work = a.work
+THOUSAND = 1000
+
+
+def render_thousand(a, work):
+    """Renders THOUSAND copies of cgfs-transforms at 64 x 64, the camera moved between ten places, as
+    one report; every scene is drawn and passes, so the batch exits 0. Returns render_batch's
+    (lines, page, junit) and the seconds it took. scripts/bench-pages.py uses it too."""
     scenes_dir = os.path.join(work, "scenes")
     os.makedirs(scenes_dir, exist_ok=True)
     template = json.load(open(os.path.join(a.source, "scenes", "cgfs-transforms.json")))
     template["canvas"]["width"], template["canvas"]["height"] = 64, 64
     scenes = []
-    for i in range(1000):
+    for i in range(THOUSAND):
         path = os.path.join(scenes_dir, "s%04d.json" % i)
         template["camera"]["position"][0] = -3 + (i % 10) * 0.1
         with open(path, "w") as f:
             json.dump(template, f)
         scenes.append(path)
     start = time.monotonic()
-    lines, page, junit = render_batch(a, scenes, work)
-    print("thousand: rendered 1000 scenes in %.1f s" % (time.monotonic() - start))
+    lines, page, junit = render_batch(a, scenes, work, 0)
+    return lines, page, junit, time.monotonic() - start
+
+
+def open_timed(driver, page):
+    """Opens a page; returns the seconds until driver.get() returned and the milliseconds from
+    navigation start to the end of the load event."""
+    seconds = open_page(driver, page)
+    load_ms = driver.execute_script("const t = performance.timing; return t.loadEventEnd - t.navigationStart")
+    return seconds, load_ms
+
+
+def case_thousand(a):
+    """1,000 small scenes: the page stays under 2 MB, shows a row and its thumbnails for every scene,
+    and loads them lazily. The time it takes to open is printed, not judged: under ctest -j other
+    tests share the cores and a limit would flake; scripts/bench-pages.py measures it."""
+    lines, page, junit, render_seconds = render_thousand(a, a.work)
+    print("thousand: rendered %d scenes in %.1f s" % (THOUSAND, render_seconds))
+    check(len(lines) == THOUSAND, "thousand: %d --json lines for %d scenes" % (len(lines), THOUSAND))
     size = os.path.getsize(page)
     print("thousand: index.html is %d bytes" % size)
     check(size < 2_000_000, "thousand: index.html is %d bytes, over 2 MB" % size)
     driver = browser()
     try:
-        seconds = open_page(driver, page)
-        timing = driver.execute_script("const t = performance.timing; return t.loadEventEnd - t.navigationStart")
-        print("thousand: page opened in %.2f s (load event after %d ms)" % (seconds, timing))
-        check(seconds < 5, "thousand: the page took %.1f s to open" % seconds)
+        seconds, load_ms = open_timed(driver, page)
+        print("thousand: page opened in %.2f s (load event after %d ms; measured, not judged)" % (seconds, load_ms))
         rows = rows_of(driver)
-        check(len(rows) == 1000, "thousand: %d rows" % len(rows))
+        check(len(rows) == THOUSAND, "thousand: %d rows" % len(rows))
         loaded = driver.execute_script("return Array.from(document.images).filter(i => i.complete && i.naturalWidth > 0).length")
         total = driver.execute_script("return document.images.length")
+        thumbnails = sum(thumbnails_of(j) for j in lines)
         print("thousand: %d of %d thumbnails loaded before scrolling" % (loaded, total))
+        check(total == thumbnails, "thousand: %d thumbnails on the page, --json has %d images" % (total, thumbnails))
         check(loaded < total, "thousand: every thumbnail loaded at once; they should load lazily")
         check_console(driver, "thousand")
     finally:
         driver.quit()
-    validate_junit(junit, a.source, "thousand")
+    xml = validate_junit(junit, a.source, "thousand")
+    check(xml.count("<testcase ") == THOUSAND, "thousand: JUnit has %d testcases for %d scenes" % (xml.count("<testcase "), THOUSAND))
 
 
 HOSTILE = ['<img src=x onerror=alert(1)>', '"quotes" & \'apostrophes\'', "a&amp;b <b>bold</b>", "<script>alert(2)<\\script>"]
@@ -262,7 +336,8 @@ def case_hostile(a):
         with open(path, "w") as f:
             json.dump(template, f)
         scenes.append(path)
-    lines, page, junit = render_batch(a, scenes, work)
+    lines, page, junit = render_batch(a, scenes, work, 0)
+    check(sorted(j["scene"] for j in lines) == sorted(scenes), "hostile: --json lines for %s" % [j["scene"] for j in lines])
     chain = os.path.join(work, "chain.html")
     run([a.exe, "explain", scenes[0], "--html", chain])
     suite = os.path.join(work, "suite")  # a bench suite of one hostile-named scene
@@ -272,7 +347,9 @@ def case_hostile(a):
     run([a.exe, "bench", "--scenes", suite, "--runs", "1", "--methods", "compose-f64,cpu-twin", "--html", bench, "-q"])
     driver = browser()
     try:
-        for what, path in (("hostile batch", page), ("hostile chain", chain), ("hostile bench", bench)):
+        # The batch page shows each scene's images; the others have none, so an <img> there was injected.
+        for what, path, images in (("hostile batch", page, sum(thumbnails_of(j) for j in lines)),
+                                   ("hostile chain", chain, 0), ("hostile bench", bench, 0)):
             open_page(driver, path)
             check_no_alert(driver, what)
             check(driver.execute_script("return document.scripts.length") == 0, what + ": the page has a <script> element")
@@ -281,7 +358,7 @@ def case_hostile(a):
             check(driver.execute_script(
                       "return Array.from(document.querySelectorAll('b')).filter(b => b.textContent.startsWith('bold')).length") == 0,
                   what + ": a name's <b> became markup")
-            check_images_load(driver, what)
+            check_images_load(driver, what, images)
             check_console(driver, what)
         open_page(driver, page)
         rows = rows_of(driver)
@@ -324,6 +401,7 @@ def case_chain(a):
             shown = driver.execute_script("return Array.from(document.querySelectorAll('figure.chain-panel')).map(f => [f.dataset.panel, f.querySelector('pre').textContent])")
             check(len(shown) == panels, "chain %s: %d panels, expected %d" % (scene, len(shown), panels))
             text = dict(shown)
+            check(len(text) == len(shown), "chain %s: a panel's name repeats: %s" % (scene, [p for p, _ in shown]))
             vertex = next((v for v in j["instances"][0]["vertices"] if v["inside_clip_volume"]), j["instances"][0]["vertices"][0])
             for panel, label, key in (("model", "V = ", "object"), ("world-top", "M_Model · V = ", "world"),
                                       ("camera", "M_Model · V = ", "camera"), ("ndc", "NDC = clip.xyz / w = ", "ndc"),
@@ -359,6 +437,7 @@ def case_bench(a):
     r = run([a.exe, "bench", "--only", "cgfs-transforms", "--runs", "1", "--scenes", os.path.join(a.source, "scenes"),
              "--html", page, "--json", "-q"])
     j = json.loads(r.stdout)
+    check(j["rows"], "bench: --json has no rows")
     driver = browser(1300, 1400)
     try:
         open_page(driver, page)
@@ -367,6 +446,9 @@ def case_bench(a):
             series: c.closest('g.series').dataset.series, x: +c.dataset.x, y: +c.dataset.y}))""")
         want = [(row["method"], row["vertex_ms"] * 1e6 / row["vertices"], row["vertex_error_px"]) for row in j["rows"]
                 if row["vertex_ms"] is not None and row["vertex_error_px"] is not None and row["vertices"]]
+        timed = sum(1 for row in j["rows"] if row["vertex_ms"] is not None)
+        # The twin's and lavapipe's rows time whole frames, with no vertex stage of their own; every other row is plotted.
+        check(want and len(want) == timed, "bench: %d of the %d --json rows with a vertex time can be plotted" % (len(want), timed))
         check(len(points) == len(want), "bench: %d points, --json has %d rows with a vertex time" % (len(points), len(want)))
         for (method, x, y), p in zip(want, points):
             check(p["series"] == method and close(p["x"], x) and close(p["y"], y), "bench: point %s, --json %s" % (p, (method, x, y)))
@@ -379,6 +461,8 @@ def case_bench(a):
     page = os.path.join(a.work, "scale.html")
     r = run([a.exe, "bench", "--scale", "--counts", "1,8,64", "--runs", "1", "--html", page, "--json", "-q"])
     j = json.loads(r.stdout)
+    counts = [row["instances"] for row in j["rows"]]
+    check(counts == [1, 8, 64], "scale: --json rows for %s instances, expected 1, 8 and 64" % counts)
     driver = browser(1300, 1100)
     try:
         open_page(driver, page)

@@ -6,15 +6,20 @@
 
 #include "../twin/random_scene.hpp"
 
+#include <filesystem>
+#include <stdexcept>
 #include <string>
 
 namespace twinraster::test {
 
 std::vector<std::filesystem::path> ShippedScenesAndMeshes() {
   std::vector<std::filesystem::path> files = ShippedScenes();
+  const std::size_t scenes = files.size();
   for (const auto& entry : std::filesystem::directory_iterator(SourcePath("scenes/meshes"))) {
     if (entry.path().extension() == ".obj") files.push_back(entry.path());
   }
+  // The five meshes scripts/make_meshes.py writes, never a folder that came up empty.
+  if (files.size() - scenes != 5) throw std::logic_error("expected the 5 OBJ meshes in scenes/meshes");
   return files;
 }
 
