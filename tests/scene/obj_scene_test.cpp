@@ -349,6 +349,7 @@ TEST_CASE("A zero scale is an error only for an instance of a lit model", "[scen
 }
 
 TEST_CASE("Scenes without lighting load as before: no lighting, every model unlit, no normals", "[scene][lighting]") {
+  int unlit = 0;
   for (const auto& file : test::ShippedScenes()) {
     if (test::ReadFile(file).find("\"lighting\"") != std::string::npos) continue;
     INFO(file.string());
@@ -360,7 +361,9 @@ TEST_CASE("Scenes without lighting load as before: no lighting, every model unli
       REQUIRE(m.triangle_normals.empty());
       REQUIRE(m.source.empty());
     }
+    ++unlit;
   }
+  CHECK(unlit == 44 - 8);  // of the 44 shipped scenes, 8 are lit
 }
 
 TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, front on, lit by a headlight", "[scene][obj]") {
