@@ -45,14 +45,22 @@ constexpr std::array kKnown = {
     KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma, kDebian13Sse41},
 };
 
+constexpr std::array kUnproven = {
+    UnprovenLavapipe{"25.0.7", "19", "AVX2+FMA", 128,
+                     "lavapipe corrupts its heap and crashes on up to a third of the shipped scenes "
+                     "(docs/mesa-128bit-crash.md), so no run has proven the rest"},
+};
+
 // "15.0.6" -> "15"; "15" stays.
 std::string Major(const std::string& version) { return version.substr(0, version.find('.')); }
 
-const KnownLavapipe* Find(const LavapipeRelease& release, const CpuPath& path) {
-  for (const KnownLavapipe& known : kKnown) {
-    if (known.mesa == release.mesa && known.llvm_major == Major(release.llvm) &&
-        known.instruction_set == path.InstructionSet() && known.vector_bits == release.vector_bits) {
-      return &known;
+// The row of `table` (known or unproven) for this release and path, or null.
+template <typename Row, std::size_t N>
+const Row* Find(const std::array<Row, N>& table, const LavapipeRelease& release, const CpuPath& path) {
+  for (const Row& row : table) {
+    if (row.mesa == release.mesa && row.llvm_major == Major(release.llvm) &&
+        row.instruction_set == path.InstructionSet() && row.vector_bits == release.vector_bits) {
+      return &row;
     }
   }
   return nullptr;
@@ -89,7 +97,7 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
     for (const KnownLavapipe& known : kKnown) {
       if (known.mesa == kDefaultMesa) assumed.llvm = known.llvm_major;
     }
-    if (const KnownLavapipe* known = Find(assumed, path)) {
+    if (const KnownLavapipe* known = Find(kKnown, assumed, path)) {
       twin.exact = true;
       twin.rules = known->rules;
       twin.release = assumed;
@@ -107,17 +115,19 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
   }
   const LavapipeRelease& release = *twin.release;
   const std::string where = PathText(path, release.vector_bits);
-  if (const KnownLavapipe* known = Find(release, path)) {
+  if (const KnownLavapipe* known = Find(kKnown, release, path)) {
     twin.exact = true;
     twin.rules = known->rules;
     twin.text = "lavapipe rules, Mesa " + release.mesa + ", " + where;
     return twin;
   }
   twin.text = "no bit-exact rules for Mesa " + release.mesa + " (LLVM " + release.llvm + ") on " + where;
+  if (const UnprovenLavapipe* unproven = Find(kUnproven, release, path)) twin.text += ": " + std::string(unproven->why);
   return twin;
 }
 
 std::span<const KnownLavapipe> KnownLavapipes() { return kKnown; }
+std::span<const UnprovenLavapipe> UnprovenLavapipes() { return kUnproven; }
 
 std::string KnownRulesText() {
   std::string text;
@@ -127,6 +137,11 @@ std::string KnownRulesText() {
             (known.proven_by.empty() ? "not proven by any CI step (by hand once, docs/lavapipe-paths.md)"
                                      : "proven in CI by " + std::string(known.proven_by)) +
             "\n";
+  }
+  for (const UnprovenLavapipe& unproven : kUnproven) {
+    text += "  (no rules for Mesa " + std::string(unproven.mesa) + " (LLVM " + std::string(unproven.llvm_major) + "), " +
+            std::string(unproven.instruction_set) + ", " + std::to_string(unproven.vector_bits) +
+            "-bit: " + std::string(unproven.why) + ")\n";
   }
   return text;
 }

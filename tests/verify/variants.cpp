@@ -69,6 +69,22 @@ Image FlippedRows(const Image& image) {
   return out;
 }
 
+// Every drawn pixel (not the background) also paints its right and lower neighbours where they
+// show the background: lines two pixels wide, triangles a pixel too big.
+Image Grown(const Image& image, Rgb8 background) {
+  const auto is_background = [&](const std::uint8_t* p) { return p[0] == background.r && p[1] == background.g && p[2] == background.b; };
+  Image out = image;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (is_background(p)) continue;
+      if (x + 1 < image.width && is_background(image.pixel(x + 1, y))) std::copy_n(p, 4, out.pixel(x + 1, y));
+      if (y + 1 < image.height && is_background(image.pixel(x, y + 1))) std::copy_n(p, 4, out.pixel(x, y + 1));
+    }
+  }
+  return out;
+}
+
 // Rotates each flat-lit triangle's corners (a, b, c) -> (b, c, a), with their normals.
 DrawList CornersRotated(DrawList list) {
   for (DrawMesh& mesh : list.meshes) {
@@ -199,6 +215,9 @@ std::vector<TwinVariant> DefectVariants() {
                  return Rasterize(list, clip);
                },
                [](const DrawList& list) { return Rasterize(list, VertexStage(list)); }});
+  v.push_back({"every drawn pixel grown to its right and lower neighbours (lines 2 px wide)", false, 8, false,
+               [](const Scene&, const DrawList& list) { return Grown(DrawTwin(list), list.background); },
+               {}});
   v.push_back({"normals transformed by M_Model instead of N", false, 8, false, [](const Scene&, DrawList list) {
                  if (list.lighting) {
                    for (LitInstance& i : list.lighting->instances) i.normal = glm::mat3(i.model);

@@ -30,7 +30,8 @@ std::vector<TwinVariant> ConformantVariants();
 
 // The defects: F transposed, y not flipped, sampling at pixel corners, every vertex shifted half a
 // pixel, the depth test reversed, one triangle dropped, front and back faces swapped, R and B
-// swapped, the flat colour from the wrong vertex, the near plane ignored, normals by M_Model.
+// swapped, the flat colour from the wrong vertex, the near plane ignored, every drawn pixel grown
+// by one (lines 2 px wide), normals by M_Model.
 std::vector<TwinVariant> DefectVariants();
 
 // The twin itself, with Mesa 22.3.6's rules on AVX2 (lavapipe's image on this machine).
