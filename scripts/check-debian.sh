@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Proves the README's two commands on a fresh Debian release: makes a minimal root of RELEASE
 # (trixie = Debian 13, bookworm = Debian 12) with debootstrap, clones this repository's HEAD into
-# it, runs `bash scripts/demo.sh` and `bash scripts/test.sh` inside it as a newcomer would, and
+# it, runs `bash scripts/demo.sh` and `bash scripts/test.sh` inside it as a newcomer would (on
+# bookworm, then scripts/check-mesa25-bookworm.sh: the backport's lavapipe against the twin), and
 # deletes the root again. Needs root (debootstrap, mount, chroot) and the network.
 #
 #   scripts/check-debian.sh trixie            # both README commands on Debian 13
@@ -18,26 +19,8 @@ if [ "$(id -u)" -ne 0 ]; then
   echo "check-debian: needs root (debootstrap, mount, chroot)" >&2
   exit 2
 fi
-# The Debian archive this machine's own apt sources use (deb822 .sources or one-line lists): the
-# first URI of an entry for the main archive, not its security suites. DEBIAN_MIRROR overrides it.
-machine_mirror() {
-  local f
-  for f in /etc/apt/sources.list.d/*.sources; do
-    [ -f "$f" ] || continue
-    awk 'BEGIN { RS = ""; FS = "\n" }
-         { uris = ""; suites = ""
-           for (i = 1; i <= NF; i++) {
-             if ($i ~ /^URIs:/) { sub(/^URIs:[ \t]*/, "", $i); split($i, u, /[ \t]+/); uris = u[1] }
-             if ($i ~ /^Suites:/) suites = $i
-           }
-           if (uris != "" && suites !~ /-security/ && uris ~ /debian\/?$/) { print uris; exit } }' "$f"
-  done
-  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
-    [ -f "$f" ] || continue
-    awk '$1 == "deb" && $0 !~ /-security/ { sub(/\[[^]]*\]/, ""); $0 = $0; if ($2 ~ /debian\/?$/) print $2 }' "$f"
-  done
-}
-mirror="${DEBIAN_MIRROR:-$(machine_mirror | head -n 1)}"
+. scripts/debian-mirror.sh
+mirror="$(debian_mirror)"
 if [ -z "$mirror" ]; then
   echo "check-debian: no Debian archive in this machine's apt sources; set DEBIAN_MIRROR" >&2
   exit 2
@@ -105,3 +88,8 @@ run "test -s out/cgfs-transforms-gpu.png && test -s out/cgfs-transforms-cpu.png"
 step "bash scripts/test.sh"
 run "bash scripts/test.sh"
 step "both README commands passed on $release"
+if [ "$release" = bookworm ]; then
+  # Debian 12's backport of Mesa 25.0.7 (LLVM 15): the twin's rows for it, against that driver.
+  step "bash scripts/check-mesa25-bookworm.sh"
+  run "bash scripts/check-mesa25-bookworm.sh"
+fi
