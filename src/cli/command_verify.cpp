@@ -46,12 +46,14 @@ int Verify(const VerifyArguments& a) {
   if (a.map) ExpectPngName("--map", *a.map);
   Scene scene = LoadSceneArgument(a.scene);
   if (a.wireframe) scene.wireframe = true;
-  const Image image = ReadPng(a.image);
-  if (image.width != scene.canvas.width || image.height != scene.canvas.height) {
-    throw FileError(a.image + ": the image is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
-                    ", but " + a.scene + " draws a canvas of " + std::to_string(scene.canvas.width) + " x " +
-                    std::to_string(scene.canvas.height));
-  }
+  // The canvas is the size the image must declare, checked before any pixel is decoded.
+  const Image image = ReadPng(a.image, [&](std::uint32_t width, std::uint32_t height) {
+    if (width != scene.canvas.width || height != scene.canvas.height) {
+      throw FileError(a.image + ": the image is " + std::to_string(width) + " x " + std::to_string(height) + ", but " +
+                      a.scene + " draws a canvas of " + std::to_string(scene.canvas.width) + " x " +
+                      std::to_string(scene.canvas.height));
+    }
+  });
   const DrawList list = BuildDrawList(scene);
   Stopwatch clock;
   const std::optional<report::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));

@@ -11,11 +11,6 @@
 #include <string_view>
 #include <vector>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#define STBI_ONLY_PNG
-#include <stb/stb_image.h>
-
 namespace twinraster {
 
 namespace {
@@ -141,16 +136,6 @@ StagedFile StagePng(const std::filesystem::path& file, const Image& image, int l
 
 void WritePng(const std::filesystem::path& file, const Image& image, int level, const PngNotes& notes) {
   StagePng(file, image, level, notes).Commit();
-}
-
-Image ReadPng(const std::filesystem::path& file) {
-  int width = 0, height = 0, channels = 0;
-  unsigned char* pixels = stbi_load(file.c_str(), &width, &height, &channels, 4);
-  if (!pixels) throw FileError(file.string() + ": cannot read as PNG: " + stbi_failure_reason());
-  Image image(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height));
-  std::memcpy(image.rgba.data(), pixels, image.rgba.size());
-  stbi_image_free(pixels);
-  return image;
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -92,6 +93,39 @@ TEST_CASE("verify: bad input names the file and the problem, exits 2, and leaves
     CHECK_THAT(r.err, HasSubstring("bad.json"));
   }
   CHECK(test::ReadFile(map) == "an earlier map");
+}
+
+TEST_CASE("verify and compare: every malformed PNG exits 2, naming the file, with no control character from it",
+          "[cli][verify][png]") {
+  const test::TempDir dir;
+  const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
+  const std::string good = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
+  const auto printable = [](const std::string& text) {
+    return std::none_of(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7f; });
+  };
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+    const std::string png = entry.path().string();
+    INFO(png);
+    const test::CliResult v = test::RunCli({"verify", scene, png, "--map", (dir / "map.png").string()});
+    INFO(v.out << v.err);
+    CHECK(v.exit_code == 2);
+    CHECK_THAT(v.err, HasSubstring(png + ": "));
+    CHECK(printable(v.out + v.err));
+    const test::CliResult c = test::RunCli({"compare", good, png});
+    INFO(c.out << c.err);
+    CHECK(c.exit_code == 2);
+    CHECK_THAT(c.err, HasSubstring(png + ": cannot read as PNG: "));
+    CHECK(printable(c.out + c.err));
+    ++files;
+  }
+  CHECK(files == 17);  // tests/image/pngs/README.md lists them
+  CHECK_FALSE(std::filesystem::exists(dir / "map.png"));
+  // The bomb's size is refused against the scene's canvas before a pixel is decoded: had it been
+  // decoded, the message would be the cut-off IDAT's.
+  const test::CliResult bomb =
+      test::RunCli({"verify", scene, test::SourcePath("tests/image/pngs/malformed/bomb-16384-truncated.png").string()});
+  CHECK_THAT(bomb.err, HasSubstring("the image is 16384 x 16384, but"));
 }
 
 TEST_CASE("render --verify judges lavapipe's image and writes OUT-gpu-map.png, and --rules book refuses it",
