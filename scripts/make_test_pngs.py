@@ -149,6 +149,8 @@ def malformed_files():
     files["palette-index-out-of-range.png"] = png(
         ihdr(W, H, 8, 3), zlib.compress(scanlines([[3 if x == 5 else x % 2 for x in range(W)] for _ in range(H)], 8, False)),
         chunk(b"PLTE", bytes([0, 0, 0, 255, 255, 255])))
+    # A compressed text chunk that inflates to 16 MiB (a bomb in an ancillary chunk).
+    files["ztxt-bomb.png"] = png(header, good_idat, chunk(b"zTXt", b"Comment\0\0" + zlib.compress(b"x" * (16 << 20), 9)))
     # An unknown chunk whose type holds ESC: never echoed to the terminal.
     files["chunk-type-with-escape.png"] = png(header, good_idat, chunk(b"a\x1b[1", b"\x1b[31mred"))
     files["empty-first-idat-only.png"] = SIGNATURE + header + chunk(b"IDAT", b"") + chunk(b"IEND", b"")

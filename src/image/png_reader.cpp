@@ -50,6 +50,8 @@ std::string Problem(int error) {
       return "it declares a side over " + std::to_string(kMaxPngSide) + " pixels, the most twinraster reads";
     case SPNG_EMEM:
       return "out of memory";
+    case SPNG_ECHUNK_LIMITS:
+      return "an ancillary chunk holds more than twinraster keeps (1 MiB for one, 8 MiB in all, once inflated)";
     default: {
       const char* text = spng_strerror(error);
       return std::string("corrupt: ") + (text != nullptr && *text != '\0' ? text : "libspng error " + std::to_string(error));

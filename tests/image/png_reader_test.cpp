@@ -87,6 +87,7 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
       {"signature-only.png", "truncated"},
       {"too-little-data.png", "corrupt: "},
       {"truncated-in-idat.png", "truncated"},
+      {"ztxt-bomb.png", "an ancillary chunk holds more than twinraster keeps"},
   };
   // Like verify's canvas check: a size is refused before anything is decoded (the bomb would be
   // 1 GiB of RGBA).
