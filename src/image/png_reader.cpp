@@ -9,9 +9,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <functional>
 #include <memory>
+#include <new>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -156,7 +157,13 @@ Image Decode(std::istream& chunks, const Source& source, const std::string& name
   spng_ihdr ihdr{};
   if (const int e = spng_get_ihdr(ctx.get(), &ihdr)) Refuse(name, Problem(e));
   if (check) check(ihdr.width, ihdr.height);
-  Image image(ihdr.width, ihdr.height);
+  Image image;
+  try {
+    image = Image(ihdr.width, ihdr.height);
+  } catch (const std::bad_alloc&) {
+    Refuse(name, "its " + std::to_string(ihdr.width) + " x " + std::to_string(ihdr.height) + " pixels need " +
+                     std::to_string(std::size_t{ihdr.width} * ihdr.height * 4 >> 20) + " MiB, more than this machine gave");
+  }
   if (const int e = spng_decode_image(ctx.get(), image.rgba.data(), image.rgba.size(), SPNG_FMT_RGBA8, SPNG_DECODE_TRNS)) {
     Refuse(name, Problem(e));
   }
