@@ -55,7 +55,10 @@ def main():
             exact += 1
     print("%s: %d of %d jobs bit-exact, %d crashed (at most %d allowed), %d expected"
           % (a.label, exact, len(jobs), crashed, a.max_crashes, a.jobs))
-    ok = len(jobs) == a.jobs and crashed <= a.max_crashes and exact + crashed == a.jobs
+    names = [(job["scene"], job["wireframe"]) for job in jobs]
+    if len(set(names)) != len(names):
+        print("%s: a job appears twice" % a.label)
+    ok = len(jobs) == a.jobs and len(set(names)) == len(names) and crashed <= a.max_crashes and exact + crashed == a.jobs
     sys.exit(0 if ok else 1)
 
 

@@ -23,5 +23,5 @@ debian_mirror() {
       [ -f "$f" ] || continue
       awk '$1 == "deb" && $0 !~ /-security/ { sub(/\[[^]]*\]/, ""); $0 = $0; if ($2 ~ /debian\/?$/) print $2 }' "$f"
     done
-  } | head -n 1
+  } | sed -n 1p  # reads everything: under pipefail, head would leave a writer killed by SIGPIPE
 }

@@ -149,6 +149,15 @@ def malformed_files():
     files["palette-index-out-of-range.png"] = png(
         ihdr(W, H, 8, 3), zlib.compress(scanlines([[3 if x == 5 else x % 2 for x in range(W)] for _ in range(H)], 8, False)),
         chunk(b"PLTE", bytes([0, 0, 0, 255, 255, 255])))
+    # The same bad Adler-32 in 1-byte IDATs: libspng stops at the last row, before the checksum.
+    files["bad-adler32-split.png"] = png(header, good_idat[:-4] + bytes(b ^ 0xFF for b in good_idat[-4:]), split=1)
+    # Bytes after the end of the zlib stream, in an IDAT of their own.
+    files["data-after-zlib-stream.png"] = png(header, good_idat + b"junk", split=len(good_idat))
+    # A 1-bit palette of one colour, interlaced, with index 1 only at the last pixel, which Adam7's
+    # fifth pass carries at the ragged end of its row.
+    last = [[1 if (x, y) == (W - 1, H - 1) else 0 for x in range(W)] for y in range(H)]
+    files["palette1-interlaced-index-out-of-range.png"] = png(
+        ihdr(W, H, 1, 3, 1), zlib.compress(scanlines(last, 1, True), 9), chunk(b"PLTE", bytes([10, 20, 30])))
     # A compressed text chunk that inflates to 16 MiB (a bomb in an ancillary chunk).
     files["ztxt-bomb.png"] = png(header, good_idat, chunk(b"zTXt", b"Comment\0\0" + zlib.compress(b"x" * (16 << 20), 9)))
     # An unknown chunk whose type holds ESC: never echoed to the terminal.

@@ -13,7 +13,7 @@ packages=(
   glslang-dev glslang-tools      # glslangValidator compiles shaders/ to SPIR-V at build time
   spirv-tools                    # spirv-val checks the SPIR-V the build embeds
   libglm-dev                     # matrix and vector types
-  libspng-dev                    # PNG in (verify, compare): checksums and limits for untrusted files
+  libspng-dev zlib1g-dev         # PNG in (verify, compare): checksums and limits for untrusted files
   libdeflate-dev                 # PNG compression
   nlohmann-json3-dev             # scene files: the locating parser behind every error message
   libsimdjson-dev                # scene files: the fast parser

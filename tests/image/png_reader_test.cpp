@@ -70,12 +70,14 @@ TEST_CASE("PNG reader: every valid encoding of the picture reads as the same RGB
 TEST_CASE("PNG reader: every malformed file is refused, naming the file and the problem", "[png][reader]") {
   // A part of each reason: enough to show it is the right one.
   const std::map<std::string, std::string> reasons = {
-      {"bad-adler32.png", "corrupt: "},
+      {"bad-adler32.png", "corrupt: the image data's zlib stream: incorrect data check"},
+      {"bad-adler32-split.png", "corrupt: the image data's zlib stream: incorrect data check"},
+      {"data-after-zlib-stream.png", "corrupt: 4 bytes after the end of the image data's zlib stream"},
       {"bad-filter-type.png", "corrupt: invalid scanline filter"},
       {"bomb-16384-truncated.png", "refused: 16384 x 16384"},
       {"chunk-type-with-escape.png", "not four ASCII letters (bytes 61 1b 5b 31)"},
-      {"deflate-reserved-block.png", "corrupt: "},
-      {"empty-first-idat-only.png", "corrupt: "},
+      {"deflate-reserved-block.png", "corrupt: the image data's zlib stream: invalid block type"},
+      {"empty-first-idat-only.png", "the image data ends before its zlib stream does"},
       {"empty.png", "truncated"},
       {"idat-bad-crc.png", "corrupt: invalid chunk checksum"},
       {"ihdr-bad-crc.png", "corrupt: invalid chunk checksum"},
@@ -83,9 +85,10 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
       {"no-iend.png", "truncated"},
       {"not-a-png.png", "not a PNG file"},
       {"palette-index-out-of-range.png", "palette index 3 in row 0, but the palette has 2 entries"},
+      {"palette1-interlaced-index-out-of-range.png", "palette index 1 in row 6, but the palette has 1 entries"},
       {"side-over-limit.png", "declares a side over 16384 pixels"},
       {"signature-only.png", "truncated"},
-      {"too-little-data.png", "corrupt: "},
+      {"too-little-data.png", "corrupt: the image data inflates to 100 bytes, not the 371 bytes its header needs"},
       {"truncated-in-idat.png", "truncated"},
       {"ztxt-bomb.png", "an ancillary chunk holds more than twinraster keeps"},
   };

@@ -69,9 +69,17 @@ def browser(width=1400, height=1000):
 
 
 def open_page(driver, path):
+    """Opens a page and waits until it is parsed and loaded: on a busy machine driver.get() has
+    returned while the parser was still inside a page (a panel found without its text)."""
     start = time.monotonic()
     driver.get("file://" + os.path.abspath(path))
-    return time.monotonic() - start
+    seconds = time.monotonic() - start
+    deadline = time.monotonic() + 60
+    while driver.execute_script("return document.readyState") != "complete":
+        if time.monotonic() > deadline:
+            sys.exit("FAIL: %s did not finish loading in 60 s" % path)
+        time.sleep(0.05)
+    return seconds
 
 
 def check_images_load(driver, what, expected):
@@ -398,7 +406,9 @@ def case_chain(a):
         driver = browser(1300, 2200)
         try:
             open_page(driver, page)
-            shown = driver.execute_script("return Array.from(document.querySelectorAll('figure.chain-panel')).map(f => [f.dataset.panel, f.querySelector('pre').textContent])")
+            shown = driver.execute_script("return Array.from(document.querySelectorAll('figure.chain-panel')).map(f => [f.dataset.panel, f.querySelector('pre') ? f.querySelector('pre').textContent : null])")
+            check(all(t is not None for _, t in shown), "chain %s: panels without their text: %s" % (scene, [p for p, t in shown if t is None]))
+            shown = [(p, t or "") for p, t in shown]
             check(len(shown) == panels, "chain %s: %d panels, expected %d" % (scene, len(shown), panels))
             text = dict(shown)
             check(len(text) == len(shown), "chain %s: a panel's name repeats: %s" % (scene, [p for p, _ in shown]))

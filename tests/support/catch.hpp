@@ -33,7 +33,8 @@ inline auto HasSubstring(const std::string& text) {
 // SKIP_RETURN_CODE (tests/CMakeLists.txt), and which tests/main.cpp never returns for a failure.
 // Catch2 2 has no SKIP, so both versions end the process the same way. This relies on CTest
 // running one case per process; run by hand, a binary stops at the first skipped case. Only for a
-// case that holds no device (the end-of-run work that releases the shared GPU is not done).
+// case that holds no device (the end-of-run work that releases the shared GPU is not done), and
+// only after REQUIREs: a CHECK that failed before it would be lost with the process.
 namespace twinraster::test {
 inline constexpr int kSkippedExitCode = 77;
 }
