@@ -3,17 +3,22 @@
 #   - a test binary lists no test case;
 #   - a binary's test cases and its CTest entries differ, in number or by name (a case CTest never
 #     runs, or an entry that names no case: catch_discover_tests splits names at ';', and a split
-#     entry would otherwise "pass" running nothing).
+#     entry would otherwise "pass" running nothing);
+#   - any CTest entry is disabled, inverted (WILL_FAIL), passed or skipped by a regular expression
+#     on its output, or skipped by an exit code other than TWINRASTER_SKIP's 77.
 # A test binary is any executable target defined under tests/; they and their sources come from
 # BUILD_DIR/test_binaries.txt (written by tests/CMakeLists.txt from the targets, so that a binary
 # with no CTest entry at all is still looked at). A case run again on another lavapipe path is an
 # extra entry named "<path> path: <case>" (tests/twin, tests/verify); it must name a real case too.
 # It does not build anything, nor run any test case: it only asks each binary for its list.
 # Run as:
-#   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DCATCH2_MAJOR=<2|3> -P check_test_lists.cmake
+#   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> [-DCATCH2_MAJOR=<2|3>] -P check_test_lists.cmake
 cmake_policy(VERSION 3.25)  # IN_LIST, string(JSON)
 if(NOT BUILD_DIR OR NOT SOURCE_DIR)
   message(FATAL_ERROR "check_test_lists: set -DBUILD_DIR and -DSOURCE_DIR")
+endif()
+if(NOT CATCH2_MAJOR)
+  include(${BUILD_DIR}/check_test_lists_args.cmake)  # written by tests/CMakeLists.txt
 endif()
 
 # The binaries and the sources compiled into them.
@@ -59,6 +64,22 @@ set(path_entries)
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   string(JSON name GET "${json}" tests ${i} name)
+  # No entry may pass without judging: not disabled, not inverted, not passed or skipped by its
+  # output, and skipped only by the project's own code (TWINRASTER_SKIP, 77).
+  string(JSON property_count ERROR_VARIABLE no_properties LENGTH "${json}" tests ${i} properties)
+  if(NOT no_properties AND property_count GREATER 0)
+    math(EXPR last_property "${property_count} - 1")
+    foreach(k RANGE ${last_property})
+      string(JSON property GET "${json}" tests ${i} properties ${k} name)
+      string(JSON value GET "${json}" tests ${i} properties ${k} value)
+      if((property MATCHES "^(DISABLED|WILL_FAIL)$" AND value)
+         OR property MATCHES "^(PASS|SKIP)_REGULAR_EXPRESSION$"
+         OR (property STREQUAL "SKIP_RETURN_CODE" AND NOT value EQUAL 77))
+        message(SEND_ERROR "CTest entry \"${name}\" has ${property} ${value}: it could pass or skip without judging")
+        math(EXPR problems "${problems} + 1")
+      endif()
+    endforeach()
+  endif()
   string(JSON command_length ERROR_VARIABLE no_command LENGTH "${json}" tests ${i} command)
   if(no_command OR command_length LESS 1)
     continue()  # an entry whose executable was not built (catch_discover_tests found nothing)
