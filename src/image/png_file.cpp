@@ -1,5 +1,7 @@
 #include "image/png_file.hpp"
 
+#include "image/png_bytes.hpp"
+
 #include <libdeflate.h>
 
 #include <algorithm>
@@ -52,7 +54,6 @@ std::vector<std::uint8_t> FilteredScanlines(const Image& image) {
   return raw;
 }
 
-constexpr char kSignature[] = "\x89PNG\r\n\x1a\n";
 constexpr std::size_t kMaxNotes = 64;
 constexpr std::size_t kMaxKey = 79;
 constexpr std::size_t kMaxValue = 1024;
@@ -111,7 +112,7 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   const std::size_t zlib_size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
   if (zlib_size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
 
-  std::string png(kSignature, 8);
+  std::string png(png_format::kSignature);
   png.reserve(8 + 25 + text_chunks.size() + 12 + zlib_size + 12);
   std::uint8_t header[13] = {};
   for (int i = 0; i < 4; ++i) {
@@ -145,12 +146,6 @@ struct ChunkHeader {
   std::string type;
 };
 
-std::uint32_t BigEndian(const char* bytes) {
-  std::uint32_t value = 0;
-  for (int i = 0; i < 4; ++i) value = value << 8 | static_cast<unsigned char>(bytes[i]);
-  return value;
-}
-
 bool ReadBytes(std::istream& in, char* data, std::size_t size) {
   in.read(data, static_cast<std::streamsize>(size));
   return static_cast<std::size_t>(in.gcount()) == size;
@@ -163,7 +158,7 @@ std::uint64_t BytesAfterSignature(std::istream& in) {
   const std::streamoff size = in.tellg();
   in.seekg(0);
   char signature[8];
-  if (size < 8 || !ReadBytes(in, signature, 8) || std::memcmp(signature, kSignature, 8) != 0) return 0;
+  if (size < 8 || !ReadBytes(in, signature, 8) || std::string_view(signature, 8) != png_format::kSignature) return 0;
   return static_cast<std::uint64_t>(size) - 8;
 }
 
@@ -171,7 +166,7 @@ std::uint64_t BytesAfterSignature(std::istream& in) {
 std::optional<ChunkHeader> NextChunk(std::istream& in, std::uint64_t& left) {
   char header[8];
   if (left < 8 || !ReadBytes(in, header, 8)) return std::nullopt;
-  const ChunkHeader chunk{BigEndian(header), std::string(header + 4, 4)};
+  const ChunkHeader chunk{png_format::BigEndian(header), std::string(header + 4, 4)};
   if (chunk.length > kMaxChunkLength || std::uint64_t{chunk.length} + 4 > left - 8) return std::nullopt;
   left -= 8 + std::uint64_t{chunk.length} + 4;
   return chunk;
@@ -182,7 +177,7 @@ std::optional<std::pair<std::string, std::string>> ReadNote(std::istream& in, st
   std::string data(std::size_t{length} + 4, '\0');
   if (!ReadBytes(in, data.data(), data.size())) return std::nullopt;
   const std::uint32_t crc = libdeflate_crc32(libdeflate_crc32(0, "tEXt", 4), data.data(), length);
-  if (crc != BigEndian(data.data() + length)) return std::nullopt;
+  if (crc != png_format::BigEndian(data.data() + length)) return std::nullopt;
   data.resize(length);
   const std::size_t nul = data.find('\0');
   if (nul == std::string::npos) return std::nullopt;

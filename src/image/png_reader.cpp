@@ -4,6 +4,8 @@
 // allocation is the RGBA image itself; a file is streamed, never read whole.
 #include "image/png_file.hpp"
 
+#include "image/png_bytes.hpp"
+
 #include <spng.h>
 #include <zlib.h>
 
@@ -107,12 +109,6 @@ struct Header {
   unsigned depth = 0, colour = 0, interlace = 0;
 };
 
-std::uint32_t BigEndian(const char* bytes) {
-  std::uint32_t value = 0;
-  for (int i = 0; i < 4; ++i) value = value << 8 | static_cast<unsigned char>(bytes[i]);
-  return value;
-}
-
 // The bytes the image data must inflate to: each row's filter byte and samples, for the whole
 // image or for each of Adam7's passes (PNG spec 7.2, 8.2). 0 for a header libspng will refuse.
 std::uint64_t FilteredSize(const Header& h) {
@@ -189,9 +185,8 @@ class ImageDataCheck {
 // - the image data's zlib stream is whole and exactly as long as the header needs (ImageDataCheck).
 // Whatever else is wrong (no signature, a bad IHDR, a cut-off chunk) is left to libspng to name.
 void CheckStructure(std::istream& in, const std::string& name, const PngSizeCheck& check) {
-  static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
   char header[8];
-  if (!in.read(header, 8) || !std::equal(header, header + 8, kSignature)) return;
+  if (!in.read(header, 8) || std::string_view(header, 8) != png_format::kSignature) return;
   ImageDataCheck data(name);
   bool have_header = false;
   std::vector<char> piece(std::size_t{1} << 16);
@@ -199,11 +194,11 @@ void CheckStructure(std::istream& in, const std::string& name, const PngSizeChec
     const bool letters = std::all_of(header + 4, header + 8, [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); });
     if (!letters) Refuse(name, "corrupt: a chunk type that is not four ASCII letters (bytes " + Hex(header + 4, 4) + ")");
     const std::string_view type(header + 4, 4);
-    std::uint32_t length = BigEndian(header);
+    std::uint32_t length = png_format::BigEndian(header);
     if (type == "IHDR" && !have_header && length == 13) {
       char ihdr[13];
       if (!in.read(ihdr, 13)) return;
-      const Header h{BigEndian(ihdr), BigEndian(ihdr + 4), static_cast<unsigned char>(ihdr[8]),
+      const Header h{png_format::BigEndian(ihdr), png_format::BigEndian(ihdr + 4), static_cast<unsigned char>(ihdr[8]),
                      static_cast<unsigned char>(ihdr[9]), static_cast<unsigned char>(ihdr[12])};
       if (h.width > kMaxPngSide || h.height > kMaxPngSide) Refuse(name, Problem(SPNG_EUSER_WIDTH));
       if (check) check(h.width, h.height);
