@@ -28,6 +28,7 @@ test_packages=(
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
   chromium chromium-driver python3-selenium  # tests open every kind of page in headless Chromium
   libxml2-utils                  # xmllint: render --junit's XML against docs/schemas/junit.xsd
+  clang-format                   # scripts/check-format.sh: the code as .clang-format writes it
 )
 case "${1:-}" in
   "") ;;

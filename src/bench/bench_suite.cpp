@@ -8,6 +8,7 @@
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
 #include "base/stopwatch.hpp"
+#include "run/backend_draws.hpp"
 #include "truth/truth_renderer.hpp"
 #include "base/usage_error.hpp"
 
@@ -111,6 +112,103 @@ std::vector<std::string> BenchMethodNames() {
   return names;
 }
 
+namespace {
+
+using Lavapipes = std::vector<std::pair<unsigned, std::optional<GpuRenderer>>>;
+
+// One lavapipe per thread count the renderer rows use (one thread, every core), made only when
+// those rows are asked for, so that the rest runs without Vulkan.
+Lavapipes MakeLavapipes(unsigned cores, bool wanted) {
+  Lavapipes lavapipes;
+  for (unsigned threads : {1u, cores}) {
+    if (!lavapipes.empty() && threads == lavapipes.front().first) break;
+    lavapipes.emplace_back(threads, std::nullopt);
+    if (wanted) lavapipes.back().second.emplace(LavapipeWithThreads(threads));
+  }
+  return lavapipes;
+}
+
+// What every row of a scene compares against: its draw list, the truth's image and, for lit
+// scenes, which triangle the truth shows where.
+struct SceneTruth {
+  Scene scene;
+  DrawList list;
+  ExactClipPositions exact;
+  TruthImage surfaces;
+  std::optional<DrawList> surface_list;  // lit scenes: the positions rasterized once more with SurfaceList
+};
+
+SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
+  SceneTruth t;
+  t.scene = LoadScene(file);
+  t.scene.wireframe = false;  // the bench compares filled (and lit) images with the truth, whatever the scene asks
+  t.list = BuildDrawList(t.scene);
+  t.exact = ExactClipSpace(t.scene);
+  const ExactLight light(t.scene);
+  t.surfaces = RenderTruthSurfaces(t.list, t.exact, &light);
+  if (t.list.lighting) t.surface_list = SurfaceList(t.list);
+  return t;
+}
+
+// The row's image against the truth: pixels, z-fighting and, on lit scenes, how far its colours are
+// from the truth's, triangle by triangle.
+void MeasureImage(BenchRow& row, const std::filesystem::path& file, const SceneTruth& t, const Image& image,
+                  const ClipPositions* clip, unsigned cores) {
+  row.image_error_px = CompareImages(image, t.surfaces.image).differing_pixels;
+  row.z_fighting_px = ZFighting(file, image, t.surfaces.image);
+  if (!t.surface_list) return;
+  const Image surfaces = clip ? RasterizeClipSpace(*t.surface_list, *clip, CpuOptions{cores})
+                              : RenderOnCpu(*t.surface_list, CpuOptions{cores});
+  const ColourError error = SameSurfaceColourError(image, surfaces, t.surfaces);
+  row.colour_error = error.max_channel;
+  row.colour_pixels = error.pixels;
+}
+
+BenchRow BaseRow(const std::filesystem::path& file, const BenchOptions& options, const DrawList& list) {
+  BenchRow base;
+  base.scene = std::filesystem::relative(file, options.scenes_dir).replace_extension().generic_string();
+  base.width = list.width, base.height = list.height;
+  for (const DrawCall& d : list.draws) {
+    base.vertices += list.meshes[d.mesh].positions.size();
+    base.triangles += list.meshes[d.mesh].triangles.size();
+  }
+  return base;
+}
+
+// A vertex method: its vertex stage alone, then a whole frame on the CPU twin's rasterizer.
+BenchRow MethodRow(VertexMethod method, const BenchRow& base, const std::filesystem::path& file, const SceneTruth& t,
+                   int runs, unsigned cores) {
+  BenchRow row = base;
+  row.method = std::string(MethodName(method));
+  row.threads = cores;
+  ClipPositions clip;
+  row.vertex_ms = MedianMs(runs, [&] { clip = TransformVertices(t.scene, t.list, method); });
+  row.vertex_error_px = VertexErrorPixels(clip, t.exact, t.list.width, t.list.height);
+  Image image;
+  row.frame_ms = MedianMs(runs, [&] {
+    image = RasterizeClipSpace(t.list, TransformVertices(t.scene, t.list, method), CpuOptions{cores});
+  });
+  MeasureImage(row, file, t, image, &clip, cores);
+  return row;
+}
+
+// A renderer as a user runs it: the twin (run/backend_draws.hpp, as `render` draws) or lavapipe
+// in this process, so that its frame time holds no child process.
+BenchRow RendererRow(bool twin, unsigned threads, std::optional<GpuRenderer>& lavapipe, const BenchRow& base,
+                     const std::filesystem::path& file, const SceneTruth& t, int runs, unsigned cores) {
+  BenchRow row = base;
+  row.method = twin ? "cpu-twin" : "lavapipe";
+  row.threads = threads;
+  Image image;
+  row.frame_ms = MedianMs(runs, [&] {
+    image = twin ? run::DrawOnTwin(t.list, cpu::RasterRules{}, threads).image : lavapipe->Render(t.list);
+  });
+  MeasureImage(row, file, t, image, nullptr, cores);  // lavapipe covers what the twin covers, bit for bit
+  return row;
+}
+
+}  // namespace
+
 BenchResult RunBench(const BenchOptions& options) {
   Stopwatch total;
   BenchResult result;
@@ -120,13 +218,7 @@ BenchResult RunBench(const BenchOptions& options) {
            std::find(options.methods.begin(), options.methods.end(), name) != options.methods.end();
   };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  // lavapipe is created only when its rows are asked for, so the rest runs without Vulkan.
-  std::vector<std::pair<unsigned, std::optional<GpuRenderer>>> lavapipes;
-  for (unsigned threads : {1u, cores}) {
-    if (!lavapipes.empty() && threads == lavapipes.front().first) break;
-    lavapipes.emplace_back(threads, std::nullopt);
-    if (selected("lavapipe")) lavapipes.back().second.emplace(LavapipeWithThreads(threads));
-  }
+  Lavapipes lavapipes = MakeLavapipes(cores, selected("lavapipe"));
   result.machine = MachineDescription(lavapipes.front().second ? lavapipes.front().second->DeviceName() : "not used");
 
   const std::vector<std::filesystem::path> files = SuiteScenes(options);
@@ -142,71 +234,17 @@ BenchResult RunBench(const BenchOptions& options) {
     if (options.on_row) options.on_row(result.rows.back(), result.rows.size(), total_rows);
   };
   for (const std::filesystem::path& file : files) {
-    Scene scene = LoadScene(file);
-    scene.wireframe = false;  // the bench compares filled (and lit) images with the truth, whatever the scene asks
-    const DrawList list = BuildDrawList(scene);
-    const ExactClipPositions exact = ExactClipSpace(scene);
-    const ExactLight light(scene);
-    const TruthImage truth_surfaces = RenderTruthSurfaces(list, exact, &light);
-    const Image& truth = truth_surfaces.image;
-    // Lit scenes: how far a method's colours are from the truth's, triangle by triangle (which
-    // triangle a method shows where: its positions rasterized once more with SurfaceList).
-    const std::optional<DrawList> surface_list = list.lighting ? SurfaceList(list) : std::nullopt;
-    const auto measure_colour = [&](BenchRow& row, const Image& image, const ClipPositions* clip) {
-      if (!surface_list) return;
-      const Image surfaces = clip ? RasterizeClipSpace(*surface_list, *clip, CpuOptions{cores})
-                                  : RenderOnCpu(*surface_list, CpuOptions{cores});
-      const ColourError error = SameSurfaceColourError(image, surfaces, truth_surfaces);
-      row.colour_error = error.max_channel;
-      row.colour_pixels = error.pixels;
-    };
-
-    BenchRow base;
-    base.scene = std::filesystem::relative(file, options.scenes_dir).replace_extension().generic_string();
-    base.width = list.width, base.height = list.height;
-    for (const DrawCall& d : list.draws) {
-      base.vertices += list.meshes[d.mesh].positions.size();
-      base.triangles += list.meshes[d.mesh].triangles.size();
-    }
-
-    // Each method: its vertex stage alone, then a whole frame on the CPU twin's rasterizer.
+    const SceneTruth truth = MakeSceneTruth(file);
+    const BenchRow base = BaseRow(file, options, truth.list);
     for (VertexMethod method : kAllMethods) {
-      if (!selected(MethodName(method))) continue;
-      BenchRow row = base;
-      row.method = std::string(MethodName(method));
-      row.threads = cores;
-      ClipPositions clip;
-      row.vertex_ms = MedianMs(options.runs, [&] { clip = TransformVertices(scene, list, method); });
-      row.vertex_error_px = VertexErrorPixels(clip, exact, list.width, list.height);
-      Image image;
-      row.frame_ms = MedianMs(options.runs, [&] {
-        image = RasterizeClipSpace(list, TransformVertices(scene, list, method), CpuOptions{cores});
-      });
-      row.image_error_px = CompareImages(image, truth).differing_pixels;
-      row.z_fighting_px = ZFighting(file, image, truth);
-      measure_colour(row, image, &clip);
-      add_row(row);
+      if (selected(MethodName(method))) add_row(MethodRow(method, base, file, truth, options.runs, cores));
     }
-
-    // The two renderers as a user runs them, with one thread and with every core, back to back.
-    for (auto& entry : lavapipes) {
-      // Named copies, not structured bindings: clang 14 cannot capture those in the lambda below.
-      const unsigned threads = entry.first;
-      std::optional<GpuRenderer>& lavapipe = entry.second;
-      for (const char* renderer : {"cpu-twin", "lavapipe"}) {
-        if (!selected(renderer)) continue;
-        BenchRow row = base;
-        row.method = renderer;
-        row.threads = threads;
-        Image image;
-        const bool twin = row.method == "cpu-twin";
-        row.frame_ms = MedianMs(options.runs, [&] {
-          image = twin ? RenderOnCpu(list, CpuOptions{threads}) : lavapipe->Render(list);
-        });
-        row.image_error_px = CompareImages(image, truth).differing_pixels;
-        row.z_fighting_px = ZFighting(file, image, truth);
-        measure_colour(row, image, nullptr);  // lavapipe covers what the twin covers, bit for bit
-        add_row(row);
+    // The two renderers with one thread and with every core, back to back.
+    for (auto& [threads, lavapipe] : lavapipes) {
+      for (const bool twin : {true, false}) {
+        if (selected(twin ? "cpu-twin" : "lavapipe")) {
+          add_row(RendererRow(twin, threads, lavapipe, base, file, truth, options.runs, cores));
+        }
       }
     }
   }

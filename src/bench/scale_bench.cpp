@@ -4,21 +4,20 @@
 #include "base/usage_error.hpp"
 #include "bench/bench_suite.hpp"
 #include "chain/draw_list.hpp"
-#include "cpu/cpu_renderer.hpp"
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
+#include "run/backend_draws.hpp"
+#include "run/judge_image.hpp"
 #include "scene/scene_loader.hpp"
-#include "cpu/triangle_setup.hpp"
-#include "verify/verifier.hpp"
 
-#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 namespace twinraster {
@@ -71,22 +70,6 @@ double PeakMib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-struct Stage {
-  const char* key;
-  const char* label;
-  double ScaleRow::*value;
-};
-constexpr std::array<Stage, 9> kStages = {{
-    {"load_ms", "load", &ScaleRow::load_ms},
-    {"chain_ms", "host chain", &ScaleRow::chain_ms},
-    {"gpu_setup_ms", "gpu set-up", &ScaleRow::gpu_setup_ms},
-    {"gpu_draw_ms", "gpu draw", &ScaleRow::gpu_draw_ms},
-    {"gpu_per_draw_ms", "gpu, F per draw", &ScaleRow::gpu_per_draw_ms},
-    {"twin_setup_ms", "twin set-up", &ScaleRow::twin_setup_ms},
-    {"twin_draw_ms", "twin draw", &ScaleRow::twin_draw_ms},
-    {"png_ms", "png", &ScaleRow::png_ms},
-    {"verify_ms", "verify", &ScaleRow::verify_ms},
-}};
 
 }  // namespace
 
@@ -102,6 +85,8 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   // kInstancingThreshold draws of one mesh on), and F pushed per draw for comparison.
   GpuRenderer gpu;
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
+  // The twin copies the lavapipe that draws here, as `render` chooses it.
+  const cpu::RasterRules twin_rules = cpu::ChooseTwinRules(gpu.DeviceName(), gpu.Device().driver_info, cpu::DetectCpuPath()).rules;
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;
@@ -123,18 +108,17 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       GpuTimings p;
       const Image per_draw_image = pushing.Render(list, &p);
       gpu_per_draw.push_back(p.setup_ms + p.draw_ms);
-      CpuTimings c;
-      const Image twin_image = RenderOnCpu(list, {}, &c);
-      twin_setup.push_back(c.setup_ms);
-      twin_draw.push_back(c.draw_ms);
+      const run::BackendRun twin = run::DrawOnTwin(list, twin_rules, 0);
+      const Image& twin_image = twin.image;
+      twin_setup.push_back(twin.record.setup_ms);
+      twin_draw.push_back(twin.record.draw_ms);
       clock.Lap();
       const std::string bytes = EncodePng(twin_image);
       png.push_back(clock.Lap());
-      static_cast<void>(verify::VerifyImage(scene, list, twin_image, {.subpixel_bits = cpu::kSubpixelBits}));
-      judge.push_back(clock.Lap());
+      judge.push_back(run::JudgeImage(scene, twin_image, twin.drawn_by.rasterizes, false).verify_ms);
       row.instances = list.draws.size();
       row.triangles = list.draws.size() * list.meshes.front().triangles.size();
-      row.threads = c.threads;
+      row.threads = twin.record.threads;
       row.identical = CompareImages(gpu_image, twin_image).Equal() && CompareImages(per_draw_image, twin_image).Equal();
     }
     row.load_ms = Median(load), row.chain_ms = Median(chain), row.gpu_setup_ms = Median(gpu_setup);
@@ -147,60 +131,6 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
     if (options.on_row) options.on_row(row, n + 1, counts.size());
   }
   return result;
-}
-
-std::string ScaleTable(const ScaleResult& result) {
-  std::ostringstream s;
-  s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine << "\n";
-  char line[256];
-  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s %8s |%8s  %s\n", "instances", "triangles",
-                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw", "png", "verify", "peak MB",
-                "gpu == twin");
-  s << line;
-  for (const ScaleRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f %8.1f |%8.0f  %s\n",
-                  r.instances, r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
-                  r.gpu_draw_ms, r.gpu_per_draw_ms, r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.verify_ms, r.peak_mib,
-                  r.identical ? "yes" : "NO");
-    s << line;
-  }
-  s << "(milliseconds; per-draw: lavapipe's set-up + draw with F pushed per draw, against gpu set-up + draw as a user\n"
-       " gets it, instanced from " << gpu::kInstancingThreshold << " draws of a mesh on; twin on " << (result.rows.empty() ? 0 : result.rows.front().threads)
-    << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after that size)\n";
-  return s.str();
-}
-
-std::string ScaleCsv(const ScaleResult& result) {
-  std::ostringstream s;
-  s << "instances,triangles,json_bytes,threads";
-  for (const Stage& stage : kStages) s << "," << stage.key;
-  s << ",peak_mib,identical\n";
-  for (const ScaleRow& r : result.rows) {
-    s << r.instances << "," << r.triangles << "," << r.json_bytes << "," << r.threads;
-    for (const Stage& stage : kStages) s << "," << r.*stage.value;
-    s << "," << r.peak_mib << "," << (r.identical ? "true" : "false") << "\n";
-  }
-  return s.str();
-}
-
-nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
-  nlohmann::ordered_json j;
-  j["format"] = kScaleJsonFormat;
-  j["machine"] = result.machine;
-  j["runs"] = result.runs;
-  j["rows"] = nlohmann::ordered_json::array();
-  for (const ScaleRow& r : result.rows) {
-    nlohmann::ordered_json row;
-    row["instances"] = r.instances;
-    row["triangles"] = r.triangles;
-    row["json_bytes"] = r.json_bytes;
-    row["threads"] = r.threads;
-    for (const Stage& stage : kStages) row[stage.key] = r.*stage.value;
-    row["peak_mib"] = r.peak_mib;
-    row["identical"] = r.identical;
-    j["rows"].push_back(std::move(row));
-  }
-  return j;
 }
 
 }  // namespace twinraster

@@ -3,8 +3,6 @@
 // memory, so that cost can be read against instance count.
 #pragma once
 
-#include <nlohmann/json_fwd.hpp>
-
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -46,10 +44,5 @@ struct ScaleResult {
 // Cubes in a centred grid as close to a cube as the count allows, each written out as its own
 // instance, seen whole from above a corner. Throws GpuUnavailable without a Vulkan device.
 ScaleResult RunScaleBench(const ScaleOptions& options);
-
-inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/2";
-std::string ScaleTable(const ScaleResult& result);
-std::string ScaleCsv(const ScaleResult& result);
-nlohmann::ordered_json ScaleJson(const ScaleResult& result);
 
 }  // namespace twinraster

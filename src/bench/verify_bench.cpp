@@ -1,18 +1,10 @@
 #include "bench/verify_bench.hpp"
 
-#include "base/stopwatch.hpp"
 #include "bench/bench_suite.hpp"
-#include "chain/draw_list.hpp"
-#include "cpu/cpu_renderer.hpp"
-#include "cpu/triangle_setup.hpp"
+#include "run/run_scene.hpp"
 #include "scene/obj_scene.hpp"
-#include "verify/verifier.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdio>
-#include <sstream>
 
 namespace twinraster {
 
@@ -24,71 +16,31 @@ VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scene
   VerifyBenchResult result;
   result.runs = runs;
   result.machine = MachineDescription("not used");
+  // The twin drawing and the verifier judging its image, as `render --backend cpu --verify` runs
+  // them: side by side in each run, so that the machine's load falls on both alike.
+  run::RunOptions options;
+  options.backends = run::Backends::kCpu;
+  options.verify = true;
+  run::GpuSession no_gpu({});  // --backend cpu: never started
   for (const auto& file : scenes) {
     const Scene scene = LoadSceneOrObj(file);
-    const DrawList list = BuildDrawList(scene);
     VerifyBenchRow row;
     row.scene = file.string();
-    row.width = list.width, row.height = list.height;
-    for (const DrawCall& d : list.draws) row.triangles += list.meshes[d.mesh].triangles.size();
     std::vector<double> twin, verify;
-    for (int run = 0; run < runs; ++run) {
-      // Side by side in each run, so that the machine's load falls on both alike.
-      CpuTimings timings;
-      Stopwatch draw_clock;
-      const Image image = RenderOnCpu(list, {}, &timings);
-      twin.push_back(draw_clock.Milliseconds());
-      row.twin_threads = timings.threads;
-      Stopwatch verify_clock;
-      const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = cpu::kSubpixelBits});
-      verify.push_back(verify_clock.Milliseconds());
-      row.uncertain = v.uncertain, row.covered = v.covered, row.violations = v.violations;
+    for (int i = 0; i < runs; ++i) {
+      const run::RunRecord r = run::RunScene(scene, row.scene, options, no_gpu).record;
+      const run::BackendRecord& drawn = r.backends.front();
+      twin.push_back(drawn.setup_ms + drawn.draw_ms + drawn.readback_ms);
+      verify.push_back(r.verify_ms);
+      row.width = r.width, row.height = r.height, row.triangles = r.triangles;
+      row.twin_threads = drawn.threads;
+      row.uncertain = r.verification->uncertain, row.covered = r.verification->covered;
+      row.violations = r.verification->violations;
     }
     row.twin_ms = Median(twin), row.verify_ms = Median(verify);
     result.rows.push_back(row);
   }
   return result;
-}
-
-std::string VerifyBenchTable(const VerifyBenchResult& result) {
-  std::ostringstream s;
-  s << "Verify: the twin's render against the verifier's judgement of it, medians of " << result.runs << " run(s); "
-    << result.machine << "\n";
-  char line[256];
-  std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles", "twin ms",
-                "verify ms", "ratio", "uncertain", "violations");
-  s << line;
-  for (const VerifyBenchRow& r : result.rows) {
-    const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
-    const double percent = r.covered ? 100.0 * double(r.uncertain) / double(r.covered) : 0.0;
-    char uncertain[32];
-    std::snprintf(uncertain, sizeof uncertain, "%.2f %%", percent);
-    std::snprintf(line, sizeof line, "%-36s %11s %10zu | %9.1f %10.1f %6.2f | %10s %10llu\n",
-                  std::filesystem::path(r.scene).filename().string().c_str(), size.c_str(), r.triangles, r.twin_ms,
-                  r.verify_ms, r.Ratio(), uncertain, static_cast<unsigned long long>(r.violations));
-    s << line;
-  }
-  s << "(twin: RenderOnCpu on " << (result.rows.empty() ? 0 : result.rows.front().twin_threads)
-    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; uncertain: of the covered pixels)\n";
-  return s.str();
-}
-
-nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (const VerifyBenchRow& r : result.rows) {
-    rows.push_back({{"scene", r.scene},
-                    {"width", r.width},
-                    {"height", r.height},
-                    {"triangles", r.triangles},
-                    {"twin_threads", r.twin_threads},
-                    {"twin_ms", r.twin_ms},
-                    {"verify_ms", r.verify_ms},
-                    {"ratio", r.Ratio()},
-                    {"uncertain", r.uncertain},
-                    {"covered", r.covered},
-                    {"violations", r.violations}});
-  }
-  return {{"format", "twinraster.bench-verify/1"}, {"machine", result.machine}, {"runs", result.runs}, {"rows", rows}};
 }
 
 }  // namespace twinraster

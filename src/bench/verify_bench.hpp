@@ -2,8 +2,6 @@
 // twin's render and the verifier's judgement of that image, side by side, medians.
 #pragma once
 
-#include <nlohmann/json_fwd.hpp>
-
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,7 +29,5 @@ struct VerifyBenchResult {
 std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesystem::path& scenes_dir);
 VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs);
 
-std::string VerifyBenchTable(const VerifyBenchResult& result);
-nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result);
 
 }  // namespace twinraster

@@ -2,7 +2,6 @@
 // bench.csv, bench.svg, bench.html, bench.json and bench.txt (all staged, so all or none are
 // replaced); --html and --svg write the page or the plot anywhere.
 #include "base/usage_error.hpp"
-#include "bench/bench_report.hpp"
 #include "bench/bench_suite.hpp"
 #include "bench/scale_bench.hpp"
 #include "bench/verify_bench.hpp"
@@ -12,6 +11,7 @@
 #include "cli/progress.hpp"
 #include "image/staged_file.hpp"
 #include "report/bench_pages.hpp"
+#include "report/bench_tables.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -63,18 +63,18 @@ int BenchScale(const BenchArguments& a) {
     };
   }
   const ScaleResult result = RunScaleBench(options);
-  const std::string table = ScaleTable(result), plot = report::ScaleChartSvg(result);
+  const std::string table = report::ScaleTable(result), plot = report::ScaleChartSvg(result);
   const std::string page = report::ScalePageHtml(result, table);
   WriteTogether(a,
-                {{"scale.csv", ScaleCsv(result)},
+                {{"scale.csv", report::ScaleCsv(result)},
                  {"scale.svg", plot},
                  {"scale-stages.svg", report::ScaleStagesSvg(result)},
                  {"scale.html", page},
-                 {"scale.json", ScaleJson(result).dump(2) + "\n"},
+                 {"scale.json", report::ScaleJson(result).dump(2) + "\n"},
                  {"scale.txt", table}},
                 page, plot);
-  if (a.json) std::cout << ScaleJson(result).dump(2) << "\n";
-  else std::cout << ScaleTable(result);
+  if (a.json) std::cout << report::ScaleJson(result).dump(2) << "\n";
+  else std::cout << report::ScaleTable(result);
   return kExitOk;
 }
 
@@ -94,9 +94,9 @@ int BenchVerify(const BenchArguments& a) {
   progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) + " run(s)...");
   const VerifyBenchResult result = RunVerifyBench(scenes, a.runs);
   progress.Clear();
-  WriteTogether(a, {{"verify.json", VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", VerifyBenchTable(result)}}, "", "");
-  if (a.json) std::cout << VerifyBenchJson(result).dump(2) << "\n";
-  else std::cout << VerifyBenchTable(result);
+  WriteTogether(a, {{"verify.json", report::VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", report::VerifyBenchTable(result)}}, "", "");
+  if (a.json) std::cout << report::VerifyBenchJson(result).dump(2) << "\n";
+  else std::cout << report::VerifyBenchTable(result);
   return kExitOk;
 }
 
@@ -125,23 +125,23 @@ int Bench(const BenchArguments& a) {
   Progress progress = Progress::OnStandardError(a.quiet);
   if (progress.active()) {
     options.on_row = [&progress](const BenchRow& row, std::size_t done, std::size_t total) {
-      progress.Line(BenchProgressLine(row, done, total));
+      progress.Line(report::BenchProgressLine(row, done, total));
     };
   }
   const BenchResult result = RunBench(options);
-  const std::string table = BenchTable(result), plot = report::BenchChartSvg(result);
+  const std::string table = report::BenchTable(result), plot = report::BenchChartSvg(result);
   const std::string page = report::BenchPageHtml(result, table);
   WriteTogether(a,
-                {{"bench.csv", BenchCsv(result)},
+                {{"bench.csv", report::BenchCsv(result)},
                  {"bench.svg", plot},
                  {"bench.html", page},
-                 {"bench.json", BenchJson(result).dump(2) + "\n"},
+                 {"bench.json", report::BenchJson(result).dump(2) + "\n"},
                  {"bench.txt", table}},
                 page, plot);
   if (a.json) {
-    std::cout << BenchJson(result).dump(2) << "\n";
+    std::cout << report::BenchJson(result).dump(2) << "\n";
   } else {
-    std::cout << BenchTable(result);
+    std::cout << report::BenchTable(result);
   }
   return kExitOk;
 }

@@ -36,10 +36,10 @@ int Compare(const CompareArguments& args) {
   }
 
   if (args.json) {
-    std::cout << CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
+    std::cout << report::CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
               << "\n";
   } else {
-    std::cout << ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + *args.diff : "") << "\n";
+    std::cout << report::ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + *args.diff : "") << "\n";
   }
   return comparison.Equal() ? kExitOk : kExitImagesDiffer;
 }

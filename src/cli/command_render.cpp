@@ -1,45 +1,31 @@
-// `twinraster render SCENE...`: draws each scene on lavapipe, on the CPU twin or both, or (--rules
-// book) as the chapter's demos draw it; writes the PNGs (staged: all of a scene's or none, or one
-// PNG to standard output) and compares the images. The Vulkan work runs in a child process, which
-// several scenes share (with its device and pipeline) until the driver crashes; they write into
-// one directory.
+// `twinraster render SCENE...`: parses the arguments, runs each scene (run/run_scene.hpp: the
+// draws, the comparison, the judgement, the verdict), writes its PNGs (staged: all of a scene's or
+// none, or one PNG to standard output), prints its record, and writes the batch's page and JUnit
+// file. Several scenes share one GPU process and write into one directory.
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
 #include "book/book_renderer.hpp"
-#include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
-#include "cpu/cpu_renderer.hpp"
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
-#include "gpu/gpu_renderer.hpp"
-#include "gpu/isolated_gpu.hpp"
-#include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
-#include "report/comparison_report.hpp"
 #include "report/image_notes.hpp"
 #include "report/junit.hpp"
 #include "report/render_outputs.hpp"
-#include "report/render_record.hpp"
-#include "report/verify_report.hpp"
-#include "cpu/triangle_setup.hpp"
+#include "run/run_scene.hpp"
 #include "scene/scene_error.hpp"
-#include "verify/verifier.hpp"
-#include "verify/verify_map.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
+#include <filesystem>
 #include <iostream>
-#include <set>
 #include <memory>
 #include <optional>
-#include <sstream>
+#include <set>
 
 namespace twinraster {
 
@@ -61,99 +47,22 @@ struct RenderArguments {
   bool quiet = false;
   std::optional<std::string> report;  // --report DIR: index.html and thumbnails
   std::optional<std::string> junit;   // --junit FILE
+  run::RunOptions run;  // the words above as the run stage takes them (ResolveOptions)
 };
 
-// A backend's record and the image it drew, until the PNGs are written.
-struct BackendRun : report::BackendRecord {
-  Image image;
-};
-
-// Who drew a backend's image and how that device rasterizes: the judgement's rules and the
-// image's PNG notes. The twin draws lines as lavapipe does, strictly, at its subpixel precision.
-report::DrawnBy DrawnByOf(const BackendRun& run, const DeviceIdentity& device) {
-  if (run.name == "gpu") {
-    return {device.name, {.subpixel_bits = int(device.subpixel_bits), .strict_lines = device.strict_lines}};
-  }
-  return {"CPU twin", {.subpixel_bits = cpu::kSubpixelBits, .strict_lines = true}};
-}
-
-// The Vulkan work runs in a child process (gpu/isolated_gpu.hpp): a driver that crashes or hangs
-// costs this scene its GPU image, not the run. The child and its device serve every scene of a
-// batch until one crashes; the next scene then gets a fresh one.
-BackendRun RenderGpu(const DrawList& list, const RenderArguments& a, const std::string& scene_argument,
-                     std::optional<GpuProcess>& gpu, Progress& progress, DeviceIdentity& device) {
-  BackendRun run;
-  run.name = "gpu";
-  progress.Status("gpu: drawing on Vulkan...");
-  if (!gpu) {
-    IsolationOptions options;
-    options.gpu.device = a.device;
-    options.timeout_seconds = a.timeout_seconds;
-    gpu.emplace(options);
-  }
-  IsolatedGpuResult r = gpu->Render(list);
-  device = r.device;
-  run.detail = r.device.name.empty() ? "no device" : r.device.name;
-  run.driver = r.device.driver_info;
-  switch (r.outcome) {
-    case GpuOutcome::kRendered:
-      break;
-    case GpuOutcome::kUnavailable:
-      throw GpuUnavailable(r.problem);  // exit 3, as before any child existed
-    case GpuOutcome::kBadList:
-      throw std::invalid_argument(r.problem);
-    case GpuOutcome::kCrashed:
-    case GpuOutcome::kTimedOut:
-      run.status = r.outcome == GpuOutcome::kCrashed ? "crashed" : "timed out";
-      run.problem = r.problem + " on " + (IsStandardStream(scene_argument) ? "<stdin>" : scene_argument);
-      return run;
-  }
-  run.image = std::move(r.image);
-  // Set-up is everything before the draw: instance, device and pipeline, then buffers.
-  run.setup_ms = r.device_ms + r.timings.setup_ms, run.draw_ms = r.timings.draw_ms;
-  run.readback_ms = r.timings.readback_ms, run.isolation_ms = r.isolation_ms;
-  return run;
-}
-
-BackendRun RenderCpu(const DrawList& list, unsigned threads, const cpu::RasterRules& rules, Progress& progress) {
-  BackendRun run;
-  run.name = "cpu";
-  progress.Status("cpu: drawing...");
-  CpuOptions options;
-  options.threads = threads;
-  options.rules = rules;
-  CpuTimings t;
-  run.image = RenderOnCpu(list, options, &t);
-  run.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
-  run.setup_ms = t.setup_ms, run.draw_ms = t.draw_ms, run.readback_ms = t.readback_ms;
-  return run;
-}
-
-// The chapter's demos draw on one thread, straight into the image: all of it is drawing.
-BackendRun RenderBook(const Scene& scene, const std::string& scene_argument, Progress& progress) {
-  BackendRun run;
-  run.name = "cpu", run.detail = "book rules: the chapter's demos, 1 thread";
-  progress.Status("cpu: drawing by the book's rules...");
-  Stopwatch clock;
-  try {
-    run.image = book::RenderScene(scene);
-  } catch (const book::BookRulesError& e) {
-    // Reported as a problem with the scene, like the loader's, so that several scenes go on.
-    throw SceneError(IsStandardStream(scene_argument) ? "<stdin>" : scene_argument, e.where(),
-                     "--rules book: " + e.problem());
-  }
-  run.draw_ms = clock.Milliseconds();
-  return run;
-}
-
-// --rules book draws on the CPU only, so it implies --backend cpu; asking for another is a mistake.
-void ResolveRules(RenderArguments& a) {
-  if (a.rules != "book") return;
+// The run's typed options, from the words parsed; every later step reads these. --rules book draws
+// on the CPU only, so it implies --backend cpu; asking for another is a mistake.
+void ResolveOptions(RenderArguments& a) {
+  a.run.backends = a.backend == "gpu" ? run::Backends::kGpu : a.backend == "cpu" ? run::Backends::kCpu : run::Backends::kBoth;
+  a.run.rules = a.rules == "book" ? run::Rules::kBook : run::Rules::kVulkan;
+  a.run.verify = a.verify;
+  a.run.threads = a.threads;
+  if (a.run.rules != run::Rules::kBook) return;
   if (a.verify) throw UsageError("--verify judges by Vulkan's rules, and --rules book draws by the demos': drop one of them");
-  if (a.backend_given && a.backend != "cpu") {
+  if (a.backend_given && a.run.backends != run::Backends::kCpu) {
     throw UsageError("--rules book draws on the CPU only, as the chapter's demos do: drop --backend " + a.backend);
   }
-  a.backend = "cpu";
+  a.run.backends = run::Backends::kCpu;
 }
 
 // Every check on the arguments that needs no scene and no device, so that a mistake costs nothing.
@@ -188,7 +97,7 @@ void CheckOutput(const RenderArguments& a) {
     }
     return;
   }
-  if (a.backend == "both") {
+  if (a.run.backends == run::Backends::kBoth) {
     throw UsageError("-o - writes one PNG to standard output, and --backend both makes two: add --backend gpu or "
                      "--backend cpu, or give -o OUT.png");
   }
@@ -199,138 +108,104 @@ void CheckOutput(const RenderArguments& a) {
   }
 }
 
+// A report shows the map of every judgement; --verify asks for it; -o - has nowhere to put it.
+run::RunOptions RunOptionsOf(const RenderArguments& a, bool to_stdout) {
+  run::RunOptions options = a.run;
+  options.map = (a.verify || a.report) && !to_stdout;
+  return options;
+}
+
 // Thumbnails for the batch page, staged with the scene's other files.
-void StageThumbnails(const report::RenderRecord& record, const std::string& report_dir,
-                     const std::vector<std::pair<std::string, const Image*>>& images, std::vector<StagedFile>& staged) {
+void StageThumbnails(const run::RunResult& result, const std::string& report_dir, std::vector<StagedFile>& staged) {
+  const run::RunRecord& record = result.record;
+  std::vector<std::pair<report::ImageKind, const Image*>> images;
+  for (std::size_t i = 0; i < record.backends.size(); ++i) {
+    const bool gpu = record.backends[i].backend == run::Backend::kGpu;
+    images.emplace_back(gpu ? report::ImageKind::kGpu : report::ImageKind::kCpu, &result.images[i]);
+  }
+  if (result.diff) images.emplace_back(report::ImageKind::kDiff, &*result.diff);
+  if (result.map) images.emplace_back(report::ImageKind::kMap, &*result.map);
   for (const auto& [kind, image] : images) {
     if (report::FullImage(record, kind).empty()) continue;
     const std::filesystem::path file = std::filesystem::path(report_dir) / report::ThumbnailPath(record, kind);
-    const bool marks = kind == "diff" || kind == "map";  // saturated marks on grey: keep them visible
+    const bool marks = kind == report::ImageKind::kDiff || kind == report::ImageKind::kMap;  // keep saturated marks visible
     staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide,
                                               marks ? ThumbnailFilter::kMostSaturated : ThumbnailFilter::kMean)));
   }
 }
 
+// Names and encodes every image of the run, each staged in full before any is renamed into place
+// (or, for -o -, kept for standard output), and records the files in the run's record.
+std::vector<StagedFile> StageImages(run::RunResult& result, const RenderArguments& a, const std::string& out,
+                                    std::string& png_bytes) {
+  run::RunRecord& record = result.record;
+  const bool to_stdout = IsStandardStream(out);
+  std::vector<StagedFile> staged;
+  for (std::size_t i = 0; i < record.backends.size(); ++i) {
+    run::BackendRecord& backend = record.backends[i];
+    if (!backend.Drawn()) continue;
+    backend.output = a.run.backends == run::Backends::kBoth ? Suffixed(out, backend.Name()) : out;
+    Stopwatch clock;
+    const PngNotes notes = report::NotesOf(result.drawn_by[i]);
+    if (to_stdout) png_bytes = EncodePng(result.images[i], a.png_level, notes);
+    else staged.push_back(StagePng(backend.output, result.images[i], a.png_level, notes));
+    backend.png_ms = clock.Milliseconds();
+  }
+  if (result.diff) {
+    record.diff = Suffixed(out, "diff");
+    staged.push_back(StagePng(record.diff, *result.diff, a.png_level));
+  }
+  if (result.map) {
+    record.map = Suffixed(record.Find(*record.judged)->output, "map");
+    staged.push_back(StagePng(record.map, *result.map, a.png_level));
+  }
+  if (a.report) StageThumbnails(result, *a.report, staged);
+  return staged;
+}
+
 // One scene, from reading it to its files and its record (which render prints, and the page and
 // JUnit file read). `directory`: where several scenes' files go.
-report::RenderRecord RenderScene(const RenderArguments& a, const std::string& scene_argument,
-                                 const std::optional<std::string>& directory, std::optional<GpuProcess>& gpu,
-                                 Progress& progress) {
+run::RunRecord RenderScene(const RenderArguments& a, const std::string& scene_argument,
+                           const std::optional<std::string>& directory, run::GpuSession& gpu, Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
   Stopwatch total_clock;
-  Stopwatch load_clock;
+  const std::string source = IsStandardStream(scene_argument) ? "<stdin>" : scene_argument;
   Scene scene = LoadSceneArgument(scene_argument);
+  const double load_ms = total_clock.Milliseconds();
   if (a.wireframe) scene.wireframe = true;
   const std::string out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
                                     : a.output.value_or(scene.name + ".png");
-  const bool to_stdout = IsStandardStream(out);
-  const bool book = a.rules == "book";
-  const DrawList list = book ? DrawList{} : BuildDrawList(scene);  // the book draws from the scene
-
-  report::RenderRecord record;
-  record.scene = scene_argument;
-  record.name = scene.name;
-  record.rules = a.rules;
-  record.wireframe = book || scene.wireframe;  // the book's demos draw wireframes only
-  record.width = scene.canvas.width, record.height = scene.canvas.height;
-  record.instances = scene.instances.size();
-  for (const Instance& instance : scene.instances) record.triangles += scene.models[instance.model].triangles.size();
-  record.load_ms = load_clock.Milliseconds();
-
-  // Render everything before writing anything: a run that fails writes no file at all. A GPU
-  // process that crashes or times out is a result: the twin still draws and its image is written.
-  std::vector<BackendRun> runs;
-  DeviceIdentity device;
-  if (book) {
-    runs.push_back(RenderBook(scene, scene_argument, progress));
-  } else {
-    if (a.backend != "cpu") runs.push_back(RenderGpu(list, a, scene_argument, gpu, progress, device));  // GpuUnavailable: exit 3
-    if (a.backend != "gpu") {
-      // The twin copies the lavapipe that drew (or, with no device asked, its default release).
-      record.twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
-      runs.push_back(RenderCpu(list, a.threads, record.twin->rules, progress));
-    }
+  // Everything is drawn before anything is written: a run that fails writes no file at all.
+  run::RunResult result;
+  try {
+    result = run::RunScene(scene, source, RunOptionsOf(a, IsStandardStream(out)), gpu,
+                           [&](std::string_view text) { progress.Status(text); });
+  } catch (const book::BookRulesError& e) {
+    // A problem with the scene, like the loader's, so that several scenes go on.
+    throw SceneError(source, e.where(), "--rules book: " + e.problem());
   }
-  for (BackendRun& run : runs) {
-    if (run.Drawn()) run.output = a.backend == "both" ? Suffixed(out, run.name) : out;
-  }
-  const bool gpu_failed = std::any_of(runs.begin(), runs.end(), [](const BackendRun& r) { return !r.Drawn(); });
+  result.record.scene = scene_argument;
+  result.record.load_ms = load_ms;
 
-  const std::string diff_file = to_stdout ? "" : Suffixed(out, "diff");
-  if (runs.size() == 2 && !gpu_failed) {
-    progress.Status("comparing gpu and cpu...");
-    record.comparison = CompareImages(runs[0].image, runs[1].image);
-  }
-  const bool differ = record.comparison && !record.comparison->Equal();
-
-  // The verifier judges the image drawn (the GPU's when there is one) when asked, and whenever the
-  // two images differ, to say whether the difference is one Vulkan allows.
-  const BackendRun* judged = nullptr;
-  if (!book && (a.verify || differ)) {
-    for (const BackendRun& run : runs) {
-      if (run.Drawn() && (!judged || run.name == "gpu")) judged = &run;
-    }
-  }
-  std::optional<Image> map;
-  if (judged) {
-    progress.Status("verifying the " + judged->name + " image...");
-    Stopwatch clock;
-    record.verification = verify::VerifyImage(scene, list, judged->image, DrawnByOf(*judged, device).rasterizes);
-    record.verify_ms = clock.Milliseconds();
-    record.judged = judged->name;
-    // A report shows the map of every judgement; otherwise --verify asks for it.
-    if ((a.verify || a.report) && !to_stdout) {
-      record.map = Suffixed(judged->output, "map");
-      map = verify::VerificationMap(judged->image, *record.verification);
-    }
-    record.verification->pixels = {};  // the map holds them; a batch's records stay small
-  }
-
-  // Every output is encoded and staged in full before any is renamed into place (or written out).
-  progress.Status(runs.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
-  std::vector<StagedFile> staged;
+  progress.Status(result.record.backends.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
   std::string png_bytes;  // for -o -
-  for (BackendRun& run : runs) {
-    if (!run.Drawn()) continue;
-    Stopwatch clock;
-    const PngNotes notes = report::NotesOf(DrawnByOf(run, device));
-    if (to_stdout) png_bytes = EncodePng(run.image, a.png_level, notes);
-    else staged.push_back(StagePng(run.output, run.image, a.png_level, notes));
-    run.png_ms = clock.Milliseconds();
-  }
-  std::optional<Image> diff;
-  if (differ) {
-    record.diff = diff_file;
-    diff = DiffImage(runs[0].image, runs[1].image);
-    staged.push_back(StagePng(diff_file, *diff, a.png_level));
-  }
-  if (map) staged.push_back(StagePng(record.map, *map, a.png_level));
-  for (const BackendRun& run : runs) record.backends.push_back(run);  // the record part, without the image
-  if (a.report) {
-    std::vector<std::pair<std::string, const Image*>> images;
-    for (const BackendRun& run : runs) images.emplace_back(run.name, &run.image);
-    if (diff) images.emplace_back("diff", &*diff);
-    if (map) images.emplace_back("map", &*map);
-    StageThumbnails(record, *a.report, images, staged);
-  }
-  for (StagedFile& file : staged) file.Commit();
+  for (StagedFile& file : StageImages(result, a, out, png_bytes)) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   std::error_code ignored;
-  if (record.comparison && record.comparison->Equal() && std::filesystem::is_regular_file(diff_file, ignored)) {
-    std::filesystem::remove(diff_file, ignored);
+  const std::string old_diff = Suffixed(out, "diff");
+  if (!IsStandardStream(out) && !result.diff && result.record.comparison &&
+      std::filesystem::is_regular_file(old_diff, ignored)) {
+    std::filesystem::remove(old_diff, ignored);
   }
   progress.Clear();
-  if (to_stdout && !png_bytes.empty()) WriteStandardOutput(png_bytes);
-
-  // The one verdict the page and the JUnit file show decides the exit code too.
-  record.exit_code = ExitCodeOf(report::VerdictOf(record));
-  record.total_ms = total_clock.Milliseconds();
-  return record;
+  if (!png_bytes.empty()) WriteStandardOutput(png_bytes);
+  result.record.total_ms = total_clock.Milliseconds();
+  return std::move(result.record);
 }
 
 // Prints one scene's record: JSON (one object; several scenes: JSON Lines, one per scene as it
 // finishes) or the report's lines (on standard error when the PNG goes to standard output).
-void PrintRecord(const RenderArguments& a, const report::RenderRecord& record, bool several) {
+void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool several) {
   if (a.json) {
     std::cout << (several ? report::RenderJson(record).dump() : report::RenderJson(record).dump(2)) << "\n" << std::flush;
     return;
@@ -341,7 +216,7 @@ void PrintRecord(const RenderArguments& a, const report::RenderRecord& record, b
 }
 
 // The page and the JUnit file, staged together after the batch: all of them or neither.
-void WriteBatchReports(const RenderArguments& a, const std::vector<report::RenderRecord>& records, double total_ms) {
+void WriteBatchReports(const RenderArguments& a, const std::vector<run::RunRecord>& records, double total_ms) {
   std::vector<StagedFile> staged;
   if (a.report) {
     staged.emplace_back(std::filesystem::path(*a.report) / "index.html",
@@ -352,10 +227,13 @@ void WriteBatchReports(const RenderArguments& a, const std::vector<report::Rende
 }
 
 int Render(RenderArguments& a) {
-  ResolveRules(a);
+  ResolveOptions(a);
   CheckOutput(a);
   Progress progress = Progress::OnStandardError(a.quiet);
-  std::optional<GpuProcess> gpu;
+  IsolationOptions isolation;
+  isolation.gpu.device = a.device;
+  isolation.timeout_seconds = a.timeout_seconds;
+  run::GpuSession gpu(isolation);  // a child process, made for the first GPU draw and kept
   const bool several = a.scenes.size() > 1;
   const std::optional<std::string> directory = several ? std::optional(a.output.value_or(".")) : std::nullopt;
   if (directory) MakeDirectory(*directory);
@@ -366,10 +244,10 @@ int Render(RenderArguments& a) {
   // code is the worst of them. No Vulkan device ends the run (exit 3).
   const bool keep_going = several || a.report || a.junit;
   Stopwatch batch_clock;
-  std::vector<report::RenderRecord> records;
+  std::vector<run::RunRecord> records;
   int worst = kExitOk;
   for (const std::string& scene : a.scenes) {
-    report::RenderRecord record;
+    run::RunRecord record;
     try {
       record = RenderScene(a, scene, directory, gpu, progress);
       PrintRecord(a, record, several);
@@ -378,13 +256,9 @@ int Render(RenderArguments& a) {
       if (!expected || !keep_going) throw;
       progress.Clear();
       std::cerr << "twinraster: " << e.what() << "\n";
-      record = {};
-      record.scene = scene;
-      record.name = std::filesystem::path(scene).stem().string();
-      record.error = e.what();
-      record.exit_code = kExitBadInput;
+      record = run::ErrorRecord(scene, e.what());
     }
-    worst = WorseExit(worst, record.exit_code);
+    worst = WorseExit(worst, ExitCodeOf(record.verdict));
     if (a.report || a.junit) records.push_back(std::move(record));
   }
   WriteBatchReports(a, records, batch_clock.Milliseconds());

@@ -1,19 +1,15 @@
 // `twinraster verify SCENE IMAGE.png`: judges any image of the scene by what a conformant Vulkan
 // implementation may draw (verify/verifier.hpp), by the rules of the device that drew it (the
 // image's own notes, or the options), writes the verification map, exits 0, 1 or 6.
-#include "base/stopwatch.hpp"
-#include "chain/draw_list.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/png_file.hpp"
 #include "report/image_notes.hpp"
 #include "report/verify_report.hpp"
-#include "verify/verifier.hpp"
-#include "verify/verify_map.hpp"
+#include "run/judge_image.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -35,7 +31,7 @@ struct VerifyArguments {
 };
 
 // The device's rules: each option given, else what the image's notes say, else the loosest.
-verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<report::DrawnBy>& drawn_by) {
+verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<verify::DrawnBy>& drawn_by) {
   verify::VerifyOptions options = drawn_by ? drawn_by->rasterizes : verify::VerifyOptions{};
   if (a.bits_given) options.subpixel_bits = a.subpixel_bits;
   if (a.strict_given) options.strict_lines = a.strict_lines == "true";
@@ -54,37 +50,17 @@ int Verify(const VerifyArguments& a) {
                       std::to_string(scene.canvas.height));
     }
   });
-  const DrawList list = BuildDrawList(scene);
-  Stopwatch clock;
-  const std::optional<report::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
-  const verify::Verification v = verify::VerifyImage(scene, list, image, DeviceRules(a, drawn_by));
-  const double verify_ms = clock.Milliseconds();
+  const std::optional<verify::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
+  const run::ImageJudgement judgement = run::JudgeImage(scene, image, DeviceRules(a, drawn_by), !a.no_map);
   std::optional<std::string> map;
-  if (!a.no_map) {
+  if (judgement.map) {
     map = a.map.value_or(Suffixed(a.image, "map"));
-    StagePng(*map, verify::VerificationMap(image, v)).Commit();
+    StagePng(*map, *judgement.map).Commit();
   }
-  if (a.json) {
-    nlohmann::ordered_json j;
-    j["format"] = kVerifyJsonFormat;
-    j["scene"] = a.scene;
-    j["image"] = a.image;
-    j["wireframe"] = scene.wireframe;
-    j["drawn_by"] = drawn_by ? nlohmann::ordered_json(drawn_by->device) : nlohmann::ordered_json(nullptr);
-    const nlohmann::ordered_json verdict = VerificationJson(v, map, verify_ms);
-    for (const auto& [key, value] : verdict.items()) j[key] = value;
-    std::cout << j.dump(2) << "\n";
-  } else {
-    if (drawn_by) std::cout << a.image << ": drawn by " << drawn_by->device << " (its PNG notes)\n";
-    std::cout << a.image << ": " << verify::VerificationText(v) << "\n";
-    if (map) std::cout << "map: " << *map << " (grey: certain, amber: uncertain, red: not allowed)\n";
-  }
-  switch (v.Verdict()) {
-    case verify::Judgement::kPassed: return kExitOk;
-    case verify::Judgement::kInconclusive: return kExitInconclusive;
-    case verify::Judgement::kFailed: break;
-  }
-  return kExitImagesDiffer;
+  const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
+  if (a.json) std::cout << report::VerifyJson(outputs).dump(2) << "\n";
+  else std::cout << report::VerifyText(outputs);
+  return ExitCodeOf(judgement.verdict);
 }
 
 }  // namespace

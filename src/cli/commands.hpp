@@ -8,7 +8,7 @@ namespace CLI {
 class App;  // CLI11 itself is included only by the .cpp files: it is a large header
 }
 
-namespace twinraster::report {
+namespace twinraster::run {
 enum class Verdict;
 }
 
@@ -25,9 +25,9 @@ enum ExitCode : int {
   kExitInconclusive = 6,  // no pixel is wrong, but the verifier could not tell a correct image from a broken one
 };
 
-// The exit code of one scene's verdict (report/render_record.hpp): crashed 5, differing 1,
+// The exit code of one scene's verdict (run/verdict.hpp): crashed 5, differing 1,
 // inconclusive 6, an error 2, anything else 0.
-int ExitCodeOf(report::Verdict verdict);
+int ExitCodeOf(run::Verdict verdict);
 
 // Of two scenes' exit codes, the one a batch reports: any problem outranks an inconclusive
 // judgement, which outranks success.

@@ -1,18 +1,18 @@
 #include "cli/commands.hpp"
 
-#include "report/render_record.hpp"
+#include "run/verdict.hpp"
 
 namespace twinraster {
 
-int ExitCodeOf(report::Verdict verdict) {
+int ExitCodeOf(run::Verdict verdict) {
   switch (verdict) {
-    case report::Verdict::kError: return kExitBadInput;
-    case report::Verdict::kCrashed: return kExitGpuFailed;
-    case report::Verdict::kDiffering: return kExitImagesDiffer;
-    case report::Verdict::kInconclusive: return kExitInconclusive;
-    case report::Verdict::kVerified:
-    case report::Verdict::kIdentical:
-    case report::Verdict::kRendered: return kExitOk;
+    case run::Verdict::kError: return kExitBadInput;
+    case run::Verdict::kCrashed: return kExitGpuFailed;
+    case run::Verdict::kDiffering: return kExitImagesDiffer;
+    case run::Verdict::kInconclusive: return kExitInconclusive;
+    case run::Verdict::kVerified:
+    case run::Verdict::kIdentical:
+    case run::Verdict::kRendered: return kExitOk;
   }
   return kExitInternalError;
 }

@@ -10,8 +10,6 @@
 
 namespace twinraster {
 
-struct BenchRow;
-
 // Whether progress belongs on file descriptor `fd`: it is a terminal and quiet is not asked for.
 bool ShowProgressOn(int fd, bool quiet);
 
@@ -35,7 +33,5 @@ class Progress {
   bool status_showing_ = false;
 };
 
-// "[ 3/56] hard/far-1e5 compose-f32, 2 threads: frame 0.97 ms, vertex error 2.62e+00 px, image error 2514 px"
-std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t total);
 
 }  // namespace twinraster

@@ -121,6 +121,8 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
 }  // namespace
 
+TwinLimits TwinDeviceLimits() { return {.subpixel_bits = cpu::kSubpixelBits, .strict_lines = true}; }
+
 Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
   ValidateDrawList(list);
   return Render(list, nullptr, options, timings);

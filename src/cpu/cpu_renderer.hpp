@@ -26,6 +26,14 @@ struct CpuOptions {
   cpu::RasterRules rules{};
 };
 
+// The twin as a device reports itself: lavapipe's subPixelPrecisionBits, and lines drawn strictly
+// (strictLines), which is how the verifier judges the twin's own images.
+struct TwinLimits {
+  int subpixel_bits = 0;
+  bool strict_lines = true;
+};
+TwinLimits TwinDeviceLimits();
+
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,
 // readback = building the Image.
 struct CpuTimings {

@@ -3,7 +3,7 @@
 // Self-contained: inline CSS, no script, PNGs beside it; it reads the records and nothing else.
 #pragma once
 
-#include "report/render_record.hpp"
+#include "run/run_record.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -17,22 +17,25 @@ struct BatchSummary {
   std::size_t scenes = 0, identical = 0, verified = 0, inconclusive = 0, differing = 0, crashed = 0, errors = 0, rendered = 0;
   double total_ms = 0;  // the whole batch, wall clock
 };
-BatchSummary Summarize(const std::vector<RenderRecord>& records, double total_ms);
+BatchSummary Summarize(const std::vector<run::RunRecord>& records, double total_ms);
 
 // The longer side of a thumbnail, in pixels.
 inline constexpr std::uint32_t kThumbnailSide = 96;
 
-// The images a row shows, in order, and the record's file for each ("" when there is none).
-inline constexpr const char* kThumbnailKinds[] = {"gpu", "cpu", "diff", "map"};
-std::string FullImage(const RenderRecord& record, const std::string& kind);
+// The images a row shows, in order.
+enum class ImageKind { kGpu, kCpu, kDiff, kMap };
+inline constexpr ImageKind kThumbnailKinds[] = {ImageKind::kGpu, ImageKind::kCpu, ImageKind::kDiff, ImageKind::kMap};
+const char* ImageKindName(ImageKind kind);  // "gpu", "cpu", "diff", "map"
+// The record's file of `kind` ("" when there is none).
+std::string FullImage(const run::RunRecord& record, ImageKind kind);
 // Where the thumbnail of `kind` goes, relative to the report's directory.
-std::filesystem::path ThumbnailPath(const RenderRecord& record, const std::string& kind);
+std::filesystem::path ThumbnailPath(const run::RunRecord& record, ImageKind kind);
 
 // The records in the page's order: failures first (errors, crashes, differing), then verified,
 // identical and drawn; the batch's order within each.
-std::vector<const RenderRecord*> PageOrder(const std::vector<RenderRecord>& records);
+std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& records);
 
 // The page, for `dir`/index.html: links to images are relative to `dir`.
-std::string BatchPageHtml(const std::vector<RenderRecord>& records, const std::filesystem::path& dir, double total_ms);
+std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir, double total_ms);
 
 }  // namespace twinraster::report

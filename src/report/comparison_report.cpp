@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace twinraster {
+namespace twinraster::report {
 
 nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
                                    const std::optional<std::string>& diff) {
@@ -35,4 +35,4 @@ std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comp
          (c.Equal() ? " (identical)" : "");
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::report

@@ -10,11 +10,10 @@
 #include <optional>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::report {
 
-// Each --json output's "format"; any change to its keys or their meaning gets a new number
+// compare --json's "format"; any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/).
-inline constexpr const char* kRenderJsonFormat = "twinraster.render/4";
 inline constexpr const char* kCompareJsonFormat = "twinraster.compare/1";
 
 struct NamedImage {
@@ -29,4 +28,4 @@ std::string ComparisonText(const Image& a, const Image& b, const Comparison& c);
 // Two images of one size, `width` x `height`.
 std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c);
 
-}  // namespace twinraster
+}  // namespace twinraster::report

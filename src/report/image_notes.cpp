@@ -19,20 +19,20 @@ const std::string* Find(const PngNotes& notes, const char* key) {
 
 }  // namespace
 
-PngNotes NotesOf(const DrawnBy& drawn_by) {
+PngNotes NotesOf(const verify::DrawnBy& drawn_by) {
   return {{kDevice, drawn_by.device},
           {kSubpixelBits, std::to_string(drawn_by.rasterizes.subpixel_bits)},
           {kStrictLines, drawn_by.rasterizes.strict_lines ? "true" : "false"}};
 }
 
-std::optional<DrawnBy> DrawnByOf(const PngNotes& notes) {
+std::optional<verify::DrawnBy> DrawnByOf(const PngNotes& notes) {
   const std::string *device = Find(notes, kDevice), *bits = Find(notes, kSubpixelBits),
                     *strict = Find(notes, kStrictLines);
   if (!device || !bits || !strict || (*strict != "true" && *strict != "false")) return std::nullopt;
   int n = -1;
   const auto [end, error] = std::from_chars(bits->data(), bits->data() + bits->size(), n);
   if (error != std::errc() || end != bits->data() + bits->size() || n < 0 || n > 24) return std::nullopt;
-  return DrawnBy{*device, {.subpixel_bits = n, .strict_lines = *strict == "true"}};
+  return verify::DrawnBy{*device, {.subpixel_bits = n, .strict_lines = *strict == "true"}};
 }
 
 }  // namespace twinraster::report

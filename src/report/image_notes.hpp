@@ -4,21 +4,15 @@
 #pragma once
 
 #include "image/png_file.hpp"
-#include "verify/verification.hpp"
+#include "verify/drawn_by.hpp"
 
 #include <optional>
 #include <string>
 
 namespace twinraster::report {
 
-// What an image's notes say about the device that drew it.
-struct DrawnBy {
-  std::string device;               // its deviceName, or "CPU twin"
-  verify::VerifyOptions rasterizes;  // its subPixelPrecisionBits and strictLines
-};
-
-PngNotes NotesOf(const DrawnBy& drawn_by);
+PngNotes NotesOf(const verify::DrawnBy& drawn_by);
 // Empty when the notes lack a device or a rule, or hold one out of range (bits outside 0..24).
-std::optional<DrawnBy> DrawnByOf(const PngNotes& notes);
+std::optional<verify::DrawnBy> DrawnByOf(const PngNotes& notes);
 
 }  // namespace twinraster::report

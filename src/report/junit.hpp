@@ -3,7 +3,7 @@
 // Jenkins xUnit plugin's JUnit schema describes (docs/schemas/junit.xsd, checked by the tests).
 #pragma once
 
-#include "report/render_record.hpp"
+#include "run/run_record.hpp"
 
 #include <string>
 #include <vector>
@@ -12,6 +12,6 @@ namespace twinraster::report {
 
 // errors: bad input and crashed drivers; failures: differing images. Each failure's message says
 // why (VerdictReason); the scene's report lines are its system-out.
-std::string JUnitXml(const std::vector<RenderRecord>& records, double total_ms, bool verify_asked);
+std::string JUnitXml(const std::vector<run::RunRecord>& records, double total_ms, bool verify_asked);
 
 }  // namespace twinraster::report

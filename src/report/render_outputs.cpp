@@ -15,9 +15,9 @@ using Json = nlohmann::ordered_json;
 
 Json OrNull(const std::string& text) { return text.empty() ? Json(nullptr) : Json(text); }
 
-Json BackendJson(const BackendRecord* b) {
+Json BackendJson(const run::BackendRecord* b) {
   if (!b) return nullptr;  // the backend was not asked for
-  return {{"status", b->status},
+  return {{"status", run::StatusName(b->status)},
           {"problem", OrNull(b->problem)},
           {"output", OrNull(b->output)},
           {"device", b->detail},
@@ -44,27 +44,28 @@ Json TwinJson(const std::optional<cpu::TwinRules>& twin) {
           {"vector_bits", twin->release ? twin->release->vector_bits : twin->path.vector_bits}};
 }
 
-std::string BackendText(const BackendRecord& b) {
-  if (!b.Drawn()) return b.name + ": " + b.problem + "; no " + b.name + " image";
+std::string BackendText(const run::BackendRecord& b) {
+  const std::string name = b.Name();
+  if (!b.Drawn()) return name + ": " + b.problem + "; no " + name + " image";
   std::ostringstream s;
   s.precision(3);
-  s << std::fixed << b.name << ": " << (b.output == "-" ? "standard output" : b.output) << "  (" << b.detail
+  s << std::fixed << name << ": " << (b.output == "-" ? "standard output" : b.output) << "  (" << b.detail
     << ")  setup " << b.setup_ms << " ms, draw " << b.draw_ms << " ms, readback " << b.readback_ms << " ms, png "
     << b.png_ms << " ms";
-  if (b.name == "gpu") s << ", process " << b.isolation_ms << " ms";
+  if (b.backend == run::Backend::kGpu) s << ", process " << b.isolation_ms << " ms";
   return s.str();
 }
 
 }  // namespace
 
-std::string RenderText(const RenderRecord& r, bool verify_asked) {
+std::string RenderText(const run::RunRecord& r, bool verify_asked) {
   std::ostringstream out;
   std::ostringstream head;
   head.precision(3);
   head << std::fixed << r.scene << ": " << r.instances << (r.instances == 1 ? " instance, " : " instances, ") << r.triangles
        << " triangles, " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
   out << head.str() << "\n";
-  for (const BackendRecord& b : r.backends) out << BackendText(b) << "\n";
+  for (const run::BackendRecord& b : r.backends) out << BackendText(b) << "\n";
   if (r.twin) out << "twin: " << r.twin->text << "\n";
   if (r.comparison) {
     out << "gpu vs cpu: " << ComparisonText(r.width, r.height, *r.comparison) << (r.diff.empty() ? "" : ", diff in " + r.diff)
@@ -77,17 +78,17 @@ std::string RenderText(const RenderRecord& r, bool verify_asked) {
     out << "verdict: " << DifferenceVerdict(r.comparison->differing_pixels, *r.verification) << "\n";
   }
   if (r.verification && verify_asked) {
-    out << "verify: " << r.judged << " image " << verify::VerificationText(*r.verification)
+    out << "verify: " << run::BackendName(*r.judged) << " image " << VerificationText(*r.verification)
         << (r.map.empty() ? "" : ", map in " + r.map) << "\n";
   }
   return out.str();
 }
 
-Json RenderJson(const RenderRecord& r) {
+Json RenderJson(const run::RunRecord& r) {
   Json j;
   j["format"] = kRenderJsonFormat;
   j["scene"] = r.scene;
-  j["rules"] = r.rules;
+  j["rules"] = run::RulesName(r.rules);
   j["wireframe"] = r.wireframe;
   j["width"] = r.width;
   j["height"] = r.height;
@@ -97,11 +98,11 @@ Json RenderJson(const RenderRecord& r) {
   j["differing_pixels"] = r.comparison ? Json(r.comparison->differing_pixels) : Json(nullptr);
   j["max_channel_difference"] = r.comparison ? Json(r.comparison->max_channel_difference) : Json(nullptr);
   j["diff"] = OrNull(r.diff);
-  j["backends"] = {{"gpu", BackendJson(r.Backend("gpu"))}, {"cpu", BackendJson(r.Backend("cpu"))}};
+  j["backends"] = {{"gpu", BackendJson(r.Find(run::Backend::kGpu))}, {"cpu", BackendJson(r.Find(run::Backend::kCpu))}};
   j["twin_rules"] = TwinJson(r.twin);
   if (r.verification) {
     Json v;
-    v["image"] = r.judged;
+    v["image"] = run::BackendName(*r.judged);
     const Json verdict = VerificationJson(*r.verification, r.map.empty() ? std::nullopt : std::optional(r.map), r.verify_ms);
     for (const auto& [key, value] : verdict.items()) v[key] = value;
     j["verify"] = v;
@@ -109,6 +110,31 @@ Json RenderJson(const RenderRecord& r) {
     j["verify"] = nullptr;
   }
   return j;
+}
+
+std::string VerdictReason(const run::RunRecord& r) {
+  switch (r.verdict) {
+    case run::Verdict::kError:
+      return r.error;
+    case run::Verdict::kCrashed:
+      for (const run::BackendRecord& b : r.backends) {
+        if (!b.Drawn()) return std::string(b.Name()) + " " + run::StatusName(b.status) + ": " + b.problem;
+      }
+      return "crashed";
+    case run::Verdict::kDiffering:
+    case run::Verdict::kInconclusive:
+    case run::Verdict::kVerified:
+      if (r.Differ() && r.verification) return DifferenceVerdict(r.comparison->differing_pixels, *r.verification);
+      if (r.verification) {
+        return std::string(run::BackendName(*r.judged)) + " image " + VerificationText(*r.verification);
+      }
+      return "the images differ in " + std::to_string(r.comparison->differing_pixels) + " px";
+    case run::Verdict::kIdentical:
+      return "0 differing pixels";
+    case run::Verdict::kRendered:
+      return "drawn";
+  }
+  return "";
 }
 
 }  // namespace twinraster::report

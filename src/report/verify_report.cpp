@@ -2,9 +2,13 @@
 
 #include <sstream>
 
-namespace twinraster {
+namespace twinraster::report {
 
 namespace {
+
+std::string Colour(Rgb8 c) {
+  return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
+}
 
 nlohmann::ordered_json ColourJson(Rgb8 c) { return {c.r, c.g, c.b}; }
 
@@ -17,6 +21,41 @@ nlohmann::ordered_json ViolationJson(const std::optional<verify::Violation>& v) 
 }
 
 }  // namespace
+
+std::string InconclusiveReason(const verify::Verification& v) {
+  if (v.Verdict() != verify::Judgement::kInconclusive) return "";
+  if (v.background_excluded == 0) return "an empty image would pass too";
+  const double share = v.covered ? 100.0 * double(v.UncertainOther()) / double(v.covered) : 0.0;
+  return std::to_string(int(share)) + " % of the covered pixels are uncertain (shared edges apart)";
+}
+
+std::string RangeText(const verify::ColourRange& r) {
+  if (r.lo == r.hi) return Colour(r.lo);
+  const auto channel = [](int lo, int hi) { return lo == hi ? std::to_string(lo) : std::to_string(lo) + ".." + std::to_string(hi); };
+  return "(" + channel(r.lo.r, r.hi.r) + ", " + channel(r.lo.g, r.hi.g) + ", " + channel(r.lo.b, r.hi.b) + ")";
+}
+
+std::string VerificationText(const verify::Verification& v) {
+  std::ostringstream s;
+  s.precision(2);
+  s << std::fixed;
+  const double percent = 100.0 * v.UncertainFraction();
+  const verify::Judgement verdict = v.Verdict();
+  if (verdict != verify::Judgement::kFailed) {
+    s << (verdict == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, " << v.uncertain
+      << " uncertain (" << percent << " % of the " << v.covered << " covered";
+    if (v.uncertain_shared_edges > 0) s << ", " << v.uncertain_shared_edges << " of them on shared edges";
+    s << "), 0 violations";
+    if (verdict == verify::Judgement::kInconclusive) s << "; " << InconclusiveReason(v);
+  } else {
+    s << "fails: " << v.violations << (v.violations == 1 ? " pixel is" : " pixels are") << " not allowed; worst at ("
+      << v.worst->x << ", " << v.worst->y << "): " << Colour(v.worst->colour) << ", allowed ";
+    for (std::size_t i = 0; i < v.worst->allowed.size(); ++i) s << (i ? " or " : "") << RangeText(v.worst->allowed[i]);
+    s << "; " << v.certain << " px certain, " << v.uncertain << " uncertain";
+  }
+  s << " (subpixel bits " << v.options.subpixel_bits << (v.options.strict_lines ? ", strict lines)" : ")");
+  return s.str();
+}
 
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,
                                         double verify_ms) {
@@ -47,18 +86,38 @@ std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Veri
     s << "the images differ in " << differing_pixels << " px, all within what Vulkan allows (" << v.uncertain
       << " px uncertain, subpixel bits " << v.options.subpixel_bits << ")";
     if (v.Verdict() == verify::Judgement::kInconclusive) {
-      s << ", but the judgement is inconclusive: " << verify::InconclusiveReason(v);
+      s << ", but the judgement is inconclusive: " << InconclusiveReason(v);
     }
   } else {
     s << v.violations << " px " << (v.violations == 1 ? "is" : "are") << " not allowed: first at (" << v.first->x << ", "
       << v.first->y << "), worst at (" << v.worst->x << ", " << v.worst->y << ") "
-      << verify::RangeText(verify::ColourRange::Exactly(v.worst->colour)) << " where ";
+      << RangeText(verify::ColourRange::Exactly(v.worst->colour)) << " where ";
     for (std::size_t i = 0; i < v.worst->allowed.size(); ++i) {
-      s << (i ? " or " : "") << verify::RangeText(v.worst->allowed[i]);
+      s << (i ? " or " : "") << RangeText(v.worst->allowed[i]);
     }
     s << " may show";
   }
   return s.str();
 }
 
-}  // namespace twinraster
+nlohmann::ordered_json VerifyJson(const VerifyReport& r) {
+  nlohmann::ordered_json j;
+  j["format"] = kVerifyJsonFormat;
+  j["scene"] = r.scene;
+  j["image"] = r.image;
+  j["wireframe"] = r.wireframe;
+  j["drawn_by"] = r.drawn_by ? nlohmann::ordered_json(r.drawn_by->device) : nlohmann::ordered_json(nullptr);
+  const nlohmann::ordered_json verdict = VerificationJson(r.judgement.verification, r.map, r.judgement.verify_ms);
+  for (const auto& [key, value] : verdict.items()) j[key] = value;
+  return j;
+}
+
+std::string VerifyText(const VerifyReport& r) {
+  std::ostringstream s;
+  if (r.drawn_by) s << r.image << ": drawn by " << r.drawn_by->device << " (its PNG notes)\n";
+  s << r.image << ": " << VerificationText(r.judgement.verification) << "\n";
+  if (r.map) s << "map: " << *r.map << " (grey: certain, amber: uncertain, red: not allowed)\n";
+  return s.str();
+}
+
+}  // namespace twinraster::report

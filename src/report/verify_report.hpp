@@ -1,17 +1,30 @@
-// How `verify` and `render --verify` report a verification, as JSON (twinraster.verify/2) or as
-// the sentence render prints about a GPU image that differs from the twin's.
+// How a verification reads, for `verify` and for `render`: its sentence, its JSON
+// (twinraster.verify/2), and the line render prints about a GPU image that differs from the
+// twin's. It judges nothing (verify/ and run/ do).
 #pragma once
 
+#include "run/judge_image.hpp"
+#include "verify/drawn_by.hpp"
 #include "verify/verification.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::report {
 
 inline constexpr const char* kVerifyJsonFormat = "twinraster.verify/2";
+
+// "passes: 21503 px certain, 97 uncertain (0.45 % of the 21600 covered), 0 violations",
+// "inconclusive: ..." or "fails: 12 violations, worst at (x, y): ..."
+std::string VerificationText(const verify::Verification& v);
+// Why a judgement is inconclusive: "an empty image would pass too", or "62 % of the covered pixels
+// are uncertain (shared edges apart)"; empty when it is not.
+std::string InconclusiveReason(const verify::Verification& v);
+// "(12, 40..42, 200)"
+std::string RangeText(const verify::ColourRange& range);
 
 // The verdict and counts, without file names: render nests it, verify adds its files around it.
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,
@@ -21,4 +34,15 @@ nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std
 // "12 px are not allowed: first at (x, y) ..."
 std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Verification& v);
 
-}  // namespace twinraster
+// `verify`'s own outputs: the files it was given and wrote around the judgement.
+struct VerifyReport {
+  std::string scene, image;  // the arguments, as given
+  bool wireframe = false;
+  std::optional<verify::DrawnBy> drawn_by;  // what the image's notes say
+  const run::ImageJudgement& judgement;
+  std::optional<std::string> map;  // the map's file, when one was written
+};
+nlohmann::ordered_json VerifyJson(const VerifyReport& report);
+std::string VerifyText(const VerifyReport& report);
+
+}  // namespace twinraster::report

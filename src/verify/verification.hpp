@@ -63,13 +63,4 @@ struct Verification {
   double UncertainFraction() const { return covered ? double(uncertain) / double(covered) : 0.0; }
 };
 
-// "passes: 21503 px certain, 97 uncertain (0.45 % of the 21600 covered), 0 violations",
-// "inconclusive: ..." or "fails: 12 violations, worst at (x, y): ..."
-std::string VerificationText(const Verification& v);
-// Why a judgement is inconclusive: "an empty image would pass too", or "62 % of the covered pixels
-// are uncertain (shared edges apart)"; empty when it is not.
-std::string InconclusiveReason(const Verification& v);
-// "(12, 40..42, 200)"
-std::string RangeText(const ColourRange& range);
-
 }  // namespace twinraster::verify

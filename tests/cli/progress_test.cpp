@@ -2,6 +2,7 @@
 // only on a terminal, and the line each bench row prints.
 #include "bench/bench_suite.hpp"
 #include "cli/progress.hpp"
+#include "report/bench_tables.hpp"
 
 #include "support/catch.hpp"
 
@@ -72,10 +73,10 @@ TEST_CASE("BenchProgressLine numbers the row and gives its figures", "[cli][prog
   row.frame_ms = 0.974;
   row.vertex_error_px = 2.6213;
   row.image_error_px = 2514;
-  REQUIRE(BenchProgressLine(row, 3, 56) ==
+  REQUIRE(report::BenchProgressLine(row, 3, 56) ==
           "[ 3/56] hard/far-1e5 compose-f32, 2 threads: frame 0.97 ms, vertex error 2.62e+00 px, image error 2514 px");
   row.method = "lavapipe";
   row.threads = 1;
   row.vertex_error_px = -1;  // whole-frame rows have no vertex error
-  REQUIRE(BenchProgressLine(row, 56, 56) == "[56/56] hard/far-1e5 lavapipe, 1 thread: frame 0.97 ms, image error 2514 px");
+  REQUIRE(report::BenchProgressLine(row, 56, 56) == "[56/56] hard/far-1e5 lavapipe, 1 thread: frame 0.97 ms, image error 2514 px");
 }

@@ -35,7 +35,7 @@ set(expected
   ${LIBDIR}/cmake/twinraster/twinrasterTargets.cmake
   ${LIBDIR}/cmake/twinraster/twinrasterGpuTargets.cmake
 )
-foreach(stage IN ITEMS scene chain image book cpu gpu truth bench)
+foreach(stage IN ITEMS scene chain image book cpu gpu truth run bench)
   list(APPEND expected ${LIBDIR}/libtwinraster_${stage}.a)
 endforeach()
 set(problems 0)

@@ -17,12 +17,18 @@ using namespace twinraster::report;
 
 namespace {
 
-RenderRecord Drawn(const std::string& name, std::uint64_t differing, std::optional<bool> verified) {
-  RenderRecord r;
+// The record with its verdict decided, as a run leaves it.
+run::RunRecord Decided(run::RunRecord r) {
+  r.verdict = run::VerdictOf(r);
+  return r;
+}
+
+run::RunRecord Drawn(const std::string& name, std::uint64_t differing, std::optional<bool> verified) {
+  run::RunRecord r;
   r.scene = "scenes/" + name + ".json", r.name = name, r.width = 64, r.height = 48;
-  BackendRecord gpu, cpu;
-  gpu.name = "gpu", gpu.output = "out/" + name + "-gpu.png";
-  cpu.name = "cpu", cpu.output = "out/" + name + "-cpu.png";
+  run::BackendRecord gpu, cpu;
+  gpu.backend = run::Backend::kGpu, gpu.output = "out/" + name + "-gpu.png";
+  cpu.backend = run::Backend::kCpu, cpu.output = "out/" + name + "-cpu.png";
   r.backends = {gpu, cpu};
   r.comparison = Comparison{true, differing, differing ? 3 : 0};
   if (verified) {
@@ -30,9 +36,9 @@ RenderRecord Drawn(const std::string& name, std::uint64_t differing, std::option
     r.verification->violations = *verified ? 0 : 2;
     r.verification->covered = 50, r.verification->certain = 3000, r.verification->background_excluded = 40;
     if (!*verified) r.verification->first = r.verification->worst = verify::Violation{1, 2, {}, 9, {}};
-    r.judged = "gpu";
+    r.judged = run::Backend::kGpu;
   }
-  return r;
+  return Decided(r);
 }
 
 std::size_t Count(const std::string& text, const std::string& what) {
@@ -57,28 +63,28 @@ TEST_CASE("Href: file names become links that point at themselves", "[report]") 
 }
 
 TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort first with the batch's order kept within", "[report]") {
-  RenderRecord error;
-  error.scene = "broken.json", error.name = "broken", error.error = "broken.json: line 1, column 2: bad";
-  RenderRecord crashed = Drawn("crashed", 0, std::nullopt);
-  crashed.backends[0].status = "crashed", crashed.backends[0].problem = "SIGSEGV in the Vulkan driver";
+  const run::RunRecord error = run::ErrorRecord("broken.json", "broken.json: line 1, column 2: bad");
+  run::RunRecord crashed = Drawn("crashed", 0, std::nullopt);
+  crashed.backends[0].status = run::BackendStatus::kCrashed, crashed.backends[0].problem = "SIGSEGV in the Vulkan driver";
   crashed.comparison.reset();
-  RenderRecord promised = Drawn("promised", 5, true);
+  run::RunRecord promised = Drawn("promised", 5, true);
   promised.twin = cpu::TwinRules{};
   promised.twin->exact = true;
-  const std::vector<RenderRecord> records = {Drawn("same", 0, std::nullopt), Drawn("allowed", 7, true),
-                                             Drawn("wrong", 7, false), error, crashed, Drawn("same2", 0, std::nullopt),
-                                             promised};
-  CHECK(VerdictOf(records[0]) == Verdict::kIdentical);
-  CHECK(VerdictOf(records[1]) == Verdict::kVerified);
-  CHECK(VerdictOf(records[2]) == Verdict::kDiffering);
-  CHECK(VerdictOf(records[3]) == Verdict::kError);
-  CHECK(VerdictOf(records[4]) == Verdict::kCrashed);
-  CHECK(VerdictOf(records[6]) == Verdict::kDiffering);  // the twin promised identical images
+  const std::vector<run::RunRecord> records = {Drawn("same", 0, std::nullopt),  Drawn("allowed", 7, true),
+                                               Drawn("wrong", 7, false),        error,
+                                               Decided(crashed),                Drawn("same2", 0, std::nullopt),
+                                               Decided(promised)};
+  CHECK(records[0].verdict == run::Verdict::kIdentical);
+  CHECK(records[1].verdict == run::Verdict::kVerified);
+  CHECK(records[2].verdict == run::Verdict::kDiffering);
+  CHECK(records[3].verdict == run::Verdict::kError);
+  CHECK(records[4].verdict == run::Verdict::kCrashed);
+  CHECK(records[6].verdict == run::Verdict::kDiffering);  // the twin promised identical images
   CHECK(VerdictReason(records[3]) == "broken.json: line 1, column 2: bad");
   CHECK(VerdictReason(records[4]) == "gpu crashed: SIGSEGV in the Vulkan driver");
 
   std::vector<std::string> order;
-  for (const RenderRecord* r : PageOrder(records)) order.push_back(r->name);
+  for (const run::RunRecord* r : PageOrder(records)) order.push_back(r->name);
   CHECK(order == std::vector<std::string>{"broken", "crashed", "wrong", "promised", "allowed", "same", "same2"});
 
   const BatchSummary s = Summarize(records, 1500);
@@ -98,8 +104,8 @@ TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort firs
 }
 
 TEST_CASE("Batch page: a row per scene, links relative to the page, thumbnails only where an image exists", "[report]") {
-  const std::vector<RenderRecord> records = {Drawn("same", 0, std::nullopt), Drawn("allowed", 7, true)};
-  std::vector<RenderRecord> with_diff = records;
+  const std::vector<run::RunRecord> records = {Drawn("same", 0, std::nullopt), Drawn("allowed", 7, true)};
+  std::vector<run::RunRecord> with_diff = records;
   with_diff[1].diff = "out/allowed-diff.png";
   const std::string page = BatchPageHtml(with_diff, "report", 2000);
   CHECK(Count(page, "<tr class=\"scene\"") == 2);
@@ -111,7 +117,7 @@ TEST_CASE("Batch page: a row per scene, links relative to the page, thumbnails o
 }
 
 TEST_CASE("The record's JSON and text: render --json's numbers come from it", "[report]") {
-  const RenderRecord r = Drawn("allowed", 7, true);
+  const run::RunRecord r = Drawn("allowed", 7, true);
   const nlohmann::ordered_json j = RenderJson(r);
   CHECK(j.at("differing_pixels") == 7);
   CHECK(j.at("verify").at("pixels").at("violations") == 0);

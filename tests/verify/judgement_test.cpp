@@ -1,5 +1,6 @@
 // The verdict as a whole: passed, failed or inconclusive; an empty image never passes; lines judged
 // by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
+#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/obj_scene.hpp"
@@ -44,7 +45,7 @@ TEST_CASE("verify: an empty image of a scene that draws something never passes, 
       const auto [scene, list] = test::ShippedScene(file, wireframe);
       for (const verify::VerifyOptions options : {verify::VerifyOptions{4, false}, verify::VerifyOptions{8, true}}) {
         const verify::Verification v = verify::VerifyImage(scene, list, Blank(list), options);
-        INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << verify::VerificationText(v));
+        INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << report::VerificationText(v));
         CHECK(v.Verdict() != verify::Judgement::kPassed);
         failed += v.Verdict() == verify::Judgement::kFailed;
         ++judged;
@@ -63,7 +64,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
       const Image empty = Blank(list);
       if (RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
       const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
-      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << verify::VerificationText(v));
+      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
       CHECK(v.Verdict() != verify::Judgement::kPassed);
       ++drawing;
     }
@@ -81,7 +82,7 @@ TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, n
   const DrawList list = BuildDrawList(scene);
   const verify::Verification drawn = verify::VerifyImage(scene, list, RenderOnCpu(list), {8, true});
   const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
-  INFO(verify::VerificationText(drawn) << "\n" << verify::VerificationText(empty));
+  INFO(report::VerificationText(drawn) << "\n" << report::VerificationText(empty));
   CHECK(drawn.NoViolations());
   CHECK(drawn.Verdict() == verify::Judgement::kInconclusive);
   CHECK(empty.Verdict() != verify::Judgement::kPassed);
@@ -94,7 +95,7 @@ TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's
     const Image image = RenderOnCpu(list);
     const verify::Verification loose = verify::VerifyImage(scene, list, image, {8, false});
     const verify::Verification strict = verify::VerifyImage(scene, list, image, {8, true});
-    INFO(file.string() << ": " << verify::VerificationText(loose) << "\n" << verify::VerificationText(strict));
+    INFO(file.string() << ": " << report::VerificationText(loose) << "\n" << report::VerificationText(strict));
     CHECK(loose.NoViolations());
     CHECK(strict.NoViolations());
     CHECK(strict.UncertainOther() <= loose.UncertainOther());
@@ -118,7 +119,7 @@ TEST_CASE("verify: an edge through the eye plane must be drawn where it is in fr
   }
   const verify::Verification good = verify::VerifyImage(scene, list, drawn, {8, true});
   const verify::Verification bad = verify::VerifyImage(scene, list, dropped, {8, true});
-  INFO(verify::VerificationText(good) << "\n" << verify::VerificationText(bad));
+  INFO(report::VerificationText(good) << "\n" << report::VerificationText(bad));
   CHECK(good.NoViolations());
   CHECK(bad.Verdict() == verify::Judgement::kFailed);
   CHECK(bad.violations >= 20);
@@ -139,7 +140,7 @@ TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyon
   const Image guarded = RenderOnCpu(list, guard);
   for (const Image* image : {&twin, &guarded}) {
     const verify::Verification v = verify::VerifyImage(scene, list, *image, {8, true});
-    INFO(verify::VerificationText(v));
+    INFO(report::VerificationText(v));
     CHECK(v.NoViolations());
   }
 }

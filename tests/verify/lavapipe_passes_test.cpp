@@ -1,6 +1,7 @@
 // Lavapipe passes the verifier: 0 violations on every shipped scene, filled and in wireframe, lit
 // or not, on lavapipe itself and (since the twin is bit-exact with each, docs/lavapipe-paths.md)
 // under every release's and CPU path's rules on 500 random scenes.
+#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/twin_rules.hpp"
@@ -48,7 +49,7 @@ std::vector<NamedRules> LavapipeRules() {
 // Judged by the device's own rules: lavapipe reports strictLines, and the twin draws its lines.
 void RequirePasses(const Scene& scene, const DrawList& list, const Image& image, int bits, const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = bits, .strict_lines = true});
-  INFO(what << ": " << verify::VerificationText(v));
+  INFO(what << ": " << report::VerificationText(v));
   CHECK(v.NoViolations());
 }
 

@@ -1,6 +1,7 @@
 // SwiftShader, the second Vulkan (Debian's chromium package), judged by the verifier at the rules it
 // reports (4 subpixel bits, strictLines): no violation on any shipped or random scene, except the
 // wireframe edges it drops where a triangle runs behind the eye (docs/verify.md, "SwiftShader").
+#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "scene/obj_scene.hpp"
@@ -52,7 +53,7 @@ bool CrossesEyePlane(const DrawList& list) {
 void Judge(const GpuRenderer& gpu, const Scene& scene, const DrawList& list, const Image& image, bool drops,
            const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
-  INFO(what << ": " << verify::VerificationText(v));
+  INFO(what << ": " << report::VerificationText(v));
   if (drops) CHECK(v.violations > 0);
   else CHECK(v.NoViolations());
 }
@@ -95,7 +96,7 @@ TEST_CASE("SwiftShader's images of 40 random scenes pass, filled and in wirefram
       const auto [scene, list] = test::RandomScene(seed, wireframe);
       const Image image = gpu.Render(list);
       const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
-      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << verify::VerificationText(v));
+      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
       if (!(wireframe && CrossesEyePlane(list))) {
         CHECK(v.NoViolations());
       } else {

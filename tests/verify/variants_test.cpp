@@ -1,6 +1,7 @@
 // The verifier proven both ways on the shipped scenes: conformant rasterizers that differ from
 // lavapipe pass, twins with a real bug fail wherever the bug changes the picture. The table of
 // docs/verify.md is written to <build>/verify-variants.md by these tests.
+#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "image/image_compare.hpp"
 #include "scene/obj_scene.hpp"
@@ -79,7 +80,7 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
         t.missed.push_back(JobName(job) + " (" + std::to_string(c.differing_pixels) + " px)");
       }
     }
-    if (variant.conformant && !v.NoViolations()) UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << verify::VerificationText(v));
+    if (variant.conformant && !v.NoViolations()) UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << report::VerificationText(v));
   }
   return t;
 }

@@ -1,4 +1,5 @@
 // The verifier on hand-made cases: what is certain, uncertain and a violation, and bad input.
+#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -78,7 +79,7 @@ TEST_CASE("verify: a wrong colour inside the square, or a grey pixel outside it,
   CHECK(map.pixel(30, 20)[0] == 255);
   CHECK(map.pixel(30, 20)[1] == 0);
   CHECK(map.pixel(31, 20)[0] == map.pixel(31, 20)[1]);  // certain: grey
-  CHECK_THAT(verify::VerificationText(v), HasSubstring("fails: 2 pixels are not allowed; worst at (30, 20)"));
+  CHECK_THAT(report::VerificationText(v), HasSubstring("fails: 2 pixels are not allowed; worst at (30, 20)"));
 }
 
 TEST_CASE("verify: with an edge through pixel centres, both answers are allowed there and those pixels are uncertain",

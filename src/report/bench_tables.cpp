@@ -1,4 +1,4 @@
-#include "bench/bench_report.hpp"
+#include "report/bench_tables.hpp"
 
 #include "bench/vertex_methods.hpp"
 
@@ -12,7 +12,7 @@
 #include <optional>
 #include <sstream>
 
-namespace twinraster {
+namespace twinraster::report {
 
 namespace {
 
@@ -223,4 +223,21 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
   return j;
 }
 
-}  // namespace twinraster
+std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t total) {
+  const std::string count = std::to_string(total);
+  std::string number = std::to_string(done);
+  number.insert(0, count.size() > number.size() ? count.size() - number.size() : 0, ' ');  // rows line up
+  std::string line = "[" + number + "/" + count + "] " + row.scene + " " + row.method + ", " +
+                     std::to_string(row.threads) + (row.threads == 1 ? " thread" : " threads") + ": ";
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, "frame %.2f ms", row.frame_ms);
+  line += numbers;
+  if (row.vertex_error_px >= 0) {
+    std::snprintf(numbers, sizeof numbers, ", vertex error %.2e px", row.vertex_error_px);
+    line += numbers;
+  }
+  line += ", image error " + std::to_string(row.image_error_px) + " px";
+  return line;
+}
+
+}  // namespace twinraster::report

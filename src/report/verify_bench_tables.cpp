@@ -1,0 +1,52 @@
+#include "report/bench_tables.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace twinraster::report {
+
+std::string VerifyBenchTable(const VerifyBenchResult& result) {
+  std::ostringstream s;
+  s << "Verify: the twin's render against the verifier's judgement of it, medians of " << result.runs << " run(s); "
+    << result.machine << "\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles", "twin ms",
+                "verify ms", "ratio", "uncertain", "violations");
+  s << line;
+  for (const VerifyBenchRow& r : result.rows) {
+    const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
+    const double percent = r.covered ? 100.0 * double(r.uncertain) / double(r.covered) : 0.0;
+    char uncertain[32];
+    std::snprintf(uncertain, sizeof uncertain, "%.2f %%", percent);
+    std::snprintf(line, sizeof line, "%-36s %11s %10zu | %9.1f %10.1f %6.2f | %10s %10llu\n",
+                  std::filesystem::path(r.scene).filename().string().c_str(), size.c_str(), r.triangles, r.twin_ms,
+                  r.verify_ms, r.Ratio(), uncertain, static_cast<unsigned long long>(r.violations));
+    s << line;
+  }
+  s << "(twin: RenderOnCpu on " << (result.rows.empty() ? 0 : result.rows.front().twin_threads)
+    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; uncertain: of the covered pixels)\n";
+  return s.str();
+}
+
+nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const VerifyBenchRow& r : result.rows) {
+    rows.push_back({{"scene", r.scene},
+                    {"width", r.width},
+                    {"height", r.height},
+                    {"triangles", r.triangles},
+                    {"twin_threads", r.twin_threads},
+                    {"twin_ms", r.twin_ms},
+                    {"verify_ms", r.verify_ms},
+                    {"ratio", r.Ratio()},
+                    {"uncertain", r.uncertain},
+                    {"covered", r.covered},
+                    {"violations", r.violations}});
+  }
+  return {{"format", "twinraster.bench-verify/1"}, {"machine", result.machine}, {"runs", result.runs}, {"rows", rows}};
+}
+
+}  // namespace twinraster::report

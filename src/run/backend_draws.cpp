@@ -1,0 +1,74 @@
+#include "run/backend_draws.hpp"
+
+#include "base/stopwatch.hpp"
+#include "book/book_renderer.hpp"
+#include "cpu/cpu_renderer.hpp"
+
+#include <stdexcept>
+
+namespace twinraster::run {
+
+IsolatedGpuResult GpuSession::Render(const DrawList& list) {
+  if (!process_) process_.emplace(options_);
+  return process_->Render(list);
+}
+
+BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device) {
+  BackendRun run;
+  run.record.backend = Backend::kGpu;
+  IsolatedGpuResult r = gpu.Render(list);
+  device = r.device;
+  run.drawn_by = {r.device.name, {.subpixel_bits = int(r.device.subpixel_bits), .strict_lines = r.device.strict_lines}};
+  run.record.detail = r.device.name.empty() ? "no device" : r.device.name;
+  run.record.driver = r.device.driver_info;
+  switch (r.outcome) {
+    case GpuOutcome::kRendered:
+      break;
+    case GpuOutcome::kUnavailable:
+      throw GpuUnavailable(r.problem);
+    case GpuOutcome::kBadList:
+      throw std::invalid_argument(r.problem);
+    case GpuOutcome::kCrashed:
+    case GpuOutcome::kTimedOut:
+      run.record.status = r.outcome == GpuOutcome::kCrashed ? BackendStatus::kCrashed : BackendStatus::kTimedOut;
+      run.record.problem = r.problem + " on " + source;
+      return run;
+  }
+  run.image = std::move(r.image);
+  // Set-up is everything before the draw: instance, device and pipeline, then buffers.
+  run.record.setup_ms = r.device_ms + r.timings.setup_ms;
+  run.record.draw_ms = r.timings.draw_ms;
+  run.record.readback_ms = r.timings.readback_ms;
+  run.record.isolation_ms = r.isolation_ms;
+  return run;
+}
+
+BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads) {
+  BackendRun run;
+  run.record.backend = Backend::kCpu;
+  CpuOptions options;
+  options.threads = threads;
+  options.rules = rules;
+  CpuTimings t;
+  run.image = RenderOnCpu(list, options, &t);
+  const TwinLimits limits = TwinDeviceLimits();
+  run.drawn_by = {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
+  run.record.threads = t.threads;
+  run.record.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
+  run.record.setup_ms = t.setup_ms, run.record.draw_ms = t.draw_ms, run.record.readback_ms = t.readback_ms;
+  return run;
+}
+
+BackendRun DrawByTheBook(const Scene& scene) {
+  BackendRun run;
+  run.record.backend = Backend::kCpu;
+  run.record.detail = "book rules: the chapter's demos, 1 thread";
+  Stopwatch clock;
+  run.image = book::RenderScene(scene);
+  run.record.draw_ms = clock.Milliseconds();  // the demos draw straight into the image: all of it is drawing
+  const TwinLimits limits = TwinDeviceLimits();
+  run.drawn_by = {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
+  return run;
+}
+
+}  // namespace twinraster::run

@@ -1,0 +1,24 @@
+// `verify`'s run: one image of a scene, drawn anywhere, judged by the rules of the device that drew
+// it, with the verdict render would give it. It reads no file (cli/ hands it the scene, the image
+// and the rules from the image's notes or the options) and writes nothing.
+#pragma once
+
+#include "image/image.hpp"
+#include "run/verdict.hpp"
+#include "scene/scene.hpp"
+#include "verify/verification.hpp"
+
+#include <optional>
+
+namespace twinraster::run {
+
+struct ImageJudgement {
+  verify::Verification verification;
+  double verify_ms = 0;
+  std::optional<Image> map;  // when asked for
+  Verdict verdict = Verdict::kVerified;  // kVerified, kInconclusive or kDiffering
+};
+
+ImageJudgement JudgeImage(const Scene& scene, const Image& image, const verify::VerifyOptions& rules, bool map);
+
+}  // namespace twinraster::run

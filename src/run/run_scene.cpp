@@ -1,0 +1,101 @@
+#include "run/run_scene.hpp"
+
+#include "base/stopwatch.hpp"
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/twin_rules.hpp"
+#include "verify/verifier.hpp"
+#include "verify/verify_map.hpp"
+
+namespace twinraster::run {
+
+namespace {
+
+void Say(const StatusLine& status, std::string_view text) {
+  if (status) status(text);
+}
+
+RunRecord SceneRecord(const Scene& scene, const std::string& source, const RunOptions& options) {
+  RunRecord record;
+  record.scene = source;
+  record.name = scene.name;
+  record.rules = options.rules;
+  record.wireframe = options.rules == Rules::kBook || scene.wireframe;  // the demos draw wireframes only
+  record.width = scene.canvas.width, record.height = scene.canvas.height;
+  record.instances = scene.instances.size();
+  for (const Instance& instance : scene.instances) record.triangles += scene.models[instance.model].triangles.size();
+  return record;
+}
+
+// Every backend asked for, GPU first. The twin copies the lavapipe that drew (with no device, its
+// default release); a GPU process that crashes is a result, and the twin still draws.
+std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const RunOptions& options, GpuSession& gpu,
+                             RunRecord& record, const StatusLine& status) {
+  std::vector<BackendRun> runs;
+  if (options.rules == Rules::kBook) {
+    Say(status, "cpu: drawing by the book's rules...");
+    runs.push_back(DrawByTheBook(scene));
+    return runs;
+  }
+  DeviceIdentity device;
+  if (options.backends != Backends::kCpu) {
+    Say(status, "gpu: drawing on Vulkan...");
+    runs.push_back(DrawOnGpu(list, gpu, record.scene, device));
+  }
+  if (options.backends != Backends::kGpu) {
+    Say(status, "cpu: drawing...");
+    record.twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
+    runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));
+  }
+  return runs;
+}
+
+// The image the verifier judges: the GPU's when it drew, else the twin's; none for the book's
+// rules, and none unless asked for or the two images differ (to say whether Vulkan allows that).
+const BackendRun* Judged(const std::vector<BackendRun>& runs, const RunOptions& options, const RunRecord& record) {
+  if (options.rules == Rules::kBook || !(options.verify || record.Differ())) return nullptr;
+  const BackendRun* judged = nullptr;
+  for (const BackendRun& run : runs) {
+    if (run.record.Drawn() && (!judged || run.record.backend == Backend::kGpu)) judged = &run;
+  }
+  return judged;
+}
+
+void Judge(const Scene& scene, const DrawList& list, const BackendRun& run, const RunOptions& options,
+           RunResult& result) {
+  RunRecord& record = result.record;
+  Stopwatch clock;
+  record.verification = verify::VerifyImage(scene, list, run.image, run.drawn_by.rasterizes);
+  record.verify_ms = clock.Milliseconds();
+  record.judged = run.record.backend;
+  if (options.map) result.map = verify::VerificationMap(run.image, *record.verification);
+  record.verification->pixels = {};  // the map holds them
+}
+
+}  // namespace
+
+RunResult RunScene(const Scene& scene, const std::string& source, const RunOptions& options, GpuSession& gpu,
+                   const StatusLine& status) {
+  RunResult result;
+  RunRecord& record = result.record = SceneRecord(scene, source, options);
+  const DrawList list = options.rules == Rules::kBook ? DrawList{} : BuildDrawList(scene);  // the book reads the scene
+  std::vector<BackendRun> runs = Draw(scene, list, options, gpu, record, status);
+
+  if (runs.size() == 2 && runs[0].record.Drawn() && runs[1].record.Drawn()) {
+    Say(status, "comparing gpu and cpu...");
+    record.comparison = CompareImages(runs[0].image, runs[1].image);
+    if (record.Differ()) result.diff = DiffImage(runs[0].image, runs[1].image);
+  }
+  if (const BackendRun* judged = Judged(runs, options, record)) {
+    Say(status, std::string("verifying the ") + judged->record.Name() + " image...");
+    Judge(scene, list, *judged, options, result);
+  }
+  for (BackendRun& run : runs) {
+    record.backends.push_back(run.record);
+    result.images.push_back(std::move(run.image));
+    result.drawn_by.push_back(std::move(run.drawn_by));
+  }
+  record.verdict = VerdictOf(record);
+  return result;
+}
+
+}  // namespace twinraster::run

@@ -1,0 +1,22 @@
+#include "run/verdict.hpp"
+
+namespace twinraster::run {
+
+const char* VerdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kError: return "error";
+    case Verdict::kCrashed: return "crashed";
+    case Verdict::kDiffering: return "differing";
+    case Verdict::kInconclusive: return "inconclusive";
+    case Verdict::kVerified: return "verified";
+    case Verdict::kIdentical: return "identical";
+    case Verdict::kRendered: return "rendered";
+  }
+  return "?";
+}
+
+bool IsFailure(Verdict verdict) {
+  return verdict == Verdict::kError || verdict == Verdict::kCrashed || verdict == Verdict::kDiffering;
+}
+
+}  // namespace twinraster::run

@@ -1,0 +1,25 @@
+// The one verdict of a scene's run, as deqp-runner's status enum is for a test: what the exit
+// code, the batch page's colour and the JUnit element all read. Deciding it is run_record.hpp's
+// VerdictOf; saying why is report/'s.
+#pragma once
+
+namespace twinraster::run {
+
+// In the batch page's order: failures first.
+enum class Verdict {
+  kError,         // bad input, or an output that could not be written
+  kCrashed,       // the Vulkan driver crashed or timed out
+  kDiffering,     // the images differ where the twin promised they would not, or the verifier found a violation
+  kInconclusive,  // the images differ, or one was judged, and the verifier could not tell (neither pass nor fail)
+  kVerified,      // the images differ, or one was judged, and the verifier passed it
+  kIdentical,     // gpu and cpu agree bit for bit
+  kRendered,      // one backend drew, nothing was compared or judged
+};
+
+const char* VerdictName(Verdict verdict);  // "error", "crashed", ...
+bool IsFailure(Verdict verdict);           // error, crashed, differing
+// Neither passed nor failed: JUnit's skipped, exit code 6.
+inline bool IsInconclusive(Verdict verdict) { return verdict == Verdict::kInconclusive; }
+inline bool IsSuccess(Verdict verdict) { return !IsFailure(verdict) && !IsInconclusive(verdict); }
+
+}  // namespace twinraster::run
