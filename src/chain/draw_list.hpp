@@ -70,7 +70,7 @@ struct DrawList {
   // Triangle edges only (Vulkan's polygonMode LINE, 1 pixel wide), with the same depth test.
   // Edges are not lit: a wireframe list has no lighting and every mesh is unlit.
   bool wireframe = false;
-  // Present when some mesh is lit; absent, the list is exactly what it was before lighting existed.
+  // Present when some mesh is lit; absent, the list holds flat colours only.
   std::optional<DrawLighting> lighting;
 };
 

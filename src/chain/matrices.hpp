@@ -34,7 +34,7 @@ glm::dmat4 ModelMatrix(const Transform& t);
 // M_Camera = C_R⁻¹ · C_T⁻¹. A rotation's inverse is its transpose; a translation's is its negation.
 glm::dmat4 CameraMatrix(const Camera& camera);
 
-// The chapter's perspective projection P (x·d, y·d, z) extended to 4x4: the third row now keeps
+// The chapter's perspective projection P (x·d, y·d, z) extended to 4x4: the third row keeps
 // depth, z' = A·z + B with A = far/(far-near), B = -far·near/(far-near), and w' = z. Reversed Z
 // swaps the ends: A = -near/(far-near), B = far·near/(far-near).
 glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth);

@@ -49,8 +49,8 @@ struct TruthImage {
 // `clip`. Clipping, viewport transform, coverage at pixel centres (top-left rule on exact ties)
 // and depth all in double. Lit meshes take their colours from `light` (required when the list has
 // lighting), interpolated perspective-correctly, each channel round(clamp(c, 0, 1) · 255) to
-// nearest, ties to even; unlit meshes keep their flat colours, exactly as before lighting
-// (tests/truth/unlit_unchanged_test.cpp). Throws std::invalid_argument for a malformed
+// nearest, ties to even; unlit meshes keep their flat colours, as in a list with no lighting at
+// all (tests/truth/unlit_unchanged_test.cpp). Throws std::invalid_argument for a malformed
 // list, as the twin does, when `clip` does not match the list's draws and meshes, or for a
 // wireframe list.
 Image RenderTruth(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light = nullptr);
