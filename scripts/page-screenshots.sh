@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Refreshes the README's screenshots of the pages: runs the browser tests (tests/pages), which save
+# Refreshes the screenshots docs/pages.md shows: runs the browser tests (tests/pages), which save
 # them in build/page-screenshots/, and copies them into docs/generated/images/. Run after scripts/test.sh
 # has built the release preset.
 set -euo pipefail
