@@ -80,7 +80,7 @@ status=0
 run render "${scenes[@]}" "${meshes[@]}" --backend both --json --quiet -o "$out" >>"$results" || status=$?
 run render "${scenes[@]}" --wireframe --backend both --json --quiet -o "$out/wireframe" >>"$results" || status=$?
 jobs=$((2 * ${#scenes[@]} + ${#meshes[@]}))
-/usr/bin/python3 scripts/check_twin_jobs.py "$results" --label check-aarch64 --jobs "$jobs" \
+/usr/bin/python3 scripts/check-twin-jobs.py "$results" --label check-aarch64 --jobs "$jobs" \
   --mesa 22.3.6 --llvm 15 --bits 128 --instruction-set NEON || exit 1
 if [ "$status" -ne 0 ]; then
   echo "check-aarch64: render exited $status" >&2

@@ -3,7 +3,7 @@
 # for a bounded time (default 60 s each; FUZZ_SECONDS=N to change):
 #   scene_loader_fuzzer on a copy of the shipped scenes, with fuzz/scene.dict;
 #   png_reader_fuzzer (bytes -> PNG reader -> verify -> map) on the project's own render of a
-#   scene at 64 x 64 written in every PNG encoding (scripts/make_test_pngs.py --encodings-of),
+#   scene at 64 x 64 written in every PNG encoding (scripts/make-test-pngs.py --encodings-of),
 #   plus tests/image/pngs/ (every valid encoding, and one malformed file per known class).
 # First replays every input saved in fuzz/regressions/<fuzzer>/. A finding (a crash, an unexpected
 # exception, a leak, UB, a hang over 30 s, memory past the limit) fails the script; its input is
@@ -58,7 +58,7 @@ scene = json.load(open("scenes/cgfs-transforms.json"))
 scene["canvas"]["width"] = scene["canvas"]["height"] = 64
 json.dump(scene, open(sys.argv[1], "w"))' build-fuzz/run/small-scene.json
 ./build/bin/twinraster render build-fuzz/run/small-scene.json --backend cpu -q -o build-fuzz/run/small.png
-/usr/bin/python3 scripts/make_test_pngs.py --encodings-of build-fuzz/run/small.png --out "$pngs"
+/usr/bin/python3 scripts/make-test-pngs.py --encodings-of build-fuzz/run/small.png --out "$pngs"
 for f in tests/image/pngs/valid/*.png tests/image/pngs/malformed/*.png; do
   cp "$f" "$pngs/$(basename "$(dirname "$f")")-$(basename "$f")"
 done

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Refreshes the README's screenshots of the pages: runs the browser tests (tests/pages), which save
-# them in build/page-screenshots/, and copies them into docs/images/. Run after scripts/test.sh
+# Refreshes the screenshots docs/pages.md shows: runs the browser tests (tests/pages), which save
+# them in build/page-screenshots/, and copies them into docs/generated/images/. Run after scripts/test.sh
 # has built the release preset.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ctest --preset release -R '^Pages: '
 for shot in page-batch page-chain page-chain-lit; do
-  cp "build/page-screenshots/$shot.png" "docs/images/$shot.png"
+  cp "build/page-screenshots/$shot.png" "docs/generated/images/$shot.png"
 done
-echo "page-screenshots: docs/images/page-*.png updated"
+echo "page-screenshots: docs/generated/images/page-*.png updated"

@@ -1,4 +1,4 @@
-// The PNG reader on files from elsewhere (tests/image/pngs/, scripts/make_test_pngs.py): every
+// The PNG reader on files from elsewhere (tests/image/pngs/, scripts/make-test-pngs.py): every
 // valid encoding reads as the same pixels, every malformed file is refused with the file's name and
 // a reason, and nothing from the file reaches the message as a control character.
 #include "image/png_file.hpp"
@@ -64,7 +64,7 @@ TEST_CASE("PNG reader: every valid encoding of the picture reads as the same RGB
     CHECK(image.rgba == reference.rgba);
     ++read;
   }
-  CHECK(read == 27);  // every file scripts/make_test_pngs.py writes there
+  CHECK(read == 27);  // every file scripts/make-test-pngs.py writes there
 }
 
 TEST_CASE("PNG reader: every malformed file is refused, naming the file and the problem", "[png][reader]") {

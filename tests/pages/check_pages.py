@@ -4,7 +4,7 @@ python3-selenium) and checks what a reader sees: every image loads, no console e
 equal the matching --json output, failures come first, a 1,000-scene report stays small and loads
 its thumbnails lazily, and names from scene files are shown as text, never run as markup. Every
 command must end with the one exit code its case produces, and every loop that judges rows checks
-how many it judged. Saves screenshots for the README. How fast the 1,000-scene report opens is
+how many it judged. Saves the screenshots docs/pages.md shows. How fast the 1,000-scene report opens is
 measured by scripts/bench-pages.py, not judged here.
 
 Usage: check_pages.py CASE --exe TWINRASTER --source REPO --work DIR [--screenshots DIR]
@@ -182,7 +182,7 @@ def case_batch(a):
     with open(broken, "w") as f:
         f.write('{"canvas": {"width": 64, "height": 64}, "models": {')
     names = ["cgfs-transforms.json", "hard/depth-ratio-1e-4.json", "catlike-grid.json", "lit-flat.json", "cgfs-scene.json"]
-    # Paths relative to the repository, as a user types them (and as the README's screenshot shows).
+    # Paths relative to the repository, as a user types them (and as the screenshot in docs/pages.md shows).
     scenes = [os.path.join("scenes", n) for n in names] + [os.path.relpath(broken, a.source)]
     # Exit 2: the unreadable scene is bad input, which outranks the inconclusive judgement's 6.
     lines, page, junit = render_batch(a, scenes, work, 2, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"}, cwd=a.source)

@@ -18,7 +18,7 @@ std::vector<std::filesystem::path> ShippedScenesAndMeshes() {
   for (const auto& entry : std::filesystem::directory_iterator(SourcePath("scenes/meshes"))) {
     if (entry.path().extension() == ".obj") files.push_back(entry.path());
   }
-  // The five meshes scripts/make_meshes.py writes, never a folder that came up empty.
+  // The five meshes scripts/make-meshes.py writes, never a folder that came up empty.
   if (files.size() - scenes != 5) throw std::logic_error("expected the 5 OBJ meshes in scenes/meshes");
   return files;
 }

@@ -6,7 +6,7 @@ named (the driver's own driverInfo and device name say so), the twin must have c
 rules for that instruction set, and the images must not differ in one pixel. A job the driver
 crashed on counts against --max-crashes (lavapipe's own bug at 128 bits, docs/mesa-128bit-crash.md).
 
-Usage: check_twin_jobs.py RESULTS.jsonl --label NAME --jobs N --mesa 25.0.7 --llvm 15
+Usage: check-twin-jobs.py RESULTS.jsonl --label NAME --jobs N --mesa 25.0.7 --llvm 15
                           --bits 256 --instruction-set AVX2+FMA [--max-crashes K]"""
 import argparse
 import json

@@ -9,8 +9,8 @@ Hand-written with zlib, so every byte is chosen here.
 With --encodings-of, it instead writes one 8-bit RGBA PNG (as twinraster renders them) again in
 every encoding that can hold it: the image path's fuzzing seeds (scripts/fuzz.sh).
 
-Usage: make_test_pngs.py --out DIR
-       make_test_pngs.py --encodings-of RENDER.png --out DIR"""
+Usage: make-test-pngs.py --out DIR
+       make-test-pngs.py --encodings-of RENDER.png --out DIR"""
 import argparse
 import os
 import struct
@@ -101,7 +101,7 @@ def valid_files():
     files["rgba8-empty-first-idat.png"] = (SIGNATURE + ihdr(W, H, 8, 6) + chunk(b"IDAT", b"")
                                            + chunk(b"IDAT", zlib.compress(scanlines(per_pixel(lambda p: p), 8, False), 9))
                                            + chunk(b"IEND", b""))
-    files["rgba8-text.png"] = encoded(per_pixel(lambda p: p), 8, 6, extra=chunk(b"tEXt", b"Comment\0made by make_test_pngs.py"))
+    files["rgba8-text.png"] = encoded(per_pixel(lambda p: p), 8, 6, extra=chunk(b"tEXt", b"Comment\0made by make-test-pngs.py"))
     palette = [(255, 0, 0), (0, 128, 255), (20, 200, 60), (255, 255, 255)]
     index = {c: i for i, c in enumerate(palette)}
     indices = [[index[p[:3]] for p in row] for row in picture()]
