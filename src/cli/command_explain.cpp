@@ -1,11 +1,13 @@
 // `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON, and with
 // --html draws it as a page.
-#include "chain/explain.hpp"
+#include "chain/explanation.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/staged_file.hpp"
 #include "report/chain_page.hpp"
+#include "report/explain_json.hpp"
+#include "report/explain_text.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -24,20 +26,20 @@ struct ExplainArguments {
   std::optional<std::string> html;
 };
 
-int Explain(const ExplainArguments& a) {
+int RunExplain(const ExplainArguments& a) {
   const Scene scene = LoadSceneArgument(a.scene);
-  const ExplainOptions options{a.instance, a.vertex};
+  // Explain checks --instance and --vertex before the page is written.
+  const Explanation explanation =
+      Explain(scene, {a.instance, a.vertex, a.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll});
   if (a.html) {
-    // The page traces every vertex of the instances it shows, and marks the one asked for.
-    CheckExplainOptions(scene, options);
-    const nlohmann::ordered_json chain = ExplainJson(scene, {a.instance, std::nullopt});
-    StagedFile page(*a.html, report::ChainPageHtml(scene, chain, {.instance = 0, .vertex = a.vertex}));
+    // The page draws every vertex's edges, and follows the vertex asked for or the first in view.
+    StagedFile page(*a.html, report::ChainPageHtml(Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll})));
     page.Commit();
   }
   if (a.json) {
-    std::cout << ExplainJson(scene, options).dump(2) << "\n";
+    std::cout << report::ExplainJson(explanation).dump(2) << "\n";
   } else {
-    std::cout << ExplainText(scene, options);
+    std::cout << report::ExplainText(explanation);
   }
   return kExitOk;
 }
@@ -65,7 +67,7 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "vertex in view)")
       ->type_name("FILE");
   command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/3, docs/json-output.md)");
-  return [a] { return Explain(*a); };
+  return [a] { return RunExplain(*a); };
 }
 
 }  // namespace twinraster
