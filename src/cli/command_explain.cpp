@@ -1,5 +1,6 @@
 // `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON, and with
 // --html draws it as a page.
+#include "base/usage_error.hpp"
 #include "chain/explanation.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
@@ -22,20 +23,34 @@ namespace {
 struct ExplainArguments {
   std::string scene;
   std::optional<std::size_t> instance, vertex;
+  bool all_vertices = false;
   bool json = false;
   std::optional<std::string> html;
 };
 
+// The text traces one vertex per instance unless asked for all; the JSON, read by tools rather
+// than people, traces every vertex unless --vertex picks one.
+ExplainVertices VerticesFor(const ExplainArguments& a) {
+  const bool all = a.all_vertices || (a.json && !a.vertex);
+  return all ? ExplainVertices::kAll : ExplainVertices::kTraced;
+}
+
 int RunExplain(const ExplainArguments& a) {
+  if (a.all_vertices && a.vertex) {
+    throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
+  }
   const Scene scene = LoadSceneArgument(a.scene);
-  // Explain checks --instance and --vertex before the page is written.
-  const Explanation explanation =
-      Explain(scene, {a.instance, a.vertex, a.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll});
   if (a.html) {
     // The page draws every vertex's edges, and follows the vertex asked for or the first in view.
+    // Explain checks --instance and --vertex before the file is written.
     StagedFile page(*a.html, report::ChainPageHtml(Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll})));
     page.Commit();
+    if (!a.json) {
+      std::cout << "wrote " << *a.html << "\n";
+      return kExitOk;
+    }
   }
+  const Explanation explanation = Explain(scene, {a.instance, a.vertex, VerticesFor(a)});
   if (a.json) {
     std::cout << report::ExplainJson(explanation).dump(2) << "\n";
   } else {
@@ -58,15 +73,22 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "or - to read the scene from standard input")
       ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
-  ExpectIndex(command->add_option("--vertex", a->vertex, "only vertex V of each instance (counted from 0)")->type_name("V"));
+  ExpectIndex(command->add_option("--vertex", a->vertex,
+                                  "trace vertex V of each instance (counted from 0; default: the first\n"
+                                  "inside the clip volume)")
+                  ->type_name("V"));
+  command->add_flag("--all-vertices", a->all_vertices,
+                    "trace every vertex of each instance (--json does unless --vertex is given)");
   command
       ->add_option("--html", a->html,
-                   "also draw the chain as a page: the model, the world from above and the side with\n"
-                   "the camera's frustum, camera space, NDC and the canvas, each with its matrix\n"
-                   "and the traced vertex (--instance, --vertex; default: instance 0's first\n"
-                   "vertex in view)")
+                   "draw the chain as a page instead of the text, and print where it went: the\n"
+                   "model, the world from above and the side with the camera's frustum, camera\n"
+                   "space, NDC and the canvas, each with its matrix and the traced vertex\n"
+                   "(--instance, --vertex; default: instance 0's first vertex in view)")
       ->type_name("FILE");
-  command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/3, docs/json-output.md)");
+  command->add_flag("--json", a->json,
+                    "print one JSON object (twinraster.explain/3, docs/json-output.md), also\n"
+                    "with --html");
   return [a] { return RunExplain(*a); };
 }
 
