@@ -35,6 +35,16 @@ ExplainVertices VerticesFor(const ExplainArguments& a) {
   return all ? ExplainVertices::kAll : ExplainVertices::kTraced;
 }
 
+// The page follows one vertex of the first explained instance: without one there is no chain to draw.
+void CheckDrawable(const Explanation& e) {
+  if (e.instances.empty()) throw UsageError("--html: the scene has no instance to draw");
+  const InstanceExplanation& x = e.instances.front();
+  if (x.vertices.empty()) {
+    throw UsageError("--html: instance " + std::to_string(x.index) + " (model \"" + x.model->name +
+                     "\") has no vertex to draw");
+  }
+}
+
 int RunExplain(const ExplainArguments& a) {
   if (a.all_vertices && a.vertex) {
     throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
@@ -43,7 +53,9 @@ int RunExplain(const ExplainArguments& a) {
   if (a.html) {
     // The page draws every vertex's edges, and follows the vertex asked for or the first in view.
     // Explain checks --instance and --vertex before the file is written.
-    StagedFile page(*a.html, report::ChainPageHtml(Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll})));
+    const Explanation page_chain = Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll});
+    CheckDrawable(page_chain);
+    StagedFile page(*a.html, report::ChainPageHtml(page_chain));
     page.Commit();
     if (!a.json) {
       std::cout << "wrote " << *a.html << "\n";

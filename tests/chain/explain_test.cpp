@@ -176,6 +176,13 @@ TEST_CASE("explain --html writes the page and prints one line saying where, or w
   CHECK(bad.exit_code == 2);
   CHECK(bad.out.empty());
   CHECK_FALSE(std::filesystem::exists(never));
+  // A scene without instances has no chain to draw: a usage error, not a crash.
+  auto empty = nlohmann::json::parse(test::ReadFile(test::SourcePath("scenes/cgfs-transforms.json")));
+  empty["instances"] = nlohmann::json::array();
+  const test::CliResult nothing = test::RunCliWithInput({"explain", "-", "--html", never}, empty.dump());
+  CHECK(nothing.exit_code == 2);
+  CHECK(nothing.err.rfind("twinraster explain: --html: the scene has no instance to draw", 0) == 0);
+  CHECK_FALSE(std::filesystem::exists(never));
 }
 
 TEST_CASE("explain's text and page never show -0, though the JSON has negative zeros", "[explain]") {
