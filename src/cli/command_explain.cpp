@@ -1,11 +1,14 @@
 // `twinraster explain SCENE`: prints the chapter's chain for a scene, as text or JSON, and with
 // --html draws it as a page.
-#include "chain/explain.hpp"
+#include "base/usage_error.hpp"
+#include "chain/explanation.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/staged_file.hpp"
 #include "report/chain_page.hpp"
+#include "report/explain_json.hpp"
+#include "report/explain_text.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -20,24 +23,50 @@ namespace {
 struct ExplainArguments {
   std::string scene;
   std::optional<std::size_t> instance, vertex;
+  bool all_vertices = false;
   bool json = false;
   std::optional<std::string> html;
 };
 
-int Explain(const ExplainArguments& a) {
-  const Scene scene = LoadSceneArgument(a.scene);
-  const ExplainOptions options{a.instance, a.vertex};
-  if (a.html) {
-    // The page traces every vertex of the instances it shows, and marks the one asked for.
-    CheckExplainOptions(scene, options);
-    const nlohmann::ordered_json chain = ExplainJson(scene, {a.instance, std::nullopt});
-    StagedFile page(*a.html, report::ChainPageHtml(scene, chain, {.instance = 0, .vertex = a.vertex}));
-    page.Commit();
+// The text traces one vertex per instance unless asked for all; the JSON, read by tools rather
+// than people, traces every vertex unless --vertex picks one.
+ExplainVertices VerticesFor(const ExplainArguments& a) {
+  const bool all = a.all_vertices || (a.json && !a.vertex);
+  return all ? ExplainVertices::kAll : ExplainVertices::kTraced;
+}
+
+// The page follows one vertex of the first explained instance: without one there is no chain to draw.
+void CheckDrawable(const Explanation& e) {
+  if (e.instances.empty()) throw UsageError("--html: the scene has no instance to draw");
+  const InstanceExplanation& x = e.instances.front();
+  if (x.vertices.empty()) {
+    throw UsageError("--html: instance " + std::to_string(x.index) + " (model \"" + x.model->name +
+                     "\") has no vertex to draw");
   }
+}
+
+int RunExplain(const ExplainArguments& a) {
+  if (a.all_vertices && a.vertex) {
+    throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
+  }
+  const Scene scene = LoadSceneArgument(a.scene);
+  if (a.html) {
+    // The page draws every vertex's edges, and follows the vertex asked for or the first in view.
+    // Explain checks --instance and --vertex before the file is written.
+    const Explanation page_chain = Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll});
+    CheckDrawable(page_chain);
+    StagedFile page(*a.html, report::ChainPageHtml(page_chain));
+    page.Commit();
+    if (!a.json) {
+      std::cout << "wrote " << *a.html << "\n";
+      return kExitOk;
+    }
+  }
+  const Explanation explanation = Explain(scene, {a.instance, a.vertex, VerticesFor(a)});
   if (a.json) {
-    std::cout << ExplainJson(scene, options).dump(2) << "\n";
+    std::cout << report::ExplainJson(explanation).dump(2) << "\n";
   } else {
-    std::cout << ExplainText(scene, options);
+    std::cout << report::ExplainText(explanation);
   }
   return kExitOk;
 }
@@ -56,16 +85,23 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "or - to read the scene from standard input")
       ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
-  ExpectIndex(command->add_option("--vertex", a->vertex, "only vertex V of each instance (counted from 0)")->type_name("V"));
+  ExpectIndex(command->add_option("--vertex", a->vertex,
+                                  "trace vertex V of each instance (counted from 0; default: the first\n"
+                                  "inside the clip volume)")
+                  ->type_name("V"));
+  command->add_flag("--all-vertices", a->all_vertices,
+                    "trace every vertex of each instance (--json does unless --vertex is given)");
   command
       ->add_option("--html", a->html,
-                   "also draw the chain as a page: the model, the world from above and the side with\n"
-                   "the camera's frustum, camera space, NDC and the canvas, each with its matrix\n"
-                   "and the traced vertex (--instance, --vertex; default: instance 0's first\n"
-                   "vertex in view)")
+                   "draw the chain as a page instead of the text, and print where it went: the\n"
+                   "model, the world from above and the side with the camera's frustum, camera\n"
+                   "space, NDC and the canvas, each with its matrix and the traced vertex\n"
+                   "(--instance, --vertex; default: instance 0's first vertex in view)")
       ->type_name("FILE");
-  command->add_flag("--json", a->json, "print one JSON object (twinraster.explain/3, docs/json-output.md)");
-  return [a] { return Explain(*a); };
+  command->add_flag("--json", a->json,
+                    "print one JSON object (twinraster.explain/3, docs/json-output.md), also\n"
+                    "with --html");
+  return [a] { return RunExplain(*a); };
 }
 
 }  // namespace twinraster

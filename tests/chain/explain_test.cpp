@@ -1,11 +1,16 @@
-// `twinraster explain`, run as a user runs it: the text names the chapter's matrices, and the JSON
-// trace agrees with the chapter's canvas formula and with Vulkan's framebuffer convention.
+// `twinraster explain`, run as a user runs it: the text names the chapter's matrices and traces
+// one vertex per instance unless asked for all, --html prints only where the page went, and the
+// JSON trace agrees with the chapter's canvas formula and with Vulkan's framebuffer convention.
 #include "support/test_support.hpp"
 
 #include "support/catch.hpp"
+#include "support/negative_zero.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <vector>
 
 using namespace twinraster;
 
@@ -92,4 +97,108 @@ TEST_CASE("explain - reads the scene from standard input, named <stdin>", "[expl
   REQUIRE(bad.exit_code == 2);
   REQUIRE(bad.err.rfind("twinraster: <stdin>: ", 0) == 0);
   REQUIRE(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
+}
+
+namespace {
+
+// The vertex indices the text traces, in order ("  vertex 3" lines).
+std::vector<std::size_t> TracedVertices(const std::string& text) {
+  static const std::regex line("\n  vertex ([0-9]+)");
+  std::vector<std::size_t> found;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != std::sregex_iterator(); ++it) {
+    found.push_back(std::stoul((*it)[1].str()));
+  }
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("explain traces one vertex per instance by default: the first inside the clip volume", "[explain]") {
+  for (const char* name : {"cgfs-transforms.json", "lit-gouraud.json", "catlike-grid.json"}) {
+    const std::string scene = test::SourcePath(std::string("scenes/") + name).string();
+    INFO(scene);
+    const test::CliResult text = test::RunCli({"explain", scene});
+    const test::CliResult json = test::RunCli({"explain", scene, "--json"});
+    REQUIRE(text.exit_code == 0);
+    REQUIRE(json.exit_code == 0);
+    std::vector<std::size_t> first_inside;
+    const auto j = nlohmann::json::parse(json.out);
+    for (const auto& instance : j.at("instances")) {
+      const auto& vertices = instance.at("vertices");
+      const auto inside = std::find_if(vertices.begin(), vertices.end(),
+                                       [](const auto& v) { return v.at("inside_clip_volume") == true; });
+      first_inside.push_back(inside == vertices.end() ? 0 : inside->at("index").get<std::size_t>());
+    }
+    CHECK(TracedVertices(text.out) == first_inside);
+  }
+}
+
+TEST_CASE("explain --all-vertices traces every vertex of each instance, --vertex picks one, and not both at once",
+          "[explain]") {
+  const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
+  const test::CliResult all = test::RunCli({"explain", scene, "--all-vertices"});
+  REQUIRE(all.exit_code == 0);
+  const std::vector<std::size_t> cube = {0, 1, 2, 3, 4, 5, 6, 7};
+  std::vector<std::size_t> both = cube;
+  both.insert(both.end(), cube.begin(), cube.end());
+  CHECK(TracedVertices(all.out) == both);
+  CHECK(all.out.find("traced: vertex") == std::string::npos);
+  const test::CliResult one = test::RunCli({"explain", scene, "--vertex", "6"});
+  REQUIRE(one.exit_code == 0);
+  CHECK(TracedVertices(one.out) == std::vector<std::size_t>{6, 6});
+  // The JSON traces every vertex by default, so --all-vertices changes nothing there.
+  const test::CliResult json = test::RunCli({"explain", scene, "--json"});
+  CHECK(test::RunCli({"explain", scene, "--json", "--all-vertices"}).out == json.out);
+  const test::CliResult conflict = test::RunCli({"explain", scene, "--vertex", "6", "--all-vertices"});
+  CHECK(conflict.exit_code == 2);
+  CHECK_THAT(conflict.err, HasSubstring("--all-vertices"));
+}
+
+TEST_CASE("explain --html writes the page and prints one line saying where, or with --json the JSON alone",
+          "[explain]") {
+  const test::TempDir dir;
+  const std::string scene = test::SourcePath("scenes/lit-gouraud.json").string();
+  const std::string page = (dir / "chain page.html").string();
+  const test::CliResult r = test::RunCli({"explain", scene, "--html", page});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out == "wrote " + page + "\n");
+  CHECK(r.err.empty());
+  CHECK(test::ReadFile(page).rfind("<!DOCTYPE html>", 0) == 0);
+
+  const test::CliResult with_json = test::RunCli({"explain", scene, "--html", page, "--json", "--vertex", "3"});
+  REQUIRE(with_json.exit_code == 0);
+  CHECK(with_json.out == test::RunCli({"explain", scene, "--json", "--vertex", "3"}).out);
+  CHECK_THAT(test::ReadFile(page), HasSubstring("takes vertex 3 of instance 0"));
+
+  const std::string never = (dir / "never.html").string();
+  const test::CliResult bad = test::RunCli({"explain", scene, "--html", never, "--vertex", "1000000"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.out.empty());
+  CHECK_FALSE(std::filesystem::exists(never));
+  // A scene without instances has no chain to draw: a usage error, not a crash.
+  auto empty = nlohmann::json::parse(test::ReadFile(test::SourcePath("scenes/cgfs-transforms.json")));
+  empty["instances"] = nlohmann::json::array();
+  const test::CliResult nothing = test::RunCliWithInput({"explain", "-", "--html", never}, empty.dump());
+  CHECK(nothing.exit_code == 2);
+  CHECK(nothing.err.rfind("twinraster explain: --html: the scene has no instance to draw", 0) == 0);
+  CHECK_FALSE(std::filesystem::exists(never));
+}
+
+TEST_CASE("explain's text and page never show -0, though the JSON has negative zeros", "[explain]") {
+  const test::TempDir dir;
+  // Scenes whose matrices or traces hold a -0.0: a normal matrix of a scale, mirrored and zero scales.
+  for (const char* name : {"lit-gouraud.json", "hard/lit-mirror-scales.json", "hard/zero-negative-scale.json"}) {
+    const std::string scene = test::SourcePath(std::string("scenes/") + name).string();
+    INFO(scene);
+    const test::CliResult json = test::RunCli({"explain", scene, "--json"});
+    REQUIRE(json.exit_code == 0);
+    REQUIRE(json.out.find("-0.0") != std::string::npos);
+    const test::CliResult text = test::RunCli({"explain", scene, "--all-vertices"});
+    REQUIRE(text.exit_code == 0);
+    CHECK_FALSE(test::HasNegativeZero(text.out));
+    const std::string page = (dir / "page.html").string();
+    REQUIRE(test::RunCli({"explain", scene, "--html", page}).exit_code == 0);
+    CHECK_FALSE(test::HasNegativeZero(test::ReadFile(page)));
+  }
 }
