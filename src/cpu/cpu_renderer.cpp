@@ -18,6 +18,87 @@ namespace twinraster {
 
 namespace {
 
+// Where a chunk's bands are drawn: the scratch holding its binned primitives, the framebuffer and
+// the depth tiles.
+struct BandTarget {
+  const cpu::GeometryScratch& scratch;
+  const CpuOptions& options;
+  int height;
+  cpu::Framebuffer& fb;
+  cpu::DepthTiles& tiles;
+};
+
+// Each part rasterizes its own bands, each band's triangles (or lines) in list order; hidden[part]
+// counts what the depth tiles skipped. The band loop is kept as one lambda: it is the hot one, and
+// GCC compiles it to fewer instructions than when it is split into functions.
+void DrawChunk(const BandTarget& target, bool wireframe, unsigned threads, unsigned bands,
+               std::vector<std::uint64_t>& hidden) {
+  using namespace cpu;
+  const GeometryScratch& scratch = target.scratch;
+  const CpuOptions& options = target.options;
+  const int height = target.height;
+  Framebuffer& fb = target.fb;
+  DepthTiles& tiles = target.tiles;
+  ParallelParts(threads, [&](unsigned part) {
+    std::uint64_t skipped = 0;  // counted here: a shared array written per triangle would ping-pong
+    // The primitives of the chunk's bins for one band, drawn in order: parts[p][i] for each i in
+    // bins[p][band], p = 0, 1, ...; rows(primitive, row_begin, row_end, on_span) rasterizes one.
+    const auto draw_band = [&](unsigned band, const auto& parts, auto&& rows) {
+      const int band_begin = static_cast<int>(band) * kBandRows;
+      const int band_end = std::min(height, band_begin + kBandRows);
+      for (std::size_t p = 0; p < parts.size(); ++p) {
+        for (const std::uint32_t i : scratch.bins[p][band]) {
+          const auto& t = parts[p][i];
+          const int row_begin = std::max(t.bounds.y0, band_begin), row_end = std::min(t.bounds.y1 + 1, band_end);
+          if (options.depth_tiles && tiles.Hidden(t.bounds, t.depth, static_cast<int>(band), row_begin, row_end)) {
+            ++skipped;
+            continue;
+          }
+          rows(t, row_begin, row_end, [&](int py, Span span) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(t)>, TriangleSetup>) {
+              if (t.smooth) {
+                ShadeSmoothSpan(fb, py, span, t.depth, scratch.colour_planes[p][t.colour]);
+                tiles.MarkDrawn(py, span);
+                return;
+              }
+            }
+            ShadeSpan(fb, py, span, t.depth, t.colour);
+            tiles.MarkDrawn(py, span);
+          });
+        }
+      }
+      if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
+    };
+    for (unsigned band = part; band < bands; band += threads) {
+      if (wireframe) {
+        draw_band(band, scratch.lines, [](const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
+          for (int py = row_begin; py < row_end; ++py) {
+            const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
+            if (span.begin < span.end) on_span(py, span);
+          }
+        });
+      } else {
+        draw_band(band, scratch.triangles, [](const TriangleSetup& t, int row_begin, int row_end, auto&& on_span) {
+          RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup&, int py, Span span) { on_span(py, span); });
+        });
+      }
+    }
+    hidden[part] += skipped;
+  });
+}
+
+// Clears every row, each part its own bands.
+void ClearFrame(cpu::Framebuffer& fb, unsigned threads, std::uint32_t height, std::uint32_t background) {
+  using namespace cpu;
+  const TriangleChunks none;
+  ParallelParts(threads, [&](unsigned part) {
+    RasterizeBands(
+        none, RowShare{threads, part}, static_cast<int>(height),
+        [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); },
+        [](const TriangleSetup&, int, Span) {});
+  });
+}
+
 // The pipeline after validation; `clip` replaces the vertex stage when given. The list streams
 // through in chunks (geometry.hpp): each chunk is set up by all threads, then rasterized by all
 // threads, each over its own bands, before the next chunk is set up, so memory stays bounded.
@@ -40,70 +121,17 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   double setup_ms = 0, draw_ms = 0;
   Framebuffer fb(list.width, list.height,
                  list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
-  const std::uint32_t background = PackRgba(list.background);
-  const TriangleChunks none;
-  ParallelParts(threads, [&](unsigned part) {
-    RasterizeBands(
-        none, RowShare{threads, part}, static_cast<int>(list.height),
-        [&](int row_begin, int row_end) { ClearRows(fb, row_begin, row_end, background); },
-        [](const TriangleSetup&, int, Span) {});
-  });
+  ClearFrame(fb, threads, list.height, PackRgba(list.background));
   draw_ms += clock.Lap();
 
   DepthTiles tiles(list.width, list.height, fb.compare);
   std::vector<std::uint64_t> hidden(threads, 0);  // per part
-  const int height = static_cast<int>(list.height);
+  const BandTarget target{scratch, options, static_cast<int>(list.height), fb, tiles};
   for (const GeometryChunk& chunk : chunks) {
     // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
     ProcessGeometry(list, chunk, threads, options.rules, scratch, clip, bands);
     setup_ms += clock.Lap();
-    // Draw: each part rasterizes its own bands, each band's triangles (or lines) in list order.
-    ParallelParts(threads, [&](unsigned part) {
-      std::uint64_t skipped = 0;  // counted here: a shared array written per triangle would ping-pong
-      // The primitives of the chunk's bins for one band, drawn in order: parts[p][i] for each i in
-      // bins[p][band], p = 0, 1, ...; rows(primitive, row_begin, row_end, on_span) rasterizes one.
-      const auto draw_band = [&](unsigned band, const auto& parts, auto&& rows) {
-        const int band_begin = static_cast<int>(band) * kBandRows;
-        const int band_end = std::min(height, band_begin + kBandRows);
-        for (std::size_t p = 0; p < parts.size(); ++p) {
-          for (const std::uint32_t i : scratch.bins[p][band]) {
-            const auto& t = parts[p][i];
-            const int row_begin = std::max(t.bounds.y0, band_begin), row_end = std::min(t.bounds.y1 + 1, band_end);
-            if (options.depth_tiles && tiles.Hidden(t.bounds, t.depth, static_cast<int>(band), row_begin, row_end)) {
-              ++skipped;
-              continue;
-            }
-            rows(t, row_begin, row_end, [&](int py, Span span) {
-              if constexpr (std::is_same_v<std::decay_t<decltype(t)>, TriangleSetup>) {
-                if (t.smooth) {
-                  ShadeSmoothSpan(fb, py, span, t.depth, scratch.colour_planes[p][t.colour]);
-                  tiles.MarkDrawn(py, span);
-                  return;
-                }
-              }
-              ShadeSpan(fb, py, span, t.depth, t.colour);
-              tiles.MarkDrawn(py, span);
-            });
-          }
-        }
-        if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
-      };
-      for (unsigned band = part; band < bands; band += threads) {
-        if (list.wireframe) {
-          draw_band(band, scratch.lines, [](const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
-            for (int py = row_begin; py < row_end; ++py) {
-              const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
-              if (span.begin < span.end) on_span(py, span);
-            }
-          });
-        } else {
-          draw_band(band, scratch.triangles, [](const TriangleSetup& t, int row_begin, int row_end, auto&& on_span) {
-            RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup&, int py, Span span) { on_span(py, span); });
-          });
-        }
-      }
-      hidden[part] += skipped;
-    });
+    DrawChunk(target, list.wireframe, threads, bands, hidden);
     draw_ms += clock.Lap();
   }
 

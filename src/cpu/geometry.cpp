@@ -173,100 +173,126 @@ TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads, const Ras
   return std::move(scratch.triangles);
 }
 
+namespace {
+
+// Threads only pay off for enough work; the result does not depend on their number.
+unsigned PartsFor(unsigned threads, std::size_t items, std::size_t per_part) {
+  return static_cast<unsigned>(std::min<std::size_t>(threads, 1 + items / per_part));
+}
+
+// The draw i with start[i] <= global < start[i + 1].
+std::size_t DrawOf(const std::vector<std::size_t>& start, std::size_t global) {
+  return static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), global) - start.begin()) - 1;
+}
+
+// A chunk's draws, numbered from 0 (draw chunk.draw_begin + i), and its triangles numbered across
+// them, so that both loops split evenly.
+struct ChunkDraws {
+  ChunkDraws(const DrawList& l, const GeometryChunk& c)
+      : list(l), chunk(c), count(c.draw_end - c.draw_begin), triangle_start(count + 1, 0) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t triangles = chunk.slice ? chunk.triangle_end - chunk.triangle_begin : mesh(i).triangles.size();
+      triangle_start[i + 1] = triangle_start[i] + triangles;
+    }
+  }
+  const DrawMesh& mesh(std::size_t i) const { return list.meshes[list.draws[chunk.draw_begin + i].mesh]; }
+
+  const DrawList& list;
+  const GeometryChunk& chunk;
+  std::size_t count;
+  std::vector<std::size_t> triangle_start;  // draw i's triangles are [triangle_start[i], triangle_start[i + 1])
+  std::size_t first_triangle = chunk.slice ? chunk.triangle_begin : 0;  // the first's index in its mesh
+};
+
+// Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices,
+// into scratch.vertices from scratch.vertex_start[i] for draw i.
+void ShadeVertices(const ChunkDraws& draws, const ViewportState& vp, const std::vector<std::vector<glm::vec4>>* clip,
+                   unsigned threads, GeometryScratch& scratch) {
+  const DrawList& list = draws.list;
+  const std::size_t draw_begin = draws.chunk.draw_begin;
+  std::vector<ShadedVertex>& vertices = scratch.vertices;
+  std::vector<std::size_t>& vertex_start = scratch.vertex_start;
+  vertex_start.assign(draws.count + 1, 0);
+  for (std::size_t i = 0; i < draws.count; ++i) vertex_start[i + 1] = vertex_start[i] + draws.mesh(i).positions.size();
+  vertices.resize(vertex_start[draws.count]);
+  ParallelFor(PartsFor(threads, vertices.size(), 8192), vertices.size(),
+              [&](std::size_t begin, std::size_t end, unsigned) {
+                for (std::size_t g = begin; g < end;) {
+                  const std::size_t i = DrawOf(vertex_start, g);
+                  const std::size_t d = draw_begin + i;
+                  const DrawMesh& mesh = draws.mesh(i);
+                  const std::size_t stop = std::min(end, vertex_start[i + 1]);
+                  for (; g < stop; ++g) {
+                    const std::size_t v = g - vertex_start[i];
+                    vertices[g] = clip ? ShadeClipVertex((*clip)[d][v], vp)
+                                       : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
+                  }
+                }
+              });
+}
+
+// Empties each part's output and bins and reserves its share. Here, in the calling thread: a
+// worker's fresh memory would cost a page fault per 4 KiB on every render; with a reused scratch
+// there is usually nothing to allocate.
+void ReserveParts(std::size_t triangle_count, unsigned parts, unsigned band_count, bool wireframe,
+                  GeometryScratch& scratch) {
+  scratch.triangles.resize(wireframe ? 0 : parts);
+  scratch.colour_planes.resize(wireframe ? 0 : parts);
+  scratch.lines.resize(wireframe ? parts : 0);
+  scratch.bins.resize(parts);
+  for (unsigned part = 0; part < parts; ++part) {
+    scratch.bins[part].resize(band_count);
+    for (auto& bin : scratch.bins[part]) bin.clear();
+    const std::size_t share = triangle_count * (part + 1) / parts - triangle_count * part / parts;
+    if (wireframe) {
+      scratch.lines[part].clear();
+      scratch.lines[part].reserve(3 * share + 16);
+    } else {
+      scratch.triangles[part].clear();
+      scratch.triangles[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
+      scratch.colour_planes[part].clear();
+    }
+  }
+}
+
+// Bins one part's primitives while they are still in cache (most touch one band).
+template <class Primitives>
+void Bin(const Primitives& primitives, std::vector<std::vector<std::uint32_t>>& bins) {
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    for (int band = FirstBand(primitives[i].bounds); band <= LastBand(primitives[i].bounds); ++band) {
+      bins[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+}
+
+}  // namespace
+
+// A later slice of one draw reuses the vertices its first slice shaded. Each part of the triangles
+// keeps its slice in order. The per-triangle loop is kept whole here: it is the hot one, and GCC
+// compiles it to fewer instructions than when it is split into functions.
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip,
                      unsigned band_count) {
   const ViewportState vp = MakeViewport(list.width, list.height, rules);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
+  const ChunkDraws draws(list, chunk);
+  if (chunk.shade_vertices) ShadeVertices(draws, vp, clip, threads, scratch);
 
-  // Numbering of the chunk's draws' vertices and triangles, so both loops split evenly. Index i
-  // stands for draw chunk.draw_begin + i.
-  const std::size_t draw_count = chunk.draw_end - chunk.draw_begin;
-  const auto mesh_of = [&](std::size_t i) -> const DrawMesh& {
-    return list.meshes[list.draws[chunk.draw_begin + i].mesh];
-  };
-  std::vector<std::size_t> triangle_start(draw_count + 1, 0);
-  for (std::size_t i = 0; i < draw_count; ++i) {
-    const std::size_t triangles = chunk.slice ? chunk.triangle_end - chunk.triangle_begin : mesh_of(i).triangles.size();
-    triangle_start[i + 1] = triangle_start[i] + triangles;
-  }
-  const std::size_t first_triangle = chunk.slice ? chunk.triangle_begin : 0;
-  const auto draw_of = [](const std::vector<std::size_t>& start, std::size_t global) {
-    return static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), global) -
-                                    start.begin()) -
-           1;
-  };
-
-  // Threads only pay off for enough work; the result does not depend on their number.
-  const auto parts_for = [threads](std::size_t items, std::size_t per_part) {
-    return static_cast<unsigned>(std::min<std::size_t>(threads, 1 + items / per_part));
-  };
-
-  // Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices;
-  // a later slice of one draw reuses what its first slice shaded.
-  std::vector<ShadedVertex>& vertices = scratch.vertices;
-  std::vector<std::size_t>& vertex_start = scratch.vertex_start;
-  if (chunk.shade_vertices) {
-    vertex_start.assign(draw_count + 1, 0);
-    for (std::size_t i = 0; i < draw_count; ++i) vertex_start[i + 1] = vertex_start[i] + mesh_of(i).positions.size();
-    vertices.resize(vertex_start[draw_count]);
-    ParallelFor(parts_for(vertices.size(), 8192), vertices.size(),
-                [&](std::size_t begin, std::size_t end, unsigned) {
-                  for (std::size_t g = begin; g < end;) {
-                    const std::size_t i = draw_of(vertex_start, g);
-                    const std::size_t d = chunk.draw_begin + i;
-                    const DrawMesh& mesh = mesh_of(i);
-                    const std::size_t stop = std::min(end, vertex_start[i + 1]);
-                    for (; g < stop; ++g) {
-                      const std::size_t v = g - vertex_start[i];
-                      vertices[g] = clip ? ShadeClipVertex((*clip)[d][v], vp)
-                                         : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
-                    }
-                  }
-                });
-  }
-
-  // Primitive assembly, clipping and setup; each part keeps its slice in order.
-  const std::size_t triangle_count = triangle_start[draw_count];
-  const unsigned triangle_parts = parts_for(triangle_count, 2048);
-  // Reserved here, in the calling thread (a worker's fresh memory would cost a page fault per
-  // 4 KiB on every render); with a reused scratch there is usually nothing to allocate.
+  const std::vector<std::size_t>& triangle_start = draws.triangle_start;
+  const std::size_t first_triangle = draws.first_triangle;
+  const std::size_t triangle_count = triangle_start[draws.count];
+  const unsigned triangle_parts = PartsFor(threads, triangle_count, 2048);
   const bool wireframe = list.wireframe;
+  ReserveParts(triangle_count, triangle_parts, band_count, wireframe, scratch);
+  const std::vector<ShadedVertex>& vertices = scratch.vertices;
+  const std::vector<std::size_t>& vertex_start = scratch.vertex_start;
   TriangleChunks& parts = scratch.triangles;
   LineChunks& line_parts = scratch.lines;
-  parts.resize(wireframe ? 0 : triangle_parts);
-  scratch.colour_planes.resize(wireframe ? 0 : triangle_parts);
-  line_parts.resize(wireframe ? triangle_parts : 0);
-  scratch.bins.resize(triangle_parts);
-  for (unsigned part = 0; part < triangle_parts; ++part) {
-    scratch.bins[part].resize(band_count);
-    for (auto& bin : scratch.bins[part]) bin.clear();
-    const std::size_t share =
-        triangle_count * (part + 1) / triangle_parts - triangle_count * part / triangle_parts;
-    if (wireframe) {
-      line_parts[part].clear();
-      line_parts[part].reserve(3 * share + 16);
-    } else {
-      parts[part].clear();
-      parts[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
-      scratch.colour_planes[part].clear();
-    }
-  }
-  // Bins the primitives of one part while they are still in cache (most touch one band).
-  const auto bin = [&](const auto& primitives, unsigned part) {
-    if (band_count == 0) return;
-    std::vector<std::vector<std::uint32_t>>& bins = scratch.bins[part];
-    for (std::size_t i = 0; i < primitives.size(); ++i) {
-      for (int band = FirstBand(primitives[i].bounds); band <= LastBand(primitives[i].bounds); ++band) {
-        bins[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
-      }
-    }
-  };
   ParallelFor(triangle_parts, triangle_count,
               [&](std::size_t begin, std::size_t end, unsigned part) {
                 for (std::size_t g = begin; g < end;) {
-                  const std::size_t i = draw_of(triangle_start, g);
-                  const DrawMesh& mesh = mesh_of(i);
+                  const std::size_t i = DrawOf(triangle_start, g);
+                  const DrawMesh& mesh = draws.mesh(i);
                   const ShadedVertex* base = vertices.data() + vertex_start[i];
                   const std::size_t stop = std::min(end, triangle_start[i + 1]);
                   for (; g < stop; ++g) {
@@ -296,10 +322,11 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
                     }
                   }
                 }
+                if (band_count == 0) return;
                 if (wireframe) {
-                  bin(line_parts[part], part);
+                  Bin(line_parts[part], scratch.bins[part]);
                 } else {
-                  bin(parts[part], part);
+                  Bin(parts[part], scratch.bins[part]);
                 }
               });
 }

@@ -1,5 +1,6 @@
 #include "gpu/gpu_renderer.hpp"
 
+#include "gpu/draw_recorder.hpp"
 #include "gpu/instance_buffers.hpp"
 #include "gpu/light_buffers.hpp"
 #include "gpu/mesh_buffers.hpp"
@@ -46,6 +47,10 @@ struct GpuRenderer::Impl {
   // Returns the number of draw commands recorded.
   std::size_t Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
                      const gpu::InstanceBuffers& instances, const gpu::LightBuffers* lights);
+  // Points the descriptor sets at this frame's colour buffer and, when lit, its light buffers.
+  void PointSets(const gpu::MeshBuffers& meshes, const gpu::LightBuffers* lights);
+  void BeginPass(const DrawList& list);
+  void CopyOut(const DrawList& list);
 
   gpu::Instancing instancing;
   std::uint32_t instances_per_buffer;
@@ -119,20 +124,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
     target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width,
                                                     list.height);
   }
-  // Safe to rewrite: the previous frame that read the set has finished (we waited for it).
-  const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer,
-                         vk::DeviceSize range = VK_WHOLE_SIZE, vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
-    const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = range};
-    context.device().updateDescriptorSets(
-        vk::WriteDescriptorSet{.dstSet = *set, .dstBinding = binding, .descriptorCount = 1, .descriptorType = type, .pBufferInfo = &info},
-        nullptr);
-  };
-  point(colour_set, 0, meshes.colours());
-  if (lights) {
-    point(lit_set, 0, meshes.colours());
-    point(lit_set, 1, lights->instances(), lights->instance_range(), vk::DescriptorType::eStorageBufferDynamic);
-    point(lit_set, 2, lights->lights());
-  }
+  PointSets(meshes, lights ? &*lights : nullptr);
   const std::size_t draw_commands = Record(list, plan, meshes, instances, lights ? &*lights : nullptr);
   const double setup_ms = clock.Lap();
 
@@ -164,15 +156,45 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   return image;
 }
 
+// Safe to rewrite: the previous frame that read the sets has finished (Render waited for it).
+void GpuRenderer::Impl::PointSets(const gpu::MeshBuffers& meshes, const gpu::LightBuffers* lights) {
+  const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer,
+                         vk::DeviceSize range = VK_WHOLE_SIZE, vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
+    const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = range};
+    context.device().updateDescriptorSets(
+        vk::WriteDescriptorSet{.dstSet = *set, .dstBinding = binding, .descriptorCount = 1, .descriptorType = type, .pBufferInfo = &info},
+        nullptr);
+  };
+  point(colour_set, 0, meshes.colours());
+  if (lights) {
+    point(lit_set, 0, meshes.colours());
+    point(lit_set, 1, lights->instances(), lights->instance_range(), vk::DescriptorType::eStorageBufferDynamic);
+    point(lit_set, 2, lights->lights());
+  }
+}
+
 std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan,
                                       const gpu::MeshBuffers& meshes, const gpu::InstanceBuffers& instances,
                                       const gpu::LightBuffers* lights) {
   const vk::raii::CommandBuffer& cmd = commands;
-  const vk::Extent2D extent{list.width, list.height};
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
   cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+  BeginPass(list);
+  cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
+  if (lights) cmd.bindVertexBuffers(2, lights->normals(), vk::DeviceSize{0});
+  gpu::DrawRecorder recorder(cmd, pipeline, list, meshes, instances, *colour_set, *lit_set);
+  for (const gpu::DrawBatch& batch : plan.batches) recorder.Record(batch);
+  cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing
+  CopyOut(list);
+  cmd.end();
+  return recorder.draw_commands();
+}
 
-  // Depth starts at the far end: 1.0, or 0.0 with reversed Z.
+// Clears colour and depth (depth to the far end: 1.0, or 0.0 with reversed Z) and sets the
+// viewport and scissor to the whole image.
+void GpuRenderer::Impl::BeginPass(const DrawList& list) {
+  const vk::raii::CommandBuffer& cmd = commands;
+  const vk::Extent2D extent{list.width, list.height};
   const float far_depth = list.reversed_z ? 0.0f : 1.0f;
   const std::array clear_values = {
       ClearColour(list.background),
@@ -193,91 +215,12 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                                   .minDepth = 0.0f,
                                   .maxDepth = 1.0f});
   cmd.setScissor(0, vk::Rect2D{.offset = {0, 0}, .extent = extent});
-  cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
-  if (lights) cmd.bindVertexBuffers(2, lights->normals(), vk::DeviceSize{0});
-  // In list order: the depth test is strict (LESS, or GREATER with reversed Z), so the earlier of
-  // two equally deep fragments stays. An instanced draw keeps that order too: its instances are
-  // rasterized in instance order.
-  std::optional<std::pair<Shading, gpu::FSource>> bound;
-  // The descriptor set bound: none yet, the unlit one, or the lit one showing LitInstance range k.
-  constexpr std::int64_t kNoSet = -2, kUnlitSet = -1;
-  std::int64_t bound_set = kNoSet;
-  std::optional<std::uint32_t> bound_buffer;
-  std::size_t draw_commands = 0;
-  for (const gpu::DrawBatch& batch : plan.batches) {
-    const gpu::MeshRange& range = meshes.range(batch.mesh);
-    if (range.corner_count == 0) continue;  // a mesh without triangles draws nothing
-    const gpu::FSource source = batch.instanced ? gpu::FSource::kInstanceAttribute : gpu::FSource::kPushConstant;
-    const Shading shading = list.meshes[batch.mesh].shading;
-    const bool lit = shading != Shading::kUnlit;
-    const vk::PipelineLayout layout = *pipeline.layout(lit);
-    if (bound != std::pair{shading, source}) {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
-                       *pipeline.pipeline(shading, source, list.reversed_z, list.wireframe));
-      bound = std::pair{shading, source};
-    }
-    if (batch.instanced && bound_buffer != batch.buffer) {
-      cmd.bindVertexBuffers(1, instances.buffer(batch.buffer), vk::DeviceSize{0});
-      bound_buffer = batch.buffer;
-    }
-    if (!lit) {
-      if (bound_set != kUnlitSet) {
-        // The lit and unlit layouts differ, so switching between them unbinds the set.
-        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, *colour_set, nullptr);
-        bound_set = kUnlitSet;
-      }
-      if (batch.instanced) {
-        cmd.draw(range.corner_count, batch.count, range.first_corner, batch.first_instance);
-        ++draw_commands;
-        continue;
-      }
-      for (std::uint32_t i = 0; i < batch.count; ++i) {
-        const gpu::PushConstants push{.F = list.draws[batch.first_draw + i].F};
-        cmd.pushConstants<gpu::PushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-        cmd.draw(range.corner_count, 1, range.first_corner, 0);
-        ++draw_commands;
-      }
-      continue;
-    }
-    // Lit: the shader finds a draw's LitInstance at push.draw + gl_InstanceIndex within the
-    // bound range, so a batch is drawn in pieces that do not cross a range's end.
-    for (std::uint32_t drawn = 0; drawn < batch.count;) {
-      const std::size_t d = batch.first_draw + drawn;
-      const auto lit_range = static_cast<std::uint32_t>(d / gpu::kLitInstancesPerRange);
-      const std::size_t range_end = std::size_t{lit_range + 1} * gpu::kLitInstancesPerRange;
-      // The binding shows kLitInstancesPerRange draws from range_begin; the last range's window
-      // is moved back to end with the buffer (an offset plus the range may not pass its end).
-      const std::size_t range_begin = std::min<std::size_t>(
-          std::size_t{lit_range} * gpu::kLitInstancesPerRange,
-          list.draws.size() > gpu::kLitInstancesPerRange ? list.draws.size() - gpu::kLitInstancesPerRange : 0);
-      const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(batch.count - drawn, range_end - d));
-      if (bound_set != std::int64_t{lit_range}) {
-        const auto offset = static_cast<std::uint32_t>(range_begin * gpu::kLitInstanceBytes);
-        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, layout, 0, *lit_set, offset);
-        bound_set = lit_range;
-      }
-      if (batch.instanced) {
-        // gl_InstanceIndex counts from firstInstance: the offset makes the sum the draw's index
-        // in the range (unsigned arithmetic wraps, in C++ and in GLSL alike).
-        const std::uint32_t first_instance = batch.first_instance + drawn;
-        const gpu::LitPushConstants push{.F = glm::mat4(1.0f),
-                                         .draw = static_cast<std::uint32_t>(d - range_begin) - first_instance};
-        cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-        cmd.draw(range.corner_count, n, range.first_corner, first_instance);
-        ++draw_commands;
-      } else {
-        for (std::uint32_t i = 0; i < n; ++i) {
-          const gpu::LitPushConstants push{.F = list.draws[d + i].F, .draw = static_cast<std::uint32_t>(d + i - range_begin)};
-          cmd.pushConstants<gpu::LitPushConstants>(layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-          cmd.draw(range.corner_count, 1, range.first_corner, 0);
-          ++draw_commands;
-        }
-      }
-      drawn += n;
-    }
-  }
-  cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing
+}
 
+// Copies the colour image into the readback buffer, visible to the host once the fence says the
+// work is done.
+void GpuRenderer::Impl::CopyOut(const DrawList& list) {
+  const vk::raii::CommandBuffer& cmd = commands;
   cmd.copyImageToBuffer(target->colour_image(), vk::ImageLayout::eTransferSrcOptimal,
                         target->readback().buffer(),
                         vk::BufferImageCopy{
@@ -291,7 +234,6 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                             .imageOffset = {0, 0, 0},
                             .imageExtent = {list.width, list.height, 1},
                         });
-  // Make the copied bytes visible to the host once the fence says the work is done.
   cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
                       nullptr,
                       vk::BufferMemoryBarrier{
@@ -304,8 +246,6 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
                           .size = VK_WHOLE_SIZE,
                       },
                       nullptr);
-  cmd.end();
-  return draw_commands;
 }
 
 GpuRenderer::GpuRenderer(const GpuOptions& options) : impl_(std::make_unique<Impl>(options)) {}

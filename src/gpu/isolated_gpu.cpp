@@ -2,6 +2,7 @@
 
 #include "base/stopwatch.hpp"
 #include "gpu/draw_list_wire.hpp"
+#include "gpu/gpu_reply_wire.hpp"
 
 #include <poll.h>
 #include <signal.h>
@@ -24,58 +25,40 @@ namespace {
 
 [[noreturn]] void ThrowErrno(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
 
-// The child's messages: kDevice once it has its device, then for each list one of the others.
-// kRendered is followed by the pixels. The parent's requests are a length and an encoded list.
-enum Tag : char { kDevice = 'D', kRendered = 'R', kUnavailable = 'U', kBadList = 'B', kFailed = 'X' };
+// MSG_NOSIGNAL: a peer that died is an error to report, not a SIGPIPE that would kill the writer.
+bool SendAll(int fd, const void* data, std::size_t size) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = send(fd, p, size, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n, size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
 
-// Whole messages written on a stream socket. MSG_NOSIGNAL: a peer that died is an error to report,
-// not a SIGPIPE that would kill the writer.
-class Writer {
+bool SendAll(int fd, const std::string& bytes) { return SendAll(fd, bytes.data(), bytes.size()); }
+
+// The parent's request: the encoded list's length, then the list.
+bool SendList(int fd, const std::string& bytes) {
+  const std::uint64_t size = bytes.size();
+  return SendAll(fd, &size, sizeof size) && SendAll(fd, bytes);
+}
+
+// Reads exactly what is asked from a stream socket, waiting at most until the deadline (none:
+// forever).
+class SocketReader final : public gpu::ByteSource {
  public:
-  explicit Writer(char tag) { bytes_.push_back(tag); }
-  Writer() = default;
-  Writer& U32(std::uint32_t v) { return Raw(&v, sizeof v); }
-  Writer& U64(std::uint64_t v) { return Raw(&v, sizeof v); }
-  Writer& F64(double v) { return Raw(&v, sizeof v); }
-  Writer& Text(const std::string& s) {
-    U32(static_cast<std::uint32_t>(s.size()));
-    bytes_.append(s);
-    return *this;
-  }
-  bool Send(int fd) const { return SendAll(fd, bytes_.data(), bytes_.size()); }
-  static bool SendAll(int fd, const void* data, std::size_t size) {
-    const char* p = static_cast<const char*>(data);
-    while (size > 0) {
-      const ssize_t n = send(fd, p, size, MSG_NOSIGNAL);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      p += n, size -= static_cast<std::size_t>(n);
-    }
-    return true;
-  }
-
- private:
-  Writer& Raw(const void* p, std::size_t n) {
-    bytes_.append(static_cast<const char*>(p), n);
-    return *this;
-  }
-  std::string bytes_;
-};
-
-// Reads exactly what is asked, waiting at most until the deadline (none: forever).
-class Reader {
- public:
-  enum class Status { kOk, kClosed, kTimedOut };
-  Reader(int fd, std::optional<double> deadline_ms, const Stopwatch& clock)
+  SocketReader(int fd, std::optional<double> deadline_ms, const Stopwatch& clock)
       : fd_(fd), deadline_ms_(deadline_ms), clock_(clock) {}
 
-  Status Read(void* data, std::size_t size) {
+  gpu::ReadStatus Read(void* data, std::size_t size) override {
     char* p = static_cast<char*>(data);
     while (size > 0) {
       int wait_ms = -1;
       if (deadline_ms_) {
         const double left = *deadline_ms_ - clock_.Milliseconds();
-        if (left <= 0) return Status::kTimedOut;
+        if (left <= 0) return gpu::ReadStatus::kTimedOut;
         wait_ms = static_cast<int>(left) + 1;
       }
       pollfd ready{.fd = fd_, .events = POLLIN, .revents = 0};
@@ -84,20 +67,10 @@ class Reader {
       if (r <= 0) continue;  // interrupted, or the loop's top decides whether time is up
       const ssize_t n = read(fd_, p, size);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return Status::kClosed;
+      if (n <= 0) return gpu::ReadStatus::kClosed;
       p += n, size -= static_cast<std::size_t>(n);
     }
-    return Status::kOk;
-  }
-  template <typename T>
-  Status Value(T& v) {
-    return Read(&v, sizeof v);
-  }
-  Status Text(std::string& s) {
-    std::uint32_t n = 0;
-    if (const Status st = Value(n); st != Status::kOk) return st;
-    s.resize(n);
-    return Read(s.data(), n);
+    return gpu::ReadStatus::kOk;
   }
 
  private:
@@ -117,25 +90,40 @@ void FaultForTests() {
 
 // Draws one list and reports it. Returns false when the child cannot go on.
 bool ServeList(GpuRenderer& renderer, const DrawList& list, int fd) {
+  using gpu::ReplyTag;
   try {
     FaultForTests();
     Stopwatch clock;
-    GpuTimings t;
-    const Image image = renderer.Render(list, &t);
-    const double work_ms = clock.Milliseconds();
-    Writer(kRendered)
-        .F64(t.setup_ms).F64(t.draw_ms).F64(t.readback_ms)
-        .U64(t.draw_commands).U64(t.instanced_draws)
-        .F64(work_ms)
-        .U64(image.rgba.size())
-        .Send(fd);
-    return Writer::SendAll(fd, image.rgba.data(), image.rgba.size());
+    gpu::RenderedReply reply;
+    const Image image = renderer.Render(list, &reply.timings);
+    reply.work_ms = clock.Milliseconds();
+    reply.pixel_bytes = image.rgba.size();
+    SendAll(fd, gpu::EncodeRendered(reply));
+    return SendAll(fd, image.rgba.data(), image.rgba.size());
   } catch (const std::invalid_argument& e) {
-    return Writer(kBadList).Text(e.what()).Send(fd);  // nothing was touched: the next list may draw
+    // Nothing was touched: the next list may draw.
+    return SendAll(fd, gpu::EncodeProblem(ReplyTag::kBadList, e.what()));
   } catch (const std::exception& e) {
-    Writer(kFailed).Text(e.what()).Send(fd);
+    SendAll(fd, gpu::EncodeProblem(ReplyTag::kFailed, e.what()));
     return false;
   }
+}
+
+// Makes the child's renderer and tells the parent its device; false, with the reason sent instead,
+// when it cannot be made.
+bool MakeRenderer(std::optional<GpuRenderer>& renderer, const GpuOptions& options, int fd) {
+  using gpu::ReplyTag;
+  try {
+    Stopwatch clock;
+    renderer.emplace(options);
+    SendAll(fd, gpu::EncodeDevice({.device = renderer->Device(), .device_ms = clock.Milliseconds()}));
+    return true;
+  } catch (const GpuUnavailable& e) {
+    SendAll(fd, gpu::EncodeProblem(ReplyTag::kUnavailable, e.what()));
+  } catch (const std::exception& e) {
+    SendAll(fd, gpu::EncodeProblem(ReplyTag::kFailed, e.what()));
+  }
+  return false;
 }
 
 // The child: makes its device, draws the list it was born with, then each list the parent sends
@@ -143,39 +131,60 @@ bool ServeList(GpuRenderer& renderer, const DrawList& list, int fd) {
 // parent's buffered output (_exit).
 [[noreturn]] void ChildMain(const DrawList& first, const GpuOptions& options, int fd) {
   std::optional<GpuRenderer> renderer;
-  try {
-    Stopwatch clock;
-    renderer.emplace(options);
-    const DeviceIdentity& d = renderer->Device();
-    Writer(kDevice)
-        .Text(d.name).Text(d.driver_name).Text(d.driver_info)
-        .U32(d.vendor_id).U32(d.device_id).U32(d.driver_id).U32(d.driver_version).U32(d.api_version).U32(d.subpixel_bits)
-        .U32(d.strict_lines ? 1 : 0)
-        .F64(clock.Milliseconds())
-        .Send(fd);
-  } catch (const GpuUnavailable& e) {
-    Writer(kUnavailable).Text(e.what()).Send(fd);
-    _exit(0);
-  } catch (const std::exception& e) {
-    Writer(kFailed).Text(e.what()).Send(fd);
-    _exit(0);
-  }
-  if (!ServeList(*renderer, first, fd)) _exit(0);
+  if (!MakeRenderer(renderer, options, fd) || !ServeList(*renderer, first, fd)) _exit(0);
   const Stopwatch never;
-  Reader reader(fd, std::nullopt, never);
+  SocketReader reader(fd, std::nullopt, never);
   for (;;) {
     std::uint64_t size = 0;
-    if (reader.Value(size) != Reader::Status::kOk) _exit(0);  // the parent is done
+    if (reader.Read(&size, sizeof size) != gpu::ReadStatus::kOk) _exit(0);  // the parent is done
     std::string bytes(size, '\0');
-    if (reader.Read(bytes.data(), size) != Reader::Status::kOk) _exit(0);
+    if (reader.Read(bytes.data(), size) != gpu::ReadStatus::kOk) _exit(0);
     DrawList list;
     try {
       list = gpu::DecodeDrawList(bytes);
     } catch (const std::exception& e) {
-      Writer(kFailed).Text(e.what()).Send(fd);
+      SendAll(fd, gpu::EncodeProblem(gpu::ReplyTag::kFailed, e.what()));
       _exit(0);
     }
     if (!ServeList(*renderer, list, fd)) _exit(0);
+  }
+}
+
+// How the child answered one list.
+struct Answer {
+  gpu::ReadStatus status = gpu::ReadStatus::kOk;  // kOk: a whole answer came
+  bool child_goes_on = false;                     // it takes the next list
+  double work_ms = 0;                             // the list's time as the child measured it
+};
+
+// Reads replies until one answers the list: the pixels into `image`, a fresh child's device (its
+// first reply) into `device`, the rest into `result`.
+Answer Await(gpu::ByteSource& in, DeviceIdentity& device, Image& image, IsolatedGpuResult& result) {
+  using gpu::ReadStatus, gpu::ReplyTag;
+  Answer answer;
+  for (;;) {
+    ReplyTag tag{};
+    if ((answer.status = gpu::ReadTag(in, tag)) != ReadStatus::kOk) return answer;
+    if (tag == ReplyTag::kDevice) {
+      gpu::DeviceReply reply;
+      answer.status = gpu::ReadDevice(in, reply);
+      device = reply.device, result.device_ms = reply.device_ms;
+      if (answer.status != ReadStatus::kOk) return answer;
+    } else if (tag == ReplyTag::kRendered) {
+      gpu::RenderedReply reply;
+      answer.status = gpu::ReadRendered(in, reply, image.rgba);
+      result.timings = reply.timings, answer.work_ms = reply.work_ms;
+      result.outcome = GpuOutcome::kRendered;
+      answer.child_goes_on = answer.status == ReadStatus::kOk;
+      return answer;
+    } else {
+      answer.status = gpu::ReadProblem(in, result.problem);
+      result.outcome = tag == ReplyTag::kUnavailable ? GpuOutcome::kUnavailable
+                       : tag == ReplyTag::kBadList   ? GpuOutcome::kBadList
+                                                     : GpuOutcome::kCrashed;
+      answer.child_goes_on = tag == ReplyTag::kBadList;
+      return answer;
+    }
   }
 }
 
@@ -226,101 +235,63 @@ GpuProcess::~GpuProcess() = default;
 IsolatedGpuResult GpuProcess::Render(const DrawList& list) {
   IsolatedGpuResult result;
   Stopwatch clock;
-  // A living child is sent the list; when that fails it has died since, and a fresh one inherits
-  // the list instead.
-  if (child_) {
-    const std::string bytes = gpu::EncodeDrawList(list);
-    if (!Writer().U64(bytes.size()).Send(child_->fd) || !Writer::SendAll(child_->fd, bytes.data(), bytes.size())) {
-      child_->Reap();
-      child_.reset();
-    }
-  }
-  if (!child_) {
-    ReapFinished();
-    int fds[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) ThrowErrno("socketpair for the GPU process");
-    const pid_t pid = fork();
-    if (pid < 0) {
-      close(fds[0]), close(fds[1]);
-      ThrowErrno("fork of the GPU process");
-    }
-    if (pid == 0) {
-      close(fds[0]);
-      ChildMain(list, options_.gpu, fds[1]);
-    }
-    close(fds[1]);
-    child_ = std::make_unique<Child>();
-    child_->pid = pid, child_->fd = fds[0];
-    device_ = DeviceIdentity{};
-  }
+  Hand(list);
   // Faulted in now, while the child works, rather than after.
   Image image(list.width, list.height);
 
   std::optional<double> deadline;
   if (options_.timeout_seconds > 0) deadline = clock.Milliseconds() + options_.timeout_seconds * 1000.0;
-  Reader reader(child_->fd, deadline, clock);
-  using Status = Reader::Status;
-  Status status = Status::kOk;
-  double work_ms = 0;
-  bool done = false, child_goes_on = false;
-  while (!done && status == Status::kOk) {
-    char tag = 0;
-    if ((status = reader.Value(tag)) != Status::kOk) break;
-    if (tag == kDevice) {
-      DeviceIdentity& d = device_;
-      std::uint32_t* numbers[] = {&d.vendor_id, &d.device_id, &d.driver_id, &d.driver_version, &d.api_version, &d.subpixel_bits};
-      for (std::string* text : {&d.name, &d.driver_name, &d.driver_info}) {
-        if (status == Status::kOk) status = reader.Text(*text);
-      }
-      for (std::uint32_t* number : numbers) {
-        if (status == Status::kOk) status = reader.Value(*number);
-      }
-      std::uint32_t strict_lines = 0;
-      if (status == Status::kOk) status = reader.Value(strict_lines);
-      d.strict_lines = strict_lines != 0;
-      if (status == Status::kOk) status = reader.Value(result.device_ms);
-    } else if (tag == kRendered) {
-      GpuTimings& t = result.timings;
-      std::uint64_t draws = 0, instanced = 0, size = 0;
-      for (double* v : {&t.setup_ms, &t.draw_ms, &t.readback_ms}) {
-        if (status == Status::kOk) status = reader.Value(*v);
-      }
-      for (std::uint64_t* v : {&draws, &instanced}) {
-        if (status == Status::kOk) status = reader.Value(*v);
-      }
-      if (status == Status::kOk) status = reader.Value(work_ms);
-      if (status == Status::kOk) status = reader.Value(size);
-      if (status == Status::kOk && size != image.rgba.size()) throw std::logic_error("GPU process: pixels of the wrong size");
-      if (status == Status::kOk) status = reader.Read(image.rgba.data(), image.rgba.size());
-      t.draw_commands = draws, t.instanced_draws = instanced;
-      result.outcome = GpuOutcome::kRendered;
-      done = child_goes_on = status == Status::kOk;
-    } else if (tag == kUnavailable || tag == kBadList || tag == kFailed) {
-      status = reader.Text(result.problem);
-      result.outcome = tag == kUnavailable ? GpuOutcome::kUnavailable
-                       : tag == kBadList   ? GpuOutcome::kBadList
-                                           : GpuOutcome::kCrashed;
-      done = status == Status::kOk;
-      child_goes_on = tag == kBadList;
-    } else {
-      throw std::logic_error("GPU process: unknown message");
-    }
-  }
+  SocketReader reader(child_->fd, deadline, clock);
+  const Answer answer = Await(reader, device_, image, result);
   result.device = device_;
-
-  if (done) {
-    if (!child_goes_on) child_.reset();
-    if (result.outcome == GpuOutcome::kRendered) {
-      result.image = std::move(image);
-      result.isolation_ms = std::max(0.0, clock.Milliseconds() - result.device_ms - work_ms);
-    }
+  if (answer.status != gpu::ReadStatus::kOk) {
+    ReapLost(answer.status == gpu::ReadStatus::kTimedOut, result);
     return result;
   }
-  // Closed before a whole answer, or out of time.
+  if (!answer.child_goes_on) child_.reset();
+  if (result.outcome == GpuOutcome::kRendered) {
+    result.image = std::move(image);
+    result.isolation_ms = std::max(0.0, clock.Milliseconds() - result.device_ms - answer.work_ms);
+  }
+  return result;
+}
+
+// A living child is sent the list; when that fails it has died since, and a fresh one inherits the
+// list instead.
+void GpuProcess::Hand(const DrawList& list) {
+  if (child_ && !SendList(child_->fd, gpu::EncodeDrawList(list))) {
+    child_->Reap();
+    child_.reset();
+  }
+  if (!child_) Spawn(list);
+}
+
+void GpuProcess::Spawn(const DrawList& list) {
+  ReapFinished();
+  int fds[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) ThrowErrno("socketpair for the GPU process");
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fds[0]), close(fds[1]);
+    ThrowErrno("fork of the GPU process");
+  }
+  if (pid == 0) {
+    close(fds[0]);
+    ChildMain(list, options_.gpu, fds[1]);
+  }
+  close(fds[1]);
+  child_ = std::make_unique<Child>();
+  child_->pid = pid, child_->fd = fds[0];
+  device_ = DeviceIdentity{};
+}
+
+// The child closed the socket before a whole answer, or ran out of time: it is reaped, and how it
+// ended is the result.
+void GpuProcess::ReapLost(bool timed_out, IsolatedGpuResult& result) {
   const int exit_status = child_->Reap();
   child_.reset();
   result.image = Image{};
-  if (status == Status::kTimedOut) {
+  if (timed_out) {
     result.outcome = GpuOutcome::kTimedOut;
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%g", options_.timeout_seconds);
@@ -331,9 +302,9 @@ IsolatedGpuResult GpuProcess::Render(const DrawList& list) {
     result.problem = "the Vulkan driver crashed (" + result.signal + ")";
   } else {
     result.outcome = GpuOutcome::kCrashed;
-    result.problem = "the GPU process exited (status " + std::to_string(WEXITSTATUS(exit_status)) + ") without a result";
+    result.problem =
+        "the GPU process exited (status " + std::to_string(WEXITSTATUS(exit_status)) + ") without a result";
   }
-  return result;
 }
 
 IsolatedGpuResult RenderIsolated(const DrawList& list, const IsolationOptions& options) {

@@ -59,6 +59,11 @@ class GpuProcess {
 
  private:
   struct Child;
+  void Hand(const DrawList& list);   // to the living child, or to a fresh one
+  void Spawn(const DrawList& list);  // a fresh child, born with the list
+  // Reaps a child that ended its answer early, and says how it ended in `result`.
+  void ReapLost(bool timed_out, IsolatedGpuResult& result);
+
   IsolationOptions options_;
   std::unique_ptr<Child> child_;  // none before the first list and after a crash
   DeviceIdentity device_;         // the living child's

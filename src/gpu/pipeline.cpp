@@ -120,6 +120,36 @@ vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading sh
   return CreateShaderModule(device, triangle_frag_spv);
 }
 
+struct VertexInput {
+  std::vector<vk::VertexInputBindingDescription> bindings;
+  std::vector<vk::VertexInputAttributeDescription> attributes;
+};
+
+// Binding 0: the vec3 position of a triangle's corner. Unlit, it is the only per-vertex attribute:
+// colours come per triangle from the storage buffer, found from the corner's number. Binding 1,
+// instanced only: F, one mat4 per instance, a column per location. Binding 2, lit only: the
+// corner's normal (location 5).
+VertexInput VertexInputFor(bool instanced, bool lit) {
+  VertexInput input{
+      .bindings = {{.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}},
+      .attributes = {{.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}},
+  };
+  if (instanced) {
+    input.bindings.push_back({.binding = 1, .stride = sizeof(glm::mat4), .inputRate = vk::VertexInputRate::eInstance});
+    for (std::uint32_t column = 0; column < 4; ++column) {
+      input.attributes.push_back({.location = 1 + column,
+                                  .binding = 1,
+                                  .format = vk::Format::eR32G32B32A32Sfloat,
+                                  .offset = column * static_cast<std::uint32_t>(sizeof(glm::vec4))});
+    }
+  }
+  if (lit) {
+    input.bindings.push_back({.binding = 2, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex});
+    input.attributes.push_back({.location = 5, .binding = 2, .format = vk::Format::eR32G32B32Sfloat, .offset = 0});
+  }
+  return input;
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
@@ -184,32 +214,12 @@ vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool revers
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
 
-  // Binding 0: the vec3 position of a triangle's corner. Unlit, it is the only per-vertex
-  // attribute: colours come per triangle from the storage buffer, found from the corner's number.
-  // Binding 1, instanced only: F, one mat4 per instance, a column per location. Binding 2, lit
-  // only: the corner's normal (location 5).
-  std::vector<vk::VertexInputBindingDescription> bindings = {
-      {.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}};
-  std::vector<vk::VertexInputAttributeDescription> attributes = {
-      {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}};
-  if (instanced) {
-    bindings.push_back({.binding = 1, .stride = sizeof(glm::mat4), .inputRate = vk::VertexInputRate::eInstance});
-    for (std::uint32_t column = 0; column < 4; ++column) {
-      attributes.push_back({.location = 1 + column,
-                            .binding = 1,
-                            .format = vk::Format::eR32G32B32A32Sfloat,
-                            .offset = column * static_cast<std::uint32_t>(sizeof(glm::vec4))});
-    }
-  }
-  if (lit) {
-    bindings.push_back({.binding = 2, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex});
-    attributes.push_back({.location = 5, .binding = 2, .format = vk::Format::eR32G32B32Sfloat, .offset = 0});
-  }
+  const VertexInput input = VertexInputFor(instanced, lit);
   const vk::PipelineVertexInputStateCreateInfo vertex_input{
-      .vertexBindingDescriptionCount = static_cast<std::uint32_t>(bindings.size()),
-      .pVertexBindingDescriptions = bindings.data(),
-      .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size()),
-      .pVertexAttributeDescriptions = attributes.data(),
+      .vertexBindingDescriptionCount = static_cast<std::uint32_t>(input.bindings.size()),
+      .pVertexBindingDescriptions = input.bindings.data(),
+      .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(input.attributes.size()),
+      .pVertexAttributeDescriptions = input.attributes.data(),
   };
   const vk::PipelineInputAssemblyStateCreateInfo input_assembly{
       .topology = vk::PrimitiveTopology::eTriangleList};

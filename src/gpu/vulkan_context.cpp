@@ -49,6 +49,49 @@ bool ContainsIgnoringCase(std::string_view haystack, std::string_view needle) {
   return it != haystack.end();
 }
 
+// Throws GpuUnavailable unless the validation layer is installed with the extensions
+// CreateInstance enables for it.
+void CheckValidationLayer(const vk::raii::Context& context) {
+  if (!HasLayer(context, kValidationLayer)) {
+    throw GpuUnavailable(
+        "the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed; install it "
+        "with `apt-get install vulkan-validationlayers`");
+  }
+  const auto layer_extensions = context.enumerateInstanceExtensionProperties(std::string(kValidationLayer));
+  const auto loader_extensions = context.enumerateInstanceExtensionProperties();
+  for (const char* name : {VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME, VK_EXT_DEBUG_UTILS_EXTENSION_NAME}) {
+    if (!HasExtension(layer_extensions, name) && !HasExtension(loader_extensions, name)) {
+      throw GpuUnavailable(std::string("the Vulkan validation layer lacks ") + name +
+                           "; install a current one with `apt-get install vulkan-validationlayers`");
+    }
+  }
+}
+
+// Warnings and errors of every type, stored into `messages` by StoreMessage.
+vk::DebugUtilsMessengerCreateInfoEXT MessengerInfo(std::vector<std::string>* messages) {
+  vk::DebugUtilsMessengerCreateInfoEXT info{
+      .messageSeverity = vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
+                         vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+      .messageType = vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
+                     vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
+                     vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
+      .pUserData = messages,
+  };
+  // Set through the C view of the struct: the C callback type takes the C enums in every
+  // Vulkan-Hpp release, while 1.4 retyped the C++ member to take vk:: types.
+  static_cast<VkDebugUtilsMessengerCreateInfoEXT&>(info).pfnUserCallback = &StoreMessage;
+  return info;
+}
+
+// How well a usable device fits, higher is better. With a name asked for: 3 when its name contains
+// it, else 0 (not to be chosen); without: 3 for lavapipe, 2 for another CPU device, else 1.
+int DeviceScore(const vk::PhysicalDeviceProperties& properties, const std::string& wanted) {
+  const std::string_view name = properties.deviceName.data();
+  if (!wanted.empty()) return ContainsIgnoringCase(name, wanted) ? 3 : 0;
+  const bool cpu = properties.deviceType == vk::PhysicalDeviceType::eCpu;
+  return ContainsIgnoringCase(name, "llvmpipe") ? 3 : cpu ? 2 : 1;
+}
+
 // The queue family we draw with, if the device can do everything the renderer needs: graphics
 // and a D32_SFLOAT depth buffer.
 std::optional<std::uint32_t> UsableQueueFamily(const vk::raii::PhysicalDevice& device) {
@@ -81,50 +124,30 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   // A device asked by name may be one outside the loader's search path; the default goes without
   // (loading SwiftShader's driver costs instance creation time).
   const ExtraDriverOffer offer(!options.device.empty());
+  CreateInstance(options.validation);
+  ChooseDevice(options.device);
+  CreateDevice();
+  KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
+}
+
+void VulkanContext::CreateInstance(bool validation) {
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
+  if (validation) {
+    CheckValidationLayer(context_);
+    extensions = {VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME, VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+    layers.push_back(kValidationLayer);
+  }
   const std::vector<vk::ValidationFeatureEnableEXT> enabled_features = {
       vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
-  vk::DebugUtilsMessengerCreateInfoEXT messenger_info{
-      .messageSeverity = vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
-                         vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
-      .messageType = vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
-                     vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
-                     vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
-      .pUserData = &messages_,
-  };
-  // Set through the C view of the struct: the C callback type takes the C enums in every
-  // Vulkan-Hpp release, while 1.4 retyped the C++ member to take vk:: types.
-  static_cast<VkDebugUtilsMessengerCreateInfoEXT&>(messenger_info).pfnUserCallback = &StoreMessage;
+  const vk::DebugUtilsMessengerCreateInfoEXT messenger_info = MessengerInfo(&messages_);
   // Chained into vkCreateInstance: the layer reads its feature list there, and a messenger in the
   // chain also hears about vkCreateInstance / vkDestroyInstance themselves.
-  vk::ValidationFeaturesEXT validation_features{
+  const vk::ValidationFeaturesEXT validation_features{
       .pNext = &messenger_info,
       .enabledValidationFeatureCount = static_cast<std::uint32_t>(enabled_features.size()),
       .pEnabledValidationFeatures = enabled_features.data(),
   };
-
-  if (options.validation) {
-    if (!HasLayer(context_, kValidationLayer)) {
-      throw GpuUnavailable(
-          "the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed; install it "
-          "with `apt-get install vulkan-validationlayers`");
-    }
-    const auto layer_extensions =
-        context_.enumerateInstanceExtensionProperties(std::string(kValidationLayer));
-    const auto loader_extensions = context_.enumerateInstanceExtensionProperties();
-    for (const char* name :
-         {VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME, VK_EXT_DEBUG_UTILS_EXTENSION_NAME}) {
-      if (!HasExtension(layer_extensions, name) && !HasExtension(loader_extensions, name)) {
-        throw GpuUnavailable(
-            std::string("the Vulkan validation layer lacks ") + name +
-            "; install a current one with `apt-get install vulkan-validationlayers`");
-      }
-      extensions.push_back(name);
-    }
-    layers.push_back(kValidationLayer);
-  }
-
   const vk::ApplicationInfo app_info{
       .pApplicationName = "twinraster",
       .applicationVersion = 1,
@@ -135,7 +158,7 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
       .apiVersion = VK_API_VERSION_1_1,
   };
   const vk::InstanceCreateInfo instance_info{
-      .pNext = options.validation ? &validation_features : nullptr,
+      .pNext = validation ? &validation_features : nullptr,
       .pApplicationInfo = &app_info,
       .enabledLayerCount = static_cast<std::uint32_t>(layers.size()),
       .ppEnabledLayerNames = layers.data(),
@@ -149,27 +172,21 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
                          "); install a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers` "
                          "for lavapipe");
   }
-  if (options.validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
+  if (validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
+}
 
-  // Pick the device: the first usable one whose name contains options.device if that is set;
-  // otherwise lavapipe, else another CPU device (the same pixels on every machine; SwiftShader is
-  // one), else the first usable one.
+// The first usable device whose name contains `wanted` if that is set; otherwise lavapipe, else
+// another CPU device (the same pixels on every machine; SwiftShader is one), else the first usable
+// one.
+void VulkanContext::ChooseDevice(const std::string& wanted) {
   const std::vector<vk::raii::PhysicalDevice> devices = instance_.enumeratePhysicalDevices();
   const vk::raii::PhysicalDevice* chosen = nullptr;
   std::uint32_t chosen_family = 0;
-  int chosen_score = 0;  // 0: not usable or not asked for, 1: usable, 3: what we look for
+  int chosen_score = 0;
   for (const vk::raii::PhysicalDevice& device : devices) {
     const std::optional<std::uint32_t> family = UsableQueueFamily(device);
     if (!family) continue;
-    const vk::PhysicalDeviceProperties properties = device.getProperties();
-    const std::string_view name = properties.deviceName.data();
-    int score = 0;
-    if (!options.device.empty()) {
-      score = ContainsIgnoringCase(name, options.device) ? 3 : 0;
-    } else {
-      const bool cpu = properties.deviceType == vk::PhysicalDeviceType::eCpu;
-      score = ContainsIgnoringCase(name, "llvmpipe") ? 3 : cpu ? 2 : 1;
-    }
+    const int score = DeviceScore(device.getProperties(), wanted);
     if (score > chosen_score) {
       chosen = &device;
       chosen_family = *family;
@@ -177,8 +194,8 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
     }
   }
   if (chosen == nullptr) {
-    if (!options.device.empty()) {
-      throw GpuUnavailable("no usable Vulkan device name contains '" + options.device +
+    if (!wanted.empty()) {
+      throw GpuUnavailable("no usable Vulkan device name contains '" + wanted +
                            "'; devices present: " + DeviceNames(devices));
     }
     throw GpuUnavailable(
@@ -191,7 +208,9 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   properties_ = physical_device_.getProperties();
   memory_properties_ = physical_device_.getMemoryProperties();
   identity_ = Identify(physical_device_, properties_);
+}
 
+void VulkanContext::CreateDevice() {
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queue_info{
       .queueFamilyIndex = queue_family_,
@@ -207,7 +226,6 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
                                                    .pEnabledFeatures = &features,
                                                });
   queue_ = device_.getQueue(queue_family_, 0);
-  KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
 }
 
 std::uint32_t VulkanContext::FindMemoryType(std::uint32_t type_bits,

@@ -37,6 +37,10 @@ class VulkanContext {
                                vk::MemoryPropertyFlags preferred = {}) const;
 
  private:
+  void CreateInstance(bool validation);  // with the validation layer and its messenger if asked
+  void ChooseDevice(const std::string& wanted);
+  void CreateDevice();  // and its queue
+
   // Declared first so it outlives the instance: the layer reports until vkDestroyInstance returns.
   std::vector<std::string> messages_;
   vk::raii::Context context_;

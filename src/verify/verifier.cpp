@@ -1,6 +1,7 @@
 #include "verify/verifier.hpp"
 
 #include "truth/truth_renderer.hpp"
+#include "verify/coverage_shapes.hpp"
 #include "verify/pixel_judge.hpp"
 
 #include <algorithm>

@@ -1,0 +1,49 @@
+// Vectors kept from one frame to the next, process-wide, so that judging a frame reuses memory
+// instead of faulting in fresh pages (which for a small scene cost more than judging it). It
+// hands out and takes back whole vectors under a lock; it does not know what their elements mean.
+#pragma once
+
+#include <cstddef>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace twinraster::verify {
+
+template <typename T>
+class BufferPool {
+ public:
+  // `size` copies of `fill`, in a vector given back earlier when there is one.
+  static std::vector<T> Take(std::size_t size, const T& fill) {
+    std::vector<T> buffer;
+    {
+      const std::lock_guard<std::mutex> hold(Lock());
+      if (!Spare().empty()) {
+        buffer = std::move(Spare().back());
+        Spare().pop_back();
+      }
+    }
+    buffer.assign(size, fill);
+    return buffer;
+  }
+
+  // Keeps `buffer` for a later Take, unless kKept are kept already.
+  static void Give(std::vector<T> buffer) {
+    const std::lock_guard<std::mutex> hold(Lock());
+    if (Spare().size() < kKept) Spare().push_back(std::move(buffer));
+  }
+
+ private:
+  static constexpr std::size_t kKept = 4;
+
+  static std::mutex& Lock() {
+    static std::mutex lock;
+    return lock;
+  }
+  static std::vector<std::vector<T>>& Spare() {
+    static std::vector<std::vector<T>> spare;
+    return spare;
+  }
+};
+
+}  // namespace twinraster::verify
