@@ -52,12 +52,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     image = twinraster::DecodePng(std::string_view(reinterpret_cast<const char*>(data), size), "input",
                                   [](std::uint32_t width, std::uint32_t height) {
-                                    if (width != kCanvas || height != kCanvas) throw twinraster::FileError("input: not 64 x 64");
+                                    if (width != kCanvas || height != kCanvas)
+                                      throw twinraster::FileError("input: not 64 x 64");
                                   });
   } catch (const twinraster::FileError& e) {
     const std::string message = e.what();
     Check(message.starts_with("input: "));
-    Check(std::none_of(message.begin(), message.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }));
+    Check(std::none_of(message.begin(), message.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }));
     return 0;
   }
   Check(image.width == kCanvas && image.height == kCanvas && image.rgba.size() == std::size_t{kCanvas} * kCanvas * 4);

@@ -1,16 +1,16 @@
 #include "bench/bench_suite.hpp"
 
+#include "base/stopwatch.hpp"
+#include "base/usage_error.hpp"
 #include "bench/error_metrics.hpp"
 #include "bench/vertex_methods.hpp"
-#include "cpu/cpu_renderer.hpp"
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
-#include "scene/scene_loader.hpp"
-#include "base/stopwatch.hpp"
 #include "run/backend_draws.hpp"
+#include "scene/scene_loader.hpp"
 #include "truth/truth_renderer.hpp"
-#include "base/usage_error.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -80,8 +80,10 @@ GpuRenderer LavapipeWithThreads(unsigned threads) {
   const std::string saved = previous ? previous : "";
   ::setenv("LP_NUM_THREADS", threads <= 1 ? "0" : std::to_string(threads).c_str(), 1);
   GpuRenderer renderer;
-  if (previous) ::setenv("LP_NUM_THREADS", saved.c_str(), 1);
-  else ::unsetenv("LP_NUM_THREADS");
+  if (previous)
+    ::setenv("LP_NUM_THREADS", saved.c_str(), 1);
+  else
+    ::unsetenv("LP_NUM_THREADS");
   return renderer;
 }
 
@@ -185,9 +187,8 @@ BenchRow MethodRow(VertexMethod method, const BenchRow& base, const std::filesys
   row.vertex_ms = MedianMs(runs, [&] { clip = TransformVertices(t.scene, t.list, method); });
   row.vertex_error_px = VertexErrorPixels(clip, t.exact, t.list.width, t.list.height);
   Image image;
-  row.frame_ms = MedianMs(runs, [&] {
-    image = RasterizeClipSpace(t.list, TransformVertices(t.scene, t.list, method), CpuOptions{cores});
-  });
+  row.frame_ms = MedianMs(
+      runs, [&] { image = RasterizeClipSpace(t.list, TransformVertices(t.scene, t.list, method), CpuOptions{cores}); });
   MeasureImage(row, file, t, image, &clip, cores);
   return row;
 }
@@ -222,7 +223,9 @@ BenchResult RunBench(const BenchOptions& options) {
   result.machine = MachineDescription(lavapipes.front().second ? lavapipes.front().second->DeviceName() : "not used");
 
   const std::vector<std::filesystem::path> files = SuiteScenes(options);
-  if (files.empty()) throw UsageError("no scene in " + options.scenes_dir.string() + (options.only ? " matches --only " + *options.only : ""));
+  if (files.empty())
+    throw UsageError("no scene in " + options.scenes_dir.string() +
+                     (options.only ? " matches --only " + *options.only : ""));
 
   // Known before the first row is measured, so that progress can say "row 3 of 56".
   std::size_t rows_per_scene = 0;

@@ -14,14 +14,14 @@ namespace twinraster {
 
 struct BenchRow {
   std::string scene;
-  std::string method;       // a VertexMethod's name, or "cpu-twin" / "lavapipe" for whole frames
-  unsigned threads = 0;     // rasterizer threads for the frame time
+  std::string method;    // a VertexMethod's name, or "cpu-twin" / "lavapipe" for whole frames
+  unsigned threads = 0;  // rasterizer threads for the frame time
   std::size_t vertices = 0, triangles = 0;
   std::uint32_t width = 0, height = 0;
-  double vertex_ms = -1;    // median time of the vertex stage alone (-1: not separable, e.g. lavapipe)
-  double frame_ms = 0;      // median time of the whole frame: vertex stage, clipping, rasterization
-  double vertex_error_px = -1;  // max distance from the truth's framebuffer positions (-1: not measured)
-  std::uint64_t image_error_px = 0;   // pixels that differ from the truth image
+  double vertex_ms = -1;             // median time of the vertex stage alone (-1: not separable, e.g. lavapipe)
+  double frame_ms = 0;               // median time of the whole frame: vertex stage, clipping, rasterization
+  double vertex_error_px = -1;       // max distance from the truth's framebuffer positions (-1: not measured)
+  std::uint64_t image_error_px = 0;  // pixels that differ from the truth image
   std::optional<std::uint64_t> z_fighting_px;  // depth scenes: far plate showing where the near one should
   // Lit scenes: the largest channel difference (0..255) from the truth's colours inside its
   // triangles (error_metrics.hpp), and over how many pixels.

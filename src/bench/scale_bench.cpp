@@ -45,9 +45,9 @@ std::string CubesJson(std::size_t count, std::uint32_t width, std::uint32_t heig
   const double size = static_cast<double>(std::max({nx, ny, nz}));
   std::ostringstream s;
   s.precision(17);
-  s << R"({"canvas": {"width": )" << width << R"(, "height": )" << height
-    << R"(}, "viewport": {"width": )" << static_cast<double>(width) / height
-    << R"(, "height": 1, "distance": 1}, "depth": {"near": 0.5, "far": )" << 4 * size << R"(},)"
+  s << R"({"canvas": {"width": )" << width << R"(, "height": )" << height << R"(}, "viewport": {"width": )"
+    << static_cast<double>(width) / height << R"(, "height": 1, "distance": 1}, "depth": {"near": 0.5, "far": )"
+    << 4 * size << R"(},)"
     << R"("camera": {"eye": [)" << 0.9 * size << ", " << 0.7 * size << ", " << -1.6 * size
     << R"(], "center": [0, 0, 0], "up": [0, 1, 0]}, "models": {"cube": {"vertices": [[1, 1, 1], [-1, 1, 1], [-1, -1, 1], [1, -1, 1], [1, 1, -1], [-1, 1, -1], [-1, -1, -1], [1, -1, -1]], "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"], [4, 0, 3, "green"], [4, 3, 7, "green"], [5, 4, 7, "blue"], [5, 7, 6, "blue"], [1, 5, 6, "yellow"], [1, 6, 2, "yellow"], [4, 5, 1, "purple"], [4, 1, 0, "purple"], [2, 6, 7, "cyan"], [2, 7, 3, "cyan"]]}}, "instances": [)";
   bool first = true;
@@ -70,13 +70,15 @@ double PeakMib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-
 }  // namespace
 
 ScaleResult RunScaleBench(const ScaleOptions& options) {
-  if (options.counts.empty() || options.runs < 1) throw UsageError("bench --scale needs at least one count and one run");
+  if (options.counts.empty() || options.runs < 1)
+    throw UsageError("bench --scale needs at least one count and one run");
   for (std::size_t count : options.counts) {
-    if (count < 1 || count > kMaxInstances) throw UsageError("bench --scale: " + std::to_string(count) + " instances is outside 1.." + std::to_string(kMaxInstances));
+    if (count < 1 || count > kMaxInstances)
+      throw UsageError("bench --scale: " + std::to_string(count) + " instances is outside 1.." +
+                       std::to_string(kMaxInstances));
   }
   std::vector<std::size_t> counts = options.counts;
   std::sort(counts.begin(), counts.end());  // increasing, so that the peak memory is this size's
@@ -86,7 +88,8 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   GpuRenderer gpu;
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   // The twin copies the lavapipe that draws here, as `render` chooses it.
-  const cpu::RasterRules twin_rules = cpu::ChooseTwinRules(gpu.DeviceName(), gpu.Device().driver_info, cpu::DetectCpuPath()).rules;
+  const cpu::RasterRules twin_rules =
+      cpu::ChooseTwinRules(gpu.DeviceName(), gpu.Device().driver_info, cpu::DetectCpuPath()).rules;
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;

@@ -24,7 +24,7 @@ struct ScaleRow {
   // The verifier judging the twin's image (lavapipe's 8 subpixel bits): what checking a frame
   // costs at this size, beside drawing it.
   double verify_ms = 0;
-  double peak_mib = 0;  // the process's peak resident memory once this size is done (sizes run in increasing order)
+  double peak_mib = 0;     // the process's peak resident memory once this size is done (sizes run in increasing order)
   bool identical = false;  // lavapipe's image equals the twin's
 };
 

@@ -29,5 +29,4 @@ struct VerifyBenchResult {
 std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesystem::path& scenes_dir);
 VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs);
 
-
 }  // namespace twinraster

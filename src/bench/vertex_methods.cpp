@@ -1,7 +1,7 @@
 #include "bench/vertex_methods.hpp"
 
-#include "cpu/vertex_stage.hpp"
 #include "chain/matrices.hpp"
+#include "cpu/vertex_stage.hpp"
 
 #include <glm/matrix.hpp>
 
@@ -20,8 +20,8 @@ glm::mat4 ComposeInFloat(const Scene& scene, const Transform& t) {
   const glm::mat4 projection = ToFloat(ProjectionP(scene.viewport, scene.depth));
   const glm::mat4 to_canvas = ToFloat(ViewportToCanvas(scene.viewport, scene.canvas));
   const glm::mat4 to_clip = ToFloat(CanvasToClip(scene.canvas));
-  const glm::mat4 camera = ToFloat(Rotation4(glm::transpose(scene.camera.rotation))) *
-                           ToFloat(Translation(-scene.camera.position));
+  const glm::mat4 camera =
+      ToFloat(Rotation4(glm::transpose(scene.camera.rotation))) * ToFloat(Translation(-scene.camera.position));
   glm::mat4 model = ToFloat(Translation(t.translation)) * ToFloat(Rotation4(t.rotation)) * ToFloat(Scale(t.scale));
   if (t.steps) {
     glm::mat4 listed(1.0f);

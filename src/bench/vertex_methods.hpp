@@ -3,8 +3,8 @@
 // chapter's step-by-step chain in float, and camera-relative composition.
 #pragma once
 
-#include "cpu/cpu_renderer.hpp"  // ClipPositions
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"  // ClipPositions
 #include "scene/scene.hpp"
 
 #include <glm/vec4.hpp>
@@ -26,7 +26,6 @@ inline constexpr VertexMethod kAllMethods[] = {VertexMethod::kComposeDouble, Ver
                                                VertexMethod::kStepsFloat, VertexMethod::kCameraRelative};
 
 std::string_view MethodName(VertexMethod method);  // "compose-f64", "compose-f32", "steps-f32", "camera-relative"
-
 
 // The per-instance float matrix F of the methods that have one (1, 2, 4); method 3 has none.
 std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method);

@@ -19,7 +19,7 @@ using Mat4x4 = std::array<std::array<double, 4>, 4>;  // [row][column], as the d
 using Vertex4 = std::array<double, 4>;                // x, y, z, w
 
 Mat4x4 Identity4x4();
-Mat4x4 MultiplyMM4(const Mat4x4& a, const Mat4x4& b);  // a · b, each entry summed over k = 0..3
+Mat4x4 MultiplyMM4(const Mat4x4& a, const Mat4x4& b);   // a · b, each entry summed over k = 0..3
 Vertex4 MultiplyMV(const Mat4x4& m, const Vertex4& v);  // m · v, each row summed over j = 0..3
 Mat4x4 Transposed(const Mat4x4& m);
 

@@ -14,9 +14,7 @@ bool WithinReach(CanvasPoint p) {
 
 // The index the demo reads its interpolated values at: (step - start) | 0. The step and the
 // start differ by a whole number of steps less a rounding, so the index is in range.
-std::size_t StepIndex(double step, double start) {
-  return static_cast<std::size_t>(TruncateToInt32(step - start));
-}
+std::size_t StepIndex(double step, double start) { return static_cast<std::size_t>(TruncateToInt32(step - start)); }
 
 }  // namespace
 

@@ -23,7 +23,8 @@ std::string Path(const Scene& scene, std::size_t instance) {
   for (const InstanceGrid& grid : scene.grids) {
     if (instance < grid.first) break;
     if (instance < grid.first + grid.copies()) {
-      return "instances[" + std::to_string(grid.written) + "] (grid copy " + std::to_string(instance - grid.first) + ")";
+      return "instances[" + std::to_string(grid.written) + "] (grid copy " + std::to_string(instance - grid.first) +
+             ")";
     }
     extra += grid.copies() - 1;
   }
@@ -48,8 +49,8 @@ void RenderModel(DemoCanvas& canvas, const Scene& scene, std::size_t instance, c
       // Only a drawn vertex matters: the demo projects unused ones too, and never looks at them.
       std::ostringstream problem;
       problem.precision(17);
-      problem << "model \"" << model.name << "\" triangle " << t << ": vertex " << v << " is at camera-space z = "
-              << camera_space[v][2] << " and projects to ";
+      problem << "model \"" << model.name << "\" triangle " << t << ": vertex " << v
+              << " is at camera-space z = " << camera_space[v][2] << " and projects to ";
       if (std::isfinite(projected[v].x) && std::isfinite(projected[v].y)) {
         problem << "canvas (" << projected[v].x << ", " << projected[v].y << ")";
       } else {
@@ -68,8 +69,9 @@ void RenderModel(DemoCanvas& canvas, const Scene& scene, std::size_t instance, c
 
 void CheckBookRules(const Scene& scene) {
   if (scene.viewport.projection == Projection::kOrthographic) {
-    throw BookRulesError("viewport.projection", "the book's demos only project in perspective (x·d/z, y·d/z); "
-                                                "this scene is orthographic");
+    throw BookRulesError("viewport.projection",
+                         "the book's demos only project in perspective (x·d/z, y·d/z); "
+                         "this scene is orthographic");
   }
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     if (scene.instances[i].transform.steps) {

@@ -72,38 +72,35 @@ DrawList BuildDrawList(const Scene& scene) {
   list.draws.reserve(scene.instances.size());
   for (const Instance& instance : scene.instances) {
     // The one conversion to float: F is composed in double, then rounded once.
-    list.draws.push_back(DrawCall{static_cast<std::uint32_t>(instance.model),
-                                  glm::mat4(InstanceMatrix(chain, instance.transform))});
+    list.draws.push_back(
+        DrawCall{static_cast<std::uint32_t>(instance.model), glm::mat4(InstanceMatrix(chain, instance.transform))});
   }
   if (any_lit) list.lighting = BuildLighting(scene, list);
   return list;
 }
 
 void ValidateDrawList(const DrawList& list) {
-  if (list.width == 0 || list.height == 0 || list.width > kMaxCanvasSize ||
-      list.height > kMaxCanvasSize) {
-    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" +
-                                std::to_string(list.height) + " is outside 1.." +
-                                std::to_string(kMaxCanvasSize));
+  if (list.width == 0 || list.height == 0 || list.width > kMaxCanvasSize || list.height > kMaxCanvasSize) {
+    throw std::invalid_argument("image size " + std::to_string(list.width) + "x" + std::to_string(list.height) +
+                                " is outside 1.." + std::to_string(kMaxCanvasSize));
   }
   for (std::size_t d = 0; d < list.draws.size(); ++d) {
     if (list.draws[d].mesh >= list.meshes.size()) {
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " +
-                                  std::to_string(list.draws[d].mesh) + " of " +
-                                  std::to_string(list.meshes.size()));
+      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(list.draws[d].mesh) +
+                                  " of " + std::to_string(list.meshes.size()));
     }
   }
-  if (list.lighting && list.wireframe) throw std::invalid_argument("a wireframe list has no lighting: edges are not lit");
+  if (list.lighting && list.wireframe)
+    throw std::invalid_argument("a wireframe list has no lighting: edges are not lit");
   if (list.lighting && list.lighting->instances.size() != list.draws.size()) {
-    throw std::invalid_argument("lighting has " + std::to_string(list.lighting->instances.size()) +
-                                " instances for " + std::to_string(list.draws.size()) + " draws");
+    throw std::invalid_argument("lighting has " + std::to_string(list.lighting->instances.size()) + " instances for " +
+                                std::to_string(list.draws.size()) + " draws");
   }
   for (std::size_t m = 0; m < list.meshes.size(); ++m) {
     const DrawMesh& mesh = list.meshes[m];
     if (mesh.colours.size() != mesh.triangles.size()) {
-      throw std::invalid_argument("mesh " + std::to_string(m) + " has " +
-                                  std::to_string(mesh.triangles.size()) + " triangles but " +
-                                  std::to_string(mesh.colours.size()) + " colours");
+      throw std::invalid_argument("mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +
+                                  " triangles but " + std::to_string(mesh.colours.size()) + " colours");
     }
     if (mesh.shading != Shading::kUnlit && mesh.normals.size() != mesh.triangles.size()) {
       throw std::invalid_argument("lit mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +
@@ -115,9 +112,8 @@ void ValidateDrawList(const DrawList& list) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       for (std::uint32_t index : mesh.triangles[t]) {
         if (index >= mesh.positions.size()) {
-          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " +
-                                      std::to_string(t) + " uses vertex " + std::to_string(index) +
-                                      " of " + std::to_string(mesh.positions.size()));
+          throw std::invalid_argument("mesh " + std::to_string(m) + " triangle " + std::to_string(t) + " uses vertex " +
+                                      std::to_string(index) + " of " + std::to_string(mesh.positions.size()));
         }
       }
     }

@@ -62,8 +62,8 @@ struct StepExplanation {
 };
 
 struct InstanceExplanation {
-  std::size_t index = 0;          // in the scene's instances, every grid copy counted
-  const Model* model = nullptr;   // the scene's model the instance draws
+  std::size_t index = 0;         // in the scene's instances, every grid copy counted
+  const Model* model = nullptr;  // the scene's model the instance draws
   std::optional<GridCopy> grid_copy;
   // M_Model's factors. A transform written as a list has its steps, in the order applied, and
   // then `translation` alone, the grid's offset (the identity when the instance is no grid copy);
@@ -87,8 +87,8 @@ struct Explanation {
   glm::dmat4 p{1.0}, viewport_to_canvas{1.0}, canvas_to_clip{1.0};
   // M_Camera = camera_rotation_inverse · camera_translation_inverse (C_R⁻¹ · C_T⁻¹).
   glm::dmat4 camera_rotation_inverse{1.0}, camera_translation_inverse{1.0};
-  Frustum camera_frustum, world_frustum;  // in camera space, and through M_Camera⁻¹ in the world
-  bool lighting_used = false;             // the scene has lighting and is not drawn as a wireframe
+  Frustum camera_frustum, world_frustum;       // in camera space, and through M_Camera⁻¹ in the world
+  bool lighting_used = false;                  // the scene has lighting and is not drawn as a wireframe
   std::vector<InstanceExplanation> instances;  // the one asked for, or the first kExplainedInstances
 };
 

@@ -14,9 +14,9 @@
 namespace twinraster {
 
 struct LightTerm {
-  glm::dvec3 l{0.0};         // from the surface toward the light
-  double n_dot_l = 0;        // with the unit world normal
-  double contribution = 0;   // intensity · max(0, n·l) / |l|
+  glm::dvec3 l{0.0};        // from the surface toward the light
+  double n_dot_l = 0;       // with the unit world normal
+  double contribution = 0;  // intensity · max(0, n·l) / |l|
 };
 
 struct LightTrace {
@@ -26,9 +26,9 @@ struct LightTrace {
   glm::dvec3 wrong_normal{0.0};   // M_Model · n, renormalised: what transforming by M would give
   glm::dvec3 world{0.0};          // the surface point, M_Model · V
   double ambient = 0;
-  std::vector<LightTerm> terms;   // one per light, in the scene's order
-  double intensity = 0;           // I = ambient + the terms
-  glm::dvec3 colour{0.0};         // base / 255 · min(I, 1), each channel in [0, 1]
+  std::vector<LightTerm> terms;  // one per light, in the scene's order
+  double intensity = 0;          // I = ambient + the terms
+  glm::dvec3 colour{0.0};        // base / 255 · min(I, 1), each channel in [0, 1]
 };
 
 // `normal_matrix` is NormalMatrix(model_matrix) (the caller has checked that it exists).

@@ -20,15 +20,11 @@ glm::dmat4 Translation(glm::dvec3 t) {
 }
 
 glm::dmat4 Rotation4(const glm::dmat3& r) {
-  return FromRows({{r[0][0], r[1][0], r[2][0], 0},
-                   {r[0][1], r[1][1], r[2][1], 0},
-                   {r[0][2], r[1][2], r[2][2], 0},
-                   {0, 0, 0, 1}});
+  return FromRows(
+      {{r[0][0], r[1][0], r[2][0], 0}, {r[0][1], r[1][1], r[2][1], 0}, {r[0][2], r[1][2], r[2][2], 0}, {0, 0, 0, 1}});
 }
 
-glm::dmat4 Scale(glm::dvec3 s) {
-  return FromRows({{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}});
-}
+glm::dmat4 Scale(glm::dvec3 s) { return FromRows({{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}}); }
 
 glm::dmat4 StepMatrix(const TransformStep& step) {
   switch (step.kind) {

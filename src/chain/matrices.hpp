@@ -20,7 +20,7 @@ namespace twinraster {
 // Builds a 4x4 from rows written as the chapter prints them.
 glm::dmat4 FromRows(const double (&rows)[4][4]);
 
-glm::dmat4 Translation(glm::dvec3 t);      // I_T, C_T
+glm::dmat4 Translation(glm::dvec3 t);       // I_T, C_T
 glm::dmat4 Rotation4(const glm::dmat3& r);  // I_R, C_R: the 3x3 with w kept
 glm::dmat4 Scale(glm::dvec3 s);             // I_S
 

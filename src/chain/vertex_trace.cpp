@@ -4,8 +4,7 @@
 
 namespace twinraster {
 
-VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4& model_matrix,
-                        glm::dvec3 vertex) {
+VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4& model_matrix, glm::dvec3 vertex) {
   VertexTrace t;
   t.object = vertex;
   t.world = glm::dvec3(model_matrix * glm::dvec4(vertex, 1.0));
@@ -55,8 +54,7 @@ glm::dvec2 ProjectVertex(glm::dvec3 v, const Viewport& viewport, const Canvas& c
     return glm::dvec2(v.x * canvas.width / viewport.width, v.y * canvas.height / viewport.height);
   }
   const double d = viewport.distance;
-  return glm::dvec2(v.x * d * canvas.width / (v.z * viewport.width),
-                    v.y * d * canvas.height / (v.z * viewport.height));
+  return glm::dvec2(v.x * d * canvas.width / (v.z * viewport.width), v.y * d * canvas.height / (v.z * viewport.height));
 }
 
 }  // namespace twinraster

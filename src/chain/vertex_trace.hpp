@@ -25,12 +25,11 @@ struct VertexTrace {
 // -w <= x, y <= w and 0 <= z <= w: the vertex is drawn where it is, not clipped away.
 bool InsideClipVolume(const glm::dvec4& clip);
 
-VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4& model_matrix,
-                        glm::dvec3 vertex);
+VertexTrace TraceVertex(const Scene& scene, const Chain& chain, const glm::dmat4& model_matrix, glm::dvec3 vertex);
 
 // Listing 10-3 and 10-4, one operation at a time, no matrices: scale, rotate, translate, then
 // the camera (translate by -position, rotate by the inverse rotation), then the projection.
-glm::dvec3 ApplyStep(glm::dvec3 vertex, const TransformStep& step);  // one step of a list
+glm::dvec3 ApplyStep(glm::dvec3 vertex, const TransformStep& step);        // one step of a list
 glm::dvec3 ApplyTransform(glm::dvec3 vertex, const Transform& transform);  // object -> world
 glm::dvec3 ApplyCamera(glm::dvec3 world, const Camera& camera);            // world -> camera
 // The chapter's ProjectVertex: (x·d·Cw / (z·Vw), y·d·Ch / (z·Vh)) on the canvas; for an

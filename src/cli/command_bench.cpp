@@ -58,8 +58,8 @@ int BenchScale(const BenchArguments& a) {
   Progress progress = Progress::OnStandardError(a.quiet);
   if (progress.active()) {
     options.on_row = [&progress](const ScaleRow& row, std::size_t done, std::size_t total) {
-      progress.Line("scale " + std::to_string(done) + "/" + std::to_string(total) + ": " + std::to_string(row.instances) +
-                    " instances");
+      progress.Line("scale " + std::to_string(done) + "/" + std::to_string(total) + ": " +
+                    std::to_string(row.instances) + " instances");
     };
   }
   const ScaleResult result = RunScaleBench(options);
@@ -73,8 +73,10 @@ int BenchScale(const BenchArguments& a) {
                  {"scale.json", report::ScaleJson(result).dump(2) + "\n"},
                  {"scale.txt", table}},
                 page, plot);
-  if (a.json) std::cout << report::ScaleJson(result).dump(2) << "\n";
-  else std::cout << report::ScaleTable(result);
+  if (a.json)
+    std::cout << report::ScaleJson(result).dump(2) << "\n";
+  else
+    std::cout << report::ScaleTable(result);
   return kExitOk;
 }
 
@@ -91,12 +93,18 @@ int BenchVerify(const BenchArguments& a) {
     }
   }
   Progress progress = Progress::OnStandardError(a.quiet);
-  progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) + " run(s)...");
+  progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) +
+                  " run(s)...");
   const VerifyBenchResult result = RunVerifyBench(scenes, a.runs);
   progress.Clear();
-  WriteTogether(a, {{"verify.json", report::VerifyBenchJson(result).dump(2) + "\n"}, {"verify.txt", report::VerifyBenchTable(result)}}, "", "");
-  if (a.json) std::cout << report::VerifyBenchJson(result).dump(2) << "\n";
-  else std::cout << report::VerifyBenchTable(result);
+  WriteTogether(a,
+                {{"verify.json", report::VerifyBenchJson(result).dump(2) + "\n"},
+                 {"verify.txt", report::VerifyBenchTable(result)}},
+                "", "");
+  if (a.json)
+    std::cout << report::VerifyBenchJson(result).dump(2) << "\n";
+  else
+    std::cout << report::VerifyBenchTable(result);
   return kExitOk;
 }
 
@@ -110,7 +118,8 @@ int Bench(const BenchArguments& a) {
       throw UsageError(std::string(flag) + " " + *file + ": no directory " + parent.string());
     }
   }
-  if (a.verify && (a.html || a.svg)) throw UsageError("--html and --svg plot the suite or --scale; bench --verify prints a table");
+  if (a.verify && (a.html || a.svg))
+    throw UsageError("--html and --svg plot the suite or --scale; bench --verify prints a table");
   if (a.scale) return BenchScale(a);
   if (a.verify) return BenchVerify(a);
   BenchOptions options;
@@ -150,13 +159,12 @@ int Bench(const BenchArguments& a) {
 
 CommandRun AddBenchCommand(CLI::App& app) {
   auto a = std::make_shared<BenchArguments>();
-  CLI::App* command = AddSubcommand(
-      app, "bench",
-      "time each way of computing the chain, and its error against the truth",
-      "The suite is SCENES/*.json, SCENES/hard/*.json and SCENES/bench/*.json. On a terminal, each\n"
-      "row shows on standard error as it finishes.\n"
-      "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe out of\n"
-      "--methods to need none), 4 internal error.");
+  CLI::App* command =
+      AddSubcommand(app, "bench", "time each way of computing the chain, and its error against the truth",
+                    "The suite is SCENES/*.json, SCENES/hard/*.json and SCENES/bench/*.json. On a terminal, each\n"
+                    "row shows on standard error as it finishes.\n"
+                    "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe out of\n"
+                    "--methods to need none), 4 internal error.");
   command->add_option("--out", a->out, "also write bench.csv, bench.svg, bench.html, bench.json and bench.txt into DIR")
       ->type_name("DIR");
   command
@@ -165,16 +173,18 @@ CommandRun AddBenchCommand(CLI::App& app) {
                    "its error for every scene; with --scale, cost against instance count")
       ->type_name("FILE");
   command->add_option("--svg", a->svg, "also write the main plot alone as an SVG file")->type_name("FILE");
-  ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1, 1000);
+  ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1,
+                  1000);
   command->add_option("--only", a->only, "only the scenes whose path contains TEXT")->type_name("TEXT");
   std::vector<std::string> methods = BenchMethodNames();
   std::string method_list;
   for (const std::string& m : methods) method_list += (method_list.empty() ? "" : ", ") + m;
-  ExpectOneOf(command->add_option("--methods", a->methods, "only these rows, comma-separated (default: all):\n" + method_list)
-                  ->option_text("A,B")
-                  ->delimiter(',')
-                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll),
-              "method", methods);
+  ExpectOneOf(
+      command->add_option("--methods", a->methods, "only these rows, comma-separated (default: all):\n" + method_list)
+          ->option_text("A,B")
+          ->delimiter(',')
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll),
+      "method", methods);
   command->add_option("--scenes", a->scenes, "the suite's directory (default: scenes)")->type_name("DIR");
   command->add_flag("--json", a->json, "print the results as JSON (twinraster.bench/2, docs/json-output.md)");
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error");

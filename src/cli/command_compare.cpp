@@ -1,10 +1,10 @@
 // `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image.
 #include "cli/commands.hpp"
-#include "report/comparison_report.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
+#include "report/comparison_report.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -36,8 +36,9 @@ int Compare(const CompareArguments& args) {
   }
 
   if (args.json) {
-    std::cout << report::CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
-              << "\n";
+    std::cout
+        << report::CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
+        << "\n";
   } else {
     std::cout << report::ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + *args.diff : "") << "\n";
   }

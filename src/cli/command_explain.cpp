@@ -75,19 +75,20 @@ int RunExplain(const ExplainArguments& a) {
 
 CommandRun AddExplainCommand(CLI::App& app) {
   auto a = std::make_shared<ExplainArguments>();
-  CLI::App* command = AddSubcommand(
-      app, "explain", "print a scene's matrices and trace its vertices to the screen",
-      "The matrices are row-major with column vectors on the right, as the chapter writes them.\n"
-      "Exit codes: 0 done, 2 bad input or usage, 4 internal error.");
+  CLI::App* command =
+      AddSubcommand(app, "explain", "print a scene's matrices and trace its vertices to the screen",
+                    "The matrices are row-major with column vectors on the right, as the chapter writes them.\n"
+                    "Exit codes: 0 done, 2 bad input or usage, 4 internal error.");
   command
       ->add_option("SCENE", a->scene,
                    "the scene file (JSON) or an OBJ mesh (.obj, in the scene render gives it),\n"
                    "or - to read the scene from standard input")
       ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
-  ExpectIndex(command->add_option("--vertex", a->vertex,
-                                  "trace vertex V of each instance (counted from 0; default: the first\n"
-                                  "inside the clip volume)")
+  ExpectIndex(command
+                  ->add_option("--vertex", a->vertex,
+                               "trace vertex V of each instance (counted from 0; default: the first\n"
+                               "inside the clip volume)")
                   ->type_name("V"));
   command->add_flag("--all-vertices", a->all_vertices,
                     "trace every vertex of each instance (--json does unless --vertex is given)");

@@ -47,18 +47,21 @@ struct RenderArguments {
   bool quiet = false;
   std::optional<std::string> report;  // --report DIR: index.html and thumbnails
   std::optional<std::string> junit;   // --junit FILE
-  run::RunOptions run;  // the words above as the run stage takes them (ResolveOptions)
+  run::RunOptions run;                // the words above as the run stage takes them (ResolveOptions)
 };
 
 // The run's typed options, from the words parsed; every later step reads these. --rules book draws
 // on the CPU only, so it implies --backend cpu; asking for another is a mistake.
 void ResolveOptions(RenderArguments& a) {
-  a.run.backends = a.backend == "gpu" ? run::Backends::kGpu : a.backend == "cpu" ? run::Backends::kCpu : run::Backends::kBoth;
+  a.run.backends = a.backend == "gpu"   ? run::Backends::kGpu
+                   : a.backend == "cpu" ? run::Backends::kCpu
+                                        : run::Backends::kBoth;
   a.run.rules = a.rules == "book" ? run::Rules::kBook : run::Rules::kVulkan;
   a.run.verify = a.verify;
   a.run.threads = a.threads;
   if (a.run.rules != run::Rules::kBook) return;
-  if (a.verify) throw UsageError("--verify judges by Vulkan's rules, and --rules book draws by the demos': drop one of them");
+  if (a.verify)
+    throw UsageError("--verify judges by Vulkan's rules, and --rules book draws by the demos': drop one of them");
   if (a.backend_given && a.run.backends != run::Backends::kCpu) {
     throw UsageError("--rules book draws on the CPU only, as the chapter's demos do: drop --backend " + a.backend);
   }
@@ -74,11 +77,13 @@ void CheckOutput(const RenderArguments& a) {
       if (IsStandardStream(scene)) throw UsageError("SCENE - (standard input) can only be rendered on its own");
       const std::string name = std::filesystem::path(scene).stem().string();
       if (!names.insert(name).second) {
-        throw UsageError("two scenes are named \"" + name + "\": their images would overwrite each other; render them "
+        throw UsageError("two scenes are named \"" + name +
+                         "\": their images would overwrite each other; render them "
                          "in separate calls");
       }
     }
-    if (a.output && IsStandardStream(*a.output)) throw UsageError("-o -: several scenes make several PNGs; give a directory");
+    if (a.output && IsStandardStream(*a.output))
+      throw UsageError("-o -: several scenes make several PNGs; give a directory");
     std::error_code ignored;
     if (a.output && std::filesystem::exists(*a.output, ignored) && !std::filesystem::is_directory(*a.output, ignored)) {
       throw UsageError("-o " + *a.output + ": with several scenes, -o names a directory, and this is a file");
@@ -98,8 +103,9 @@ void CheckOutput(const RenderArguments& a) {
     return;
   }
   if (a.run.backends == run::Backends::kBoth) {
-    throw UsageError("-o - writes one PNG to standard output, and --backend both makes two: add --backend gpu or "
-                     "--backend cpu, or give -o OUT.png");
+    throw UsageError(
+        "-o - writes one PNG to standard output, and --backend both makes two: add --backend gpu or "
+        "--backend cpu, or give -o OUT.png");
   }
   if (a.json) throw UsageError("-o - and --json both want standard output: drop one of them");
   if (a.report) throw UsageError("-o - writes no PNG file for --report's page to show: give -o OUT.png");
@@ -128,7 +134,8 @@ void StageThumbnails(const run::RunResult& result, const std::string& report_dir
   for (const auto& [kind, image] : images) {
     if (report::FullImage(record, kind).empty()) continue;
     const std::filesystem::path file = std::filesystem::path(report_dir) / report::ThumbnailPath(record, kind);
-    const bool marks = kind == report::ImageKind::kDiff || kind == report::ImageKind::kMap;  // keep saturated marks visible
+    const bool marks =
+        kind == report::ImageKind::kDiff || kind == report::ImageKind::kMap;  // keep saturated marks visible
     staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide,
                                               marks ? ThumbnailFilter::kMostSaturated : ThumbnailFilter::kMean)));
   }
@@ -147,8 +154,10 @@ std::vector<StagedFile> StageImages(run::RunResult& result, const RenderArgument
     backend.output = a.run.backends == run::Backends::kBoth ? Suffixed(out, backend.Name()) : out;
     Stopwatch clock;
     const PngNotes notes = report::NotesOf(result.drawn_by[i]);
-    if (to_stdout) png_bytes = EncodePng(result.images[i], a.png_level, notes);
-    else staged.push_back(StagePng(backend.output, result.images[i], a.png_level, notes));
+    if (to_stdout)
+      png_bytes = EncodePng(result.images[i], a.png_level, notes);
+    else
+      staged.push_back(StagePng(backend.output, result.images[i], a.png_level, notes));
     backend.png_ms = clock.Milliseconds();
   }
   if (result.diff) {
@@ -207,7 +216,8 @@ run::RunRecord RenderScene(const RenderArguments& a, const std::string& scene_ar
 // finishes) or the report's lines (on standard error when the PNG goes to standard output).
 void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool several) {
   if (a.json) {
-    std::cout << (several ? report::RenderJson(record).dump() : report::RenderJson(record).dump(2)) << "\n" << std::flush;
+    std::cout << (several ? report::RenderJson(record).dump() : report::RenderJson(record).dump(2)) << "\n"
+              << std::flush;
     return;
   }
   const bool to_stdout = !several && a.output && IsStandardStream(*a.output);
@@ -327,7 +337,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "the scene reported as timed out (default 600; 0: no limit)")
       ->type_name("SECONDS")
       ->check(CLI::NonNegativeNumber);
-  ExpectIndex(command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
+  ExpectIndex(
+      command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
   command
       ->add_option("--report", a->report,

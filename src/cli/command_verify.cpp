@@ -58,8 +58,10 @@ int Verify(const VerifyArguments& a) {
     StagePng(*map, *judgement.map).Commit();
   }
   const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
-  if (a.json) std::cout << report::VerifyJson(outputs).dump(2) << "\n";
-  else std::cout << report::VerifyText(outputs);
+  if (a.json)
+    std::cout << report::VerifyJson(outputs).dump(2) << "\n";
+  else
+    std::cout << report::VerifyText(outputs);
   return ExitCodeOf(judgement.verdict);
 }
 
@@ -67,14 +69,14 @@ int Verify(const VerifyArguments& a) {
 
 CommandRun AddVerifyCommand(CLI::App& app) {
   auto a = std::make_shared<VerifyArguments>();
-  CLI::App* command = AddSubcommand(
-      app, "verify", "judge any image of a scene by what a conformant Vulkan implementation may draw",
-      "Each pixel is certain (only one surface, or only the background, may show there),\n"
-      "uncertain (the spec lets more than one show) or a violation (no conformant\n"
-      "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
-      "The device's rules come from the image's PNG notes (render writes them), else the options.\n"
-      "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error,\n"
-      "6 inconclusive (no violation, but too little is certain to tell a broken image).");
+  CLI::App* command =
+      AddSubcommand(app, "verify", "judge any image of a scene by what a conformant Vulkan implementation may draw",
+                    "Each pixel is certain (only one surface, or only the background, may show there),\n"
+                    "uncertain (the spec lets more than one show) or a violation (no conformant\n"
+                    "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
+                    "The device's rules come from the image's PNG notes (render writes them), else the options.\n"
+                    "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error,\n"
+                    "6 inconclusive (no violation, but too little is certain to tell a broken image).");
   command->add_option("SCENE", a->scene, "the scene file (JSON) or OBJ mesh the image is of, or - for standard input")
       ->required();
   command->add_option("IMAGE.png", a->image, "the image to judge, at the scene's canvas size")->required();
@@ -93,7 +95,8 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                   ->type_name("BOOL")
                   ->each([a](const std::string&) { a->strict_given = true; }),
               "value", {"true", "false"});
-  command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")->type_name("MAP.png");
+  command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")
+      ->type_name("MAP.png");
   command->add_flag("--no-map", a->no_map, "write no map");
   command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/2, docs/json-output.md)");
   return [a] { return Verify(*a); };

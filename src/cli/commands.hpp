@@ -21,7 +21,7 @@ enum ExitCode : int {
   kExitBadInput = 2,
   kExitNoVulkan = 3,
   kExitInternalError = 4,
-  kExitGpuFailed = 5,  // the Vulkan driver crashed or timed out; everything else was still done
+  kExitGpuFailed = 5,     // the Vulkan driver crashed or timed out; everything else was still done
   kExitInconclusive = 6,  // no pixel is wrong, but the verifier could not tell a correct image from a broken one
 };
 

@@ -1,5 +1,4 @@
 #include "cli/commands.hpp"
-
 #include "run/verdict.hpp"
 
 namespace twinraster {

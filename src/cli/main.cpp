@@ -60,16 +60,18 @@ CommandRun AddHelpCommand(CLI::App& app) {
 }
 
 int Run(int argc, char** argv) {
-  CLI::App app("twinraster: the transform chain of Computer Graphics from Scratch, chapter 10, drawn on\n"
-               "Vulkan (lavapipe) and on a bit-exact CPU twin.",
-               "twinraster");
+  CLI::App app(
+      "twinraster: the transform chain of Computer Graphics from Scratch, chapter 10, drawn on\n"
+      "Vulkan (lavapipe) and on a bit-exact CPU twin.",
+      "twinraster");
   SetUpParser(app);
   // A function, called only when --version is given: it reaches Vulkan to list the devices.
   app.set_version_flag("--version", VersionText, "print the version and exit");
-  app.footer("Run 'twinraster COMMAND --help' for a command's arguments.\n"
-             "Exit codes: 0 done (images identical, or verified), 1 images differ (or violate), 2 bad input or usage,\n"
-             "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out,\n"
-             "6 inconclusive (the verifier found no violation but could not tell a broken image).");
+  app.footer(
+      "Run 'twinraster COMMAND --help' for a command's arguments.\n"
+      "Exit codes: 0 done (images identical, or verified), 1 images differ (or violate), 2 bad input or usage,\n"
+      "3 no usable Vulkan device, 4 internal error, 5 the Vulkan driver crashed or timed out,\n"
+      "6 inconclusive (the verifier found no violation but could not tell a broken image).");
   const std::map<std::string, CommandRun> commands = {
       {"explain", AddExplainCommand(app)}, {"render", AddRenderCommand(app)}, {"verify", AddVerifyCommand(app)},
       {"compare", AddCompareCommand(app)}, {"bench", AddBenchCommand(app)},   {"help", AddHelpCommand(app)},

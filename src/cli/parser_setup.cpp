@@ -1,8 +1,7 @@
 #include "cli/parser_setup.hpp"
 
-#include "cli/version.hpp"
-
 #include "base/closest_match.hpp"
+#include "cli/version.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -15,9 +15,9 @@ bool ShowProgressOn(int fd, bool quiet);
 
 class Progress {
  public:
-  explicit Progress(std::ostream* out);  // nullptr: shows nothing
+  explicit Progress(std::ostream* out);         // nullptr: shows nothing
   static Progress OnStandardError(bool quiet);  // std::cerr when ShowProgressOn(stderr), else nothing
-  ~Progress();  // erases a status line still showing
+  ~Progress();                                  // erases a status line still showing
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
@@ -32,6 +32,5 @@ class Progress {
   std::ostream* out_;
   bool status_showing_ = false;
 };
-
 
 }  // namespace twinraster

@@ -61,7 +61,8 @@ std::string ParseErrorProblem(const CLI::ParseError& error) {
   }
   // "Could not convert: --json = maybe": a value the option cannot take.
   const std::string prefix = "Could not convert: ";
-  if (error.get_name() == "ConversionError" && message.rfind(prefix, 0) == 0 && message.find(" = ") != std::string::npos) {
+  if (error.get_name() == "ConversionError" && message.rfind(prefix, 0) == 0 &&
+      message.find(" = ") != std::string::npos) {
     const std::size_t equals = message.find(" = ");
     return message.substr(prefix.size(), equals - prefix.size()) + ": cannot take the value \"" +
            message.substr(equals + 3) + "\"";

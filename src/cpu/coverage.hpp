@@ -18,9 +18,7 @@ struct CoverageCounts {
   std::vector<std::uint32_t> swapped;  // triangles whose vertices 1 and 2 setup swapped
 
   std::size_t index(std::uint32_t x, std::uint32_t y) const { return std::size_t{y} * width + x; }
-  std::uint32_t total(std::uint32_t x, std::uint32_t y) const {
-    return kept[index(x, y)] + swapped[index(x, y)];
-  }
+  std::uint32_t total(std::uint32_t x, std::uint32_t y) const { return kept[index(x, y)] + swapped[index(x, y)]; }
 };
 
 CoverageCounts CountCoverage(const DrawList& list, unsigned threads = 1);

@@ -1,11 +1,11 @@
 #include "cpu/cpu_renderer.hpp"
 
+#include "base/stopwatch.hpp"
 #include "cpu/depth_tiles.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/geometry.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
-#include "base/stopwatch.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -103,8 +103,7 @@ void ClearFrame(cpu::Framebuffer& fb, unsigned threads, std::uint32_t height, st
 // through in chunks (geometry.hpp): each chunk is set up by all threads, then rasterized by all
 // threads, each over its own bands, before the next chunk is set up, so memory stays bounded.
 // Every band sees every triangle in list order whatever the chunking and the thread count.
-Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options,
-             CpuTimings* timings) {
+Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options, CpuTimings* timings) {
   using namespace cpu;
   // More parts than bands would leave threads idle; the image does not depend on this number.
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
@@ -119,8 +118,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
   Stopwatch clock;
   double setup_ms = 0, draw_ms = 0;
-  Framebuffer fb(list.width, list.height,
-                 list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
+  Framebuffer fb(list.width, list.height, list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
   ClearFrame(fb, threads, list.height, PackRgba(list.background));
   draw_ms += clock.Lap();
 
@@ -142,7 +140,8 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   // A sliced giant mesh may have grown the scratch; don't keep that much between renders.
   if (scratch.bytes() > (std::size_t{64} << 20)) scratch = GeometryScratch{};
   if (timings != nullptr) {
-    *timings = {setup_ms, draw_ms, readback_ms, threads, std::accumulate(hidden.begin(), hidden.end(), std::uint64_t{0})};
+    *timings = {setup_ms, draw_ms, readback_ms, threads,
+                std::accumulate(hidden.begin(), hidden.end(), std::uint64_t{0})};
   }
   return image;
 }

@@ -38,14 +38,13 @@ TwinLimits TwinDeviceLimits();
 // readback = building the Image.
 struct CpuTimings {
   double setup_ms = 0, draw_ms = 0, readback_ms = 0;
-  unsigned threads = 0;  // the threads actually used: at most one per 16-row band
+  unsigned threads = 0;      // the threads actually used: at most one per 16-row band
   std::uint64_t hidden = 0;  // triangles skipped in a band because the depth tiles hid them there
 };
 
 // Throws std::invalid_argument for a malformed list (size 0 or over 16384, a mesh or vertex index
 // out of range, a colour missing), as the GPU renderer does.
-Image RenderOnCpu(const DrawList& list, const CpuOptions& options = {},
-                  CpuTimings* timings = nullptr);
+Image RenderOnCpu(const DrawList& list, const CpuOptions& options = {}, CpuTimings* timings = nullptr);
 
 // Clip-space positions from some other vertex stage: one vector per draw, holding that draw's mesh
 // vertices transformed.

@@ -11,9 +11,9 @@
 namespace twinraster::cpu {
 
 struct DepthPlane {
-  float a0 = 0;    // z at pixel (0, 0)
-  float dzdx = 0;  // per pixel to the right
-  float dzdy = 0;  // per pixel down
+  float a0 = 0;       // z at pixel (0, 0)
+  float dzdx = 0;     // per pixel to the right
+  float dzdy = 0;     // per pixel down
   bool fused = true;  // evaluated with fmaf (RasterRules::fused_multiply_add)
 };
 

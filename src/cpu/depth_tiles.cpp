@@ -50,8 +50,7 @@ DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare o
       farthest_(stride_ * ((height + kTileSize - 1) / kTileSize), ClearDepth(op)),
       dirty_(farthest_.size(), 0) {}
 
-bool DepthTiles::Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin,
-                        int row_end) const {
+bool DepthTiles::Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin, int row_end) const {
   const float* tiles = farthest_.data() + static_cast<std::size_t>(band) * stride_;
   const int first = bounds.x0 / kTileSize, last = bounds.x1 / kTileSize;
   float farthest = tiles[first];
@@ -76,9 +75,8 @@ void DepthTiles::Refresh(const Framebuffer& fb, int band) {
     if (dirty_[offset + tx] == 0) continue;
     dirty_[offset + tx] = 0;
     const int x_begin = static_cast<int>(tx) * kTileSize, x_end = std::min(width, x_begin + kTileSize);
-    farthest_[offset + tx] = op_ == DepthCompare::kLess
-                                 ? Farthest<true>(fb, x_begin, x_end, row_begin, row_end)
-                                 : Farthest<false>(fb, x_begin, x_end, row_begin, row_end);
+    farthest_[offset + tx] = op_ == DepthCompare::kLess ? Farthest<true>(fb, x_begin, x_end, row_begin, row_end)
+                                                        : Farthest<false>(fb, x_begin, x_end, row_begin, row_end);
   }
 }
 

@@ -45,7 +45,7 @@ class DepthTiles {
   std::size_t columns_;
   std::size_t stride_;  // columns_ rounded up to 64, so that bands of different parts share no cache line
   DepthCompare op_;
-  std::vector<float> farthest_;  // per tile, band after band: no stored depth in it is farther than this
+  std::vector<float> farthest_;      // per tile, band after band: no stored depth in it is farther than this
   std::vector<std::uint8_t> dirty_;  // per tile: drawn into since the last Refresh
 };
 

@@ -37,8 +37,7 @@ DepthBuffer::~DepthBuffer() {
   }
 }
 
-DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept
-    : data_(std::move(other.data_)), capacity_(other.capacity_) {
+DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept : data_(std::move(other.data_)), capacity_(other.capacity_) {
   other.capacity_ = 0;
 }
 
@@ -74,8 +73,8 @@ void ShadeRowFused(float* depth, std::uint8_t* rgba, int begin, int end, float p
   ShadeRowBody<true>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
 }
 
-void ShadeRowSeparate(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
-                      float dzdy, bool greater, std::uint32_t fill) {
+void ShadeRowSeparate(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx, float dzdy,
+                      bool greater, std::uint32_t fill) {
   ShadeRowBody<false>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
 }
 
@@ -123,8 +122,8 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
   const std::size_t row = fb.index(0, py);
   const bool greater = fb.compare == DepthCompare::kGreater;
   if (plane.fused) {
-    ShadeRowFused(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
-                  static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);
+    ShadeRowFused(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+                  plane.a0, plane.dzdx, plane.dzdy, greater, colour);
   } else {
     ShadeRowSeparate(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
                      static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);

@@ -1,7 +1,8 @@
 // Stages 6 and 7 per fragment: depth from the triangle's plane, the depth test against a
 // D32_SFLOAT buffer (VK_COMPARE_OP_LESS and cleared to 1.0, or with reversed Z
 // VK_COMPARE_OP_GREATER and cleared to 0.0), the depth write, and the colour write of the
-// triangle's flat colour, or its interpolated Gouraud colour, as RGBA8 (no blending). The colour attachment is the output Image itself.
+// triangle's flat colour, or its interpolated Gouraud colour, as RGBA8 (no blending). The colour attachment is the
+// output Image itself.
 #pragma once
 
 #include "cpu/colour_planes.hpp"
@@ -58,9 +59,7 @@ struct Framebuffer {
 
   std::uint32_t width() const { return colour.width; }
   std::uint32_t height() const { return colour.height; }
-  std::size_t index(int px, int py) const {
-    return std::size_t(py) * colour.width + std::size_t(px);
-  }
+  std::size_t index(int px, int py) const { return std::size_t(py) * colour.width + std::size_t(px); }
   std::uint32_t colour_word(std::size_t i) const {  // the pixel's 4 bytes as one word (PackRgba)
     std::uint32_t word;
     std::memcpy(&word, colour.rgba.data() + 4 * i, 4);

@@ -13,8 +13,7 @@
 namespace twinraster::cpu {
 
 std::uint32_t PackRgba(Rgb8 colour) {
-  return std::bit_cast<std::uint32_t>(
-      std::array<std::uint8_t, 4>{colour.r, colour.g, colour.b, 255});
+  return std::bit_cast<std::uint32_t>(std::array<std::uint8_t, 4>{colour.r, colour.g, colour.b, 255});
 }
 
 ShadedVertex ShadeVertex(const glm::mat4& f, const glm::vec3& position, const ViewportState& vp) {
@@ -53,16 +52,17 @@ void AssembleFan(const ClipVertex& a, unsigned a_out, const ClipVertex& b, unsig
 
 }  // namespace
 
-void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
-                      const ViewportState& vp, const PixelRect& region,
-                      std::vector<TriangleSetup>& out) {
+void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour, const ViewportState& vp,
+                      const PixelRect& region, std::vector<TriangleSetup>& out) {
   // Set up in place: a copy through the stack would cost store-forwarding stalls on every field.
   AssembleFan(v[0]->v, v[0]->outcode, v[1]->v, v[1]->outcode, v[2]->v, v[2]->outcode, vp,
               [&](const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
                 TriangleSetup& setup = out.emplace_back();
                 setup.colour = colour;
-                if (!SetUpTriangle(a.window, b.window, c.window, region, setup, vp.rules)) out.pop_back();
-                else setup.depth.fused = vp.rules.fused_multiply_add;
+                if (!SetUpTriangle(a.window, b.window, c.window, region, setup, vp.rules))
+                  out.pop_back();
+                else
+                  setup.depth.fused = vp.rules.fused_multiply_add;
               });
 }
 
@@ -87,8 +87,8 @@ void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const s
               });
 }
 
-void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
-                       const ViewportState& vp, const PixelRect& region, std::vector<LineSetup>& out) {
+void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour, const ViewportState& vp,
+                       const PixelRect& region, std::vector<LineSetup>& out) {
   const auto line = [&](const WindowPos& a, const WindowPos& b) {
     LineSetup& setup = out.emplace_back();
     setup.colour = colour;
@@ -156,8 +156,8 @@ std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& b
     const std::size_t begin = d;
     std::size_t triangles = 0, vertices = 0;
     while (d < n && triangles_of(d) <= budget.triangles &&
-           (d == begin || (triangles + triangles_of(d) <= budget.triangles &&
-                           vertices + vertices_of(d) <= budget.vertices))) {
+           (d == begin ||
+            (triangles + triangles_of(d) <= budget.triangles && vertices + vertices_of(d) <= budget.vertices))) {
       triangles += triangles_of(d);
       vertices += vertices_of(d);
       ++d;
@@ -224,8 +224,8 @@ void ShadeVertices(const ChunkDraws& draws, const ViewportState& vp, const std::
                   const std::size_t stop = std::min(end, vertex_start[i + 1]);
                   for (; g < stop; ++g) {
                     const std::size_t v = g - vertex_start[i];
-                    vertices[g] = clip ? ShadeClipVertex((*clip)[d][v], vp)
-                                       : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
+                    vertices[g] =
+                        clip ? ShadeClipVertex((*clip)[d][v], vp) : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
                   }
                 }
               });
@@ -271,8 +271,7 @@ void Bin(const Primitives& primitives, std::vector<std::vector<std::uint32_t>>& 
 // keeps its slice in order. The per-triangle loop is kept whole here: it is the hot one, and GCC
 // compiles it to fewer instructions than when it is split into functions.
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
-                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip,
-                     unsigned band_count) {
+                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip, unsigned band_count) {
   const ViewportState vp = MakeViewport(list.width, list.height, rules);
   const PixelRect region = DrawRegion(vp, list.width, list.height);
   const ChunkDraws draws(list, chunk);
@@ -288,47 +287,45 @@ void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned 
   const std::vector<std::size_t>& vertex_start = scratch.vertex_start;
   TriangleChunks& parts = scratch.triangles;
   LineChunks& line_parts = scratch.lines;
-  ParallelFor(triangle_parts, triangle_count,
-              [&](std::size_t begin, std::size_t end, unsigned part) {
-                for (std::size_t g = begin; g < end;) {
-                  const std::size_t i = DrawOf(triangle_start, g);
-                  const DrawMesh& mesh = draws.mesh(i);
-                  const ShadedVertex* base = vertices.data() + vertex_start[i];
-                  const std::size_t stop = std::min(end, triangle_start[i + 1]);
-                  for (; g < stop; ++g) {
-                    const std::size_t t = first_triangle + g - triangle_start[i];
-                    const auto& tri = mesh.triangles[t];
-                    if (wireframe) {
-                      AssembleWireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
-                                        region, line_parts[part]);
-                    } else if (mesh.shading == Shading::kFlat) {
-                      // Lit once, at the provoking vertex (corner 0), whose flat output fills the triangle.
-                      const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
-                      const glm::vec3 colour =
-                          LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
-                      AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), vp, region,
-                                       parts[part]);
-                    } else if (mesh.shading == Shading::kGouraud) {
-                      const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
-                      std::array<glm::vec3, 3> colours;
-                      for (std::size_t k = 0; k < 3; ++k) {
-                        colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], mesh.colours[t]);
-                      }
-                      AssembleSmoothTriangle({base + tri[0], base + tri[1], base + tri[2]}, colours, vp, region,
-                                             parts[part], scratch.colour_planes[part]);
-                    } else {
-                      AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp,
-                                       region, parts[part]);
-                    }
-                  }
-                }
-                if (band_count == 0) return;
-                if (wireframe) {
-                  Bin(line_parts[part], scratch.bins[part]);
-                } else {
-                  Bin(parts[part], scratch.bins[part]);
-                }
-              });
+  ParallelFor(triangle_parts, triangle_count, [&](std::size_t begin, std::size_t end, unsigned part) {
+    for (std::size_t g = begin; g < end;) {
+      const std::size_t i = DrawOf(triangle_start, g);
+      const DrawMesh& mesh = draws.mesh(i);
+      const ShadedVertex* base = vertices.data() + vertex_start[i];
+      const std::size_t stop = std::min(end, triangle_start[i + 1]);
+      for (; g < stop; ++g) {
+        const std::size_t t = first_triangle + g - triangle_start[i];
+        const auto& tri = mesh.triangles[t];
+        if (wireframe) {
+          AssembleWireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp, region,
+                            line_parts[part]);
+        } else if (mesh.shading == Shading::kFlat) {
+          // Lit once, at the provoking vertex (corner 0), whose flat output fills the triangle.
+          const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
+          const glm::vec3 colour =
+              LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
+          AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), vp, region, parts[part]);
+        } else if (mesh.shading == Shading::kGouraud) {
+          const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
+          std::array<glm::vec3, 3> colours;
+          for (std::size_t k = 0; k < 3; ++k) {
+            colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], mesh.colours[t]);
+          }
+          AssembleSmoothTriangle({base + tri[0], base + tri[1], base + tri[2]}, colours, vp, region, parts[part],
+                                 scratch.colour_planes[part]);
+        } else {
+          AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp, region,
+                           parts[part]);
+        }
+      }
+    }
+    if (band_count == 0) return;
+    if (wireframe) {
+      Bin(line_parts[part], scratch.bins[part]);
+    } else {
+      Bin(parts[part], scratch.bins[part]);
+    }
+  });
 }
 
 }  // namespace twinraster::cpu

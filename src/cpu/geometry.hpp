@@ -5,12 +5,12 @@
 // the result stays in ordered parts.
 #pragma once
 
+#include "chain/draw_list.hpp"
 #include "cpu/clipping.hpp"
 #include "cpu/colour_planes.hpp"
 #include "cpu/line_setup.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "cpu/viewport_transform.hpp"
-#include "chain/draw_list.hpp"
 
 #include <array>
 #include <cstdint>
@@ -30,9 +30,8 @@ ShadedVertex ShadeVertex(const glm::mat4& f, const glm::vec3& position, const Vi
 ShadedVertex ShadeClipVertex(const glm::vec4& clip, const ViewportState& vp);  // vertex stage already done
 
 // One input triangle: trivially accepted, rejected, or clipped into a fan; appends what it draws.
-void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
-                      const ViewportState& vp, const PixelRect& region,
-                      std::vector<TriangleSetup>& out);
+void AssembleTriangle(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour, const ViewportState& vp,
+                      const PixelRect& region, std::vector<TriangleSetup>& out);
 
 // The same for a Gouraud triangle whose corners have the given colours: each triangle it draws
 // gets its ColourPlanes appended to `planes`, and their index as its colour.
@@ -45,8 +44,8 @@ void AssembleSmoothTriangle(const std::array<const ShadedVertex*, 3>& v, const s
 // zero area. Clipped into p0..p(n-1): p0→p1, …, p(n-3)→p(n-2), then p(n-1)→p0, then
 // p(n-2)→p(n-1) (for n = 3 the unclipped order), leaving out the edges along a clip plane. Where
 // the rules say so (Mesa 25), x and y are clipped at the guard band instead (ClipTriangle).
-void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour,
-                       const ViewportState& vp, const PixelRect& region, std::vector<LineSetup>& out);
+void AssembleWireframe(const std::array<const ShadedVertex*, 3>& v, std::uint32_t colour, const ViewportState& vp,
+                       const PixelRect& region, std::vector<LineSetup>& out);
 
 // The triangles in draw order, as consecutive parts (one per setup thread: no merge copy).
 using TriangleChunks = std::vector<std::vector<TriangleSetup>>;
@@ -73,10 +72,10 @@ std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& b
 // 4 KiB, which for small scenes is much of the work.
 struct GeometryScratch {
   std::vector<ShadedVertex> vertices;
-  std::vector<std::size_t> vertex_start;  // per draw of the shaded chunk, into `vertices`
-  TriangleChunks triangles;               // the result
+  std::vector<std::size_t> vertex_start;                 // per draw of the shaded chunk, into `vertices`
+  TriangleChunks triangles;                              // the result
   std::vector<std::vector<ColourPlanes>> colour_planes;  // per part: its smooth triangles' planes
-  LineChunks lines;                       // the result, for a wireframe draw list
+  LineChunks lines;                                      // the result, for a wireframe draw list
   // bins[p][b]: indices into triangles[p] (lines[p] for a wireframe) of those whose box touches band b (kBandRows
   // rows), in order; binned as they are set up, while still in cache, so that each band's
   // rasterizer reads only the triangles it draws.

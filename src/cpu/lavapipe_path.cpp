@@ -62,13 +62,20 @@ CpuPath ApplyMesaOverrides(CpuPath cpu, const std::string& override_caps, const 
   cpu.override_caps = override_caps;
   if (cpu.arch == "x86-64") {
     // check_cpu_caps_override: each value clears one feature, and the features above it follow.
-    if (override_caps == "nosse") cpu.sse = false;
-    else if (override_caps == "sse") cpu.sse2 = false;
-    else if (override_caps == "sse2") cpu.sse3 = false;
-    else if (override_caps == "sse3") cpu.ssse3 = false;
-    else if (override_caps == "ssse3") cpu.sse4_1 = false;
-    else if (override_caps == "sse4.1") cpu.avx = false;
-    else if (override_caps == "avx") cpu.avx512f = false;
+    if (override_caps == "nosse")
+      cpu.sse = false;
+    else if (override_caps == "sse")
+      cpu.sse2 = false;
+    else if (override_caps == "sse2")
+      cpu.sse3 = false;
+    else if (override_caps == "sse3")
+      cpu.ssse3 = false;
+    else if (override_caps == "ssse3")
+      cpu.sse4_1 = false;
+    else if (override_caps == "sse4.1")
+      cpu.avx = false;
+    else if (override_caps == "avx")
+      cpu.avx512f = false;
     if (!cpu.sse) cpu.sse2 = false;
     if (!cpu.sse2) cpu.sse3 = false;
     if (!cpu.sse3) cpu.ssse3 = false;
@@ -112,8 +119,8 @@ std::string CpuPath::Text() const {
   std::string text = arch + " " + InstructionSet() + ", " + std::to_string(vector_bits) + "-bit";
   std::string chosen;
   if (!override_caps.empty()) chosen += "GALLIUM_OVERRIDE_CPU_CAPS=" + override_caps;
-  if (vector_bits_overridden) chosen += std::string(chosen.empty() ? "" : ", ") + "LP_NATIVE_VECTOR_WIDTH=" +
-                                        std::to_string(vector_bits);
+  if (vector_bits_overridden)
+    chosen += std::string(chosen.empty() ? "" : ", ") + "LP_NATIVE_VECTOR_WIDTH=" + std::to_string(vector_bits);
   if (!chosen.empty()) text += " (" + chosen + ")";
   return text;
 }

@@ -10,7 +10,8 @@ namespace twinraster::cpu {
 struct CpuPath {
   std::string arch;  // "x86-64", "aarch64", or what the build targets otherwise
   // Mesa's util_cpu_caps after GALLIUM_OVERRIDE_CPU_CAPS (x86-64 only; all false elsewhere).
-  bool sse = false, sse2 = false, sse3 = false, ssse3 = false, sse4_1 = false, avx = false, avx2 = false, fma = false, avx512f = false;
+  bool sse = false, sse2 = false, sse3 = false, ssse3 = false, sse4_1 = false, avx = false, avx2 = false, fma = false,
+       avx512f = false;
   std::string override_caps;  // GALLIUM_OVERRIDE_CPU_CAPS as set, empty when unset
   int vector_bits = 0;        // llvmpipe's native vector width, LP_NATIVE_VECTOR_WIDTH included
   bool vector_bits_overridden = false;

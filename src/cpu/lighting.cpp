@@ -22,9 +22,9 @@ glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance,
   n = glm::vec3(n.x / n_length, n.y / n_length, n.z / n_length);
   float intensity = lighting.ambient;
   for (const DrawLight& light : lighting.lights) {
-    const glm::vec3 l = light.point ? glm::vec3(light.vector.x - world.x, light.vector.y - world.y,
-                                                light.vector.z - world.z)
-                                    : light.vector;
+    const glm::vec3 l = light.point
+                            ? glm::vec3(light.vector.x - world.x, light.vector.y - world.y, light.vector.z - world.z)
+                            : light.vector;
     const float n_dot_l = Dot(n, l);
     if (n_dot_l > 0.0f) {
       const float l_length = std::sqrt(Dot(l, l));

@@ -40,8 +40,7 @@ Span CoveredSpan(const EdgeFunction* edges, std::size_t count, const PixelRect& 
   return {static_cast<int>(begin), static_cast<int>(end)};
 }
 
-SpanWalker::SpanWalker(const TriangleSetup& t, int py)
-    : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
+SpanWalker::SpanWalker(const TriangleSetup& t, int py) : x_begin_(t.bounds.x0), x_end_(t.bounds.x1 + 1) {
   const std::array<EdgeFunction, 3> edges = Edges(t);
   for (std::size_t i = 0; i < 3; ++i) {
     const EdgeFunction& e = edges[i];

@@ -141,8 +141,8 @@ inline int LastBand(const PixelRect& bounds) { return bounds.y1 / kBandRows; }
 // whole triangle after the other would give. (The renderer does the same from the bins that
 // geometry.hpp fills during setup; this simple form serves clearing and coverage counting.)
 template <class BandFn, class SpanFn>
-void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share,
-                    int height, BandFn&& on_band, SpanFn&& on_span) {
+void RasterizeBands(const std::vector<std::vector<TriangleSetup>>& triangles, const RowShare& share, int height,
+                    BandFn&& on_band, SpanFn&& on_span) {
   const int band_count = (height + kBandRows - 1) / kBandRows;
   for (int band = static_cast<int>(share.part); band < band_count; band += static_cast<int>(share.parts)) {
     const int band_begin = band * kBandRows, band_end = std::min(height, band_begin + kBandRows);

@@ -35,8 +35,8 @@ std::int32_t SnapToSubpixelHalfAway(float window_coord) {
   return static_cast<std::int32_t>(rounded);
 }
 
-bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
-                   const PixelRect& region, TriangleSetup& out, const RasterRules& rules) {
+bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2, const PixelRect& region,
+                   TriangleSetup& out, const RasterRules& rules) {
   const auto snap = rules.triangles_round_half_away ? SnapToSubpixelHalfAway : SnapToSubpixel;
   std::int32_t x[3] = {snap(v0.x), snap(v1.x), snap(v2.x)};
   std::int32_t y[3] = {snap(v0.y), snap(v1.y), snap(v2.y)};

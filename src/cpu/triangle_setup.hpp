@@ -37,8 +37,7 @@ struct EdgeFunction {
 
 // Edge function value at the centre of pixel (px, py); > 0 is inside.
 inline std::int64_t EdgeAt(const EdgeFunction& e, int px, int py) {
-  return e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne) -
-         e.dcdx * (std::int64_t{px} * kSubpixelOne);
+  return e.c + e.dcdy * (std::int64_t{py} * kSubpixelOne) - e.dcdx * (std::int64_t{px} * kSubpixelOne);
 }
 
 inline EdgeFunction MakeEdge(std::int64_t xi, std::int64_t yi, std::int64_t xj, std::int64_t yj) {
@@ -62,11 +61,11 @@ inline EdgeFunction MakeEdge(std::int64_t xi, std::int64_t yi, std::int64_t xj, 
 // where a triangle is drawn (Edges), which costs less than moving them through memory.
 struct TriangleSetup {
   std::array<std::int32_t, 3> x{}, y{};  // snapped vertices, in post-swap order
-  PixelRect bounds;  // pixels that may be covered, inside the draw region
-  DepthPlane depth;  // from the vertices in post-swap order
-  std::uint32_t colour = 0;  // RGBA8, or for a smooth triangle the index of its ColourPlanes
-  bool swapped = false;  // the snapped area was negative, so vertices 1 and 2 were swapped
-  bool smooth = false;   // Gouraud: the colour is interpolated (colour_planes.hpp)
+  PixelRect bounds;                      // pixels that may be covered, inside the draw region
+  DepthPlane depth;                      // from the vertices in post-swap order
+  std::uint32_t colour = 0;              // RGBA8, or for a smooth triangle the index of its ColourPlanes
+  bool swapped = false;                  // the snapped area was negative, so vertices 1 and 2 were swapped
+  bool smooth = false;                   // Gouraud: the colour is interpolated (colour_planes.hpp)
 };
 
 // The three edge functions, edge i running from vertex i to vertex i + 1 mod 3.
@@ -77,8 +76,8 @@ inline std::array<EdgeFunction, 3> Edges(const TriangleSetup& t) {
 
 // False when the triangle covers nothing for sure (zero area, or its box misses `region`).
 // `rules`: how the vertices snap (triangles_round_half_away).
-bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2,
-                   const PixelRect& region, TriangleSetup& out, const RasterRules& rules = {});
+bool SetUpTriangle(const WindowPos& v0, const WindowPos& v1, const WindowPos& v2, const PixelRect& region,
+                   TriangleSetup& out, const RasterRules& rules = {});
 
 // The coverage test for one pixel, bounds included.
 bool Covers(const TriangleSetup& t, int px, int py);

@@ -1,8 +1,8 @@
 #include "cpu/twin_rules.hpp"
 
 #include <array>
-#include <span>
 #include <regex>
+#include <span>
 #include <string_view>
 
 namespace twinraster::cpu {
@@ -19,8 +19,10 @@ constexpr RasterRules kMesa22NoFma{.fused_multiply_add = false};
 constexpr RasterRules kMesa22Aarch64{.fused_multiply_add = true, .triangles_round_half_away = true};
 // Mesa 25.0: lines round half to even (util_iround became lrintf) and polygon mode LINE clips x and
 // y at the guard band.
-constexpr RasterRules kMesa25Fma{.fused_multiply_add = true, .lines_round_half_even = true, .wireframe_guard_band = true};
-constexpr RasterRules kMesa25NoFma{.fused_multiply_add = false, .lines_round_half_even = true, .wireframe_guard_band = true};
+constexpr RasterRules kMesa25Fma{
+    .fused_multiply_add = true, .lines_round_half_even = true, .wireframe_guard_band = true};
+constexpr RasterRules kMesa25NoFma{
+    .fused_multiply_add = false, .lines_round_half_even = true, .wireframe_guard_band = true};
 
 // The sse4.1 path (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, or an x86-64 CPU without AVX) has no FMA and
 // 128-bit vectors; LP_NATIVE_VECTOR_WIDTH=128 keeps FMA. Debian 12 builds Mesa 22.3.6 with LLVM 15;
@@ -109,8 +111,8 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
   }
   twin.release = ParseLavapipe(device_name, driver_info);
   if (!twin.release) {
-    twin.text = "no bit-exact rules for " + device_name +
-                (driver_info.empty() ? "" : " (" + driver_info + ")") + ": the twin copies lavapipe only";
+    twin.text = "no bit-exact rules for " + device_name + (driver_info.empty() ? "" : " (" + driver_info + ")") +
+                ": the twin copies lavapipe only";
     return twin;
   }
   const LavapipeRelease& release = *twin.release;
@@ -139,8 +141,8 @@ std::string KnownRulesText() {
             "\n";
   }
   for (const UnprovenLavapipe& unproven : kUnproven) {
-    text += "  (no rules for Mesa " + std::string(unproven.mesa) + " (LLVM " + std::string(unproven.llvm_major) + "), " +
-            std::string(unproven.instruction_set) + ", " + std::to_string(unproven.vector_bits) +
+    text += "  (no rules for Mesa " + std::string(unproven.mesa) + " (LLVM " + std::string(unproven.llvm_major) +
+            "), " + std::string(unproven.instruction_set) + ", " + std::to_string(unproven.vector_bits) +
             "-bit: " + std::string(unproven.why) + ")\n";
   }
   return text;

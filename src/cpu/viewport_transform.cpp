@@ -23,15 +23,13 @@ ViewportState MakeViewport(std::uint32_t width, std::uint32_t height, const Rast
 WindowPos ViewportTransformShader(const ViewportState& vp, const glm::vec4& clip) {
   const float oow = 1.0f / clip.w;
   if (!vp.rules.fused_multiply_add) return ViewportTransformClipped(vp, clip);  // the same two roundings
-  return {std::fma(clip.x * oow, vp.scale[0], vp.translate[0]),
-          std::fma(clip.y * oow, vp.scale[1], vp.translate[1]),
+  return {std::fma(clip.x * oow, vp.scale[0], vp.translate[0]), std::fma(clip.y * oow, vp.scale[1], vp.translate[1]),
           std::fma(clip.z * oow, vp.scale[2], vp.translate[2])};
 }
 
 WindowPos ViewportTransformClipped(const ViewportState& vp, const glm::vec4& clip) {
   const float oow = 1.0f / clip.w;
-  return {(clip.x * oow) * vp.scale[0] + vp.translate[0],
-          (clip.y * oow) * vp.scale[1] + vp.translate[1],
+  return {(clip.x * oow) * vp.scale[0] + vp.translate[0], (clip.y * oow) * vp.scale[1] + vp.translate[1],
           (clip.z * oow) * vp.scale[2] + vp.translate[2]};
 }
 

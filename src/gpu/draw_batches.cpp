@@ -13,14 +13,12 @@ DrawPlan PlanDraws(const DrawList& list, Instancing mode, std::uint32_t per_buff
     std::size_t end = begin + 1;
     while (end < n && list.draws[end].mesh == list.draws[begin].mesh) ++end;
     const std::size_t run = end - begin;
-    const bool instanced = mode == Instancing::kAlways ||
-                           (mode == Instancing::kAuto && run >= kInstancingThreshold);
+    const bool instanced = mode == Instancing::kAlways || (mode == Instancing::kAuto && run >= kInstancingThreshold);
     if (!instanced) {
       // One batch per run; the renderer pushes F and draws once per draw in it. Runs longer
       // than 2^32 draws cannot occur: scenes are limited far below that.
-      plan.batches.push_back(DrawBatch{.mesh = list.draws[begin].mesh,
-                                       .first_draw = begin,
-                                       .count = static_cast<std::uint32_t>(run)});
+      plan.batches.push_back(
+          DrawBatch{.mesh = list.draws[begin].mesh, .first_draw = begin, .count = static_cast<std::uint32_t>(run)});
     } else {
       // Fill instance buffers in order; a run that reaches the end of one continues in the next.
       for (std::size_t at = begin; at < end;) {

@@ -33,7 +33,7 @@ struct DrawBatch {
 };
 
 struct DrawPlan {
-  std::vector<DrawBatch> batches;         // in draw-list order, covering every draw once
+  std::vector<DrawBatch> batches;           // in draw-list order, covering every draw once
   std::vector<std::uint32_t> buffer_sizes;  // F matrices in each instance buffer
 };
 

@@ -37,7 +37,8 @@ class Decoder {
   void Vector(std::vector<T>& values) {
     std::uint64_t n = 0;
     Value(n);
-    if (n > (bytes_.size() - at_) / sizeof(T)) throw std::invalid_argument("draw list bytes: a vector runs past the end");
+    if (n > (bytes_.size() - at_) / sizeof(T))
+      throw std::invalid_argument("draw list bytes: a vector runs past the end");
     values.resize(n);
     if (n > 0) std::memcpy(values.data(), Take(n * sizeof(T)), n * sizeof(T));  // an empty vector's data() may be null
   }

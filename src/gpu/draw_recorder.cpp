@@ -7,8 +7,8 @@
 namespace twinraster::gpu {
 
 DrawRecorder::DrawRecorder(const vk::raii::CommandBuffer& cmd, Pipeline& pipeline, const DrawList& list,
-                           const MeshBuffers& meshes, const InstanceBuffers& instances,
-                           vk::DescriptorSet colour_set, vk::DescriptorSet lit_set)
+                           const MeshBuffers& meshes, const InstanceBuffers& instances, vk::DescriptorSet colour_set,
+                           vk::DescriptorSet lit_set)
     : cmd_(cmd),
       pipeline_(pipeline),
       list_(list),

@@ -22,9 +22,8 @@ class DrawRecorder {
  public:
   // `colour_set` serves unlit draws, `lit_set` lit ones (Pipeline::set_layout); every argument
   // must outlive the recorder.
-  DrawRecorder(const vk::raii::CommandBuffer& cmd, Pipeline& pipeline, const DrawList& list,
-               const MeshBuffers& meshes, const InstanceBuffers& instances, vk::DescriptorSet colour_set,
-               vk::DescriptorSet lit_set);
+  DrawRecorder(const vk::raii::CommandBuffer& cmd, Pipeline& pipeline, const DrawList& list, const MeshBuffers& meshes,
+               const InstanceBuffers& instances, vk::DescriptorSet colour_set, vk::DescriptorSet lit_set);
 
   void Record(const DrawBatch& batch);
   std::size_t draw_commands() const { return draw_commands_; }  // vkCmdDraw calls so far

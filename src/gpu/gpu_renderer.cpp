@@ -1,5 +1,6 @@
 #include "gpu/gpu_renderer.hpp"
 
+#include "base/stopwatch.hpp"
 #include "gpu/draw_recorder.hpp"
 #include "gpu/instance_buffers.hpp"
 #include "gpu/light_buffers.hpp"
@@ -7,7 +8,6 @@
 #include "gpu/offscreen_target.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/vulkan_context.hpp"
-#include "base/stopwatch.hpp"
 
 #include <algorithm>
 #include <array>
@@ -20,23 +20,22 @@ namespace twinraster {
 namespace {
 
 void CheckSize(std::uint32_t width, std::uint32_t height, const vk::PhysicalDeviceLimits& limits) {
-  const std::uint32_t max_width = std::min(
-      {limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxViewportDimensions[0]});
-  const std::uint32_t max_height = std::min(
-      {limits.maxImageDimension2D, limits.maxFramebufferHeight, limits.maxViewportDimensions[1]});
+  const std::uint32_t max_width =
+      std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxViewportDimensions[0]});
+  const std::uint32_t max_height =
+      std::min({limits.maxImageDimension2D, limits.maxFramebufferHeight, limits.maxViewportDimensions[1]});
   if (width == 0 || height == 0 || width > max_width || height > max_height) {
-    throw std::invalid_argument("cannot render " + std::to_string(width) + "x" +
-                                std::to_string(height) + " pixels: the device allows 1x1 to " +
-                                std::to_string(max_width) + "x" + std::to_string(max_height));
+    throw std::invalid_argument("cannot render " + std::to_string(width) + "x" + std::to_string(height) +
+                                " pixels: the device allows 1x1 to " + std::to_string(max_width) + "x" +
+                                std::to_string(max_height));
   }
 }
 
 // The clear colour as the shader-side float k / 255: converting back to UNORM8 gives k exactly.
 vk::ClearValue ClearColour(Rgb8 background) {
   const auto unorm = [](std::uint8_t k) { return static_cast<float>(k) / 255.0f; };
-  return vk::ClearValue{
-      .color = vk::ClearColorValue{.float32 = std::array{unorm(background.r), unorm(background.g),
-                                                         unorm(background.b), 1.0f}}};
+  return vk::ClearValue{.color = vk::ClearColorValue{.float32 = std::array{unorm(background.r), unorm(background.g),
+                                                                           unorm(background.b), 1.0f}}};
 }
 
 }  // namespace
@@ -67,20 +66,22 @@ struct GpuRenderer::Impl {
 };
 
 GpuRenderer::Impl::Impl(const GpuOptions& options)
-    : instancing(options.instancing), instances_per_buffer(options.instances_per_buffer), context(options), pipeline(context.device()) {
+    : instancing(options.instancing),
+      instances_per_buffer(options.instances_per_buffer),
+      context(options),
+      pipeline(context.device()) {
   const vk::raii::Device& device = context.device();
   // The unlit set's one storage buffer and the lit set's three (one with a dynamic offset).
   const std::array pool_sizes = {
       vk::DescriptorPoolSize{.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 3},
       vk::DescriptorPoolSize{.type = vk::DescriptorType::eStorageBufferDynamic, .descriptorCount = 1}};
-  descriptor_pool = vk::raii::DescriptorPool(
-      device, vk::DescriptorPoolCreateInfo{
-                  // vk::raii::DescriptorSet frees itself, which needs this flag.
-                  .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                  .maxSets = 2,
-                  .poolSizeCount = pool_sizes.size(),
-                  .pPoolSizes = pool_sizes.data(),
-              });
+  descriptor_pool = vk::raii::DescriptorPool(device, vk::DescriptorPoolCreateInfo{
+                                                         // vk::raii::DescriptorSet frees itself, which needs this flag.
+                                                         .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                         .maxSets = 2,
+                                                         .poolSizeCount = pool_sizes.size(),
+                                                         .pPoolSizes = pool_sizes.data(),
+                                                     });
   const std::array set_layouts = {*pipeline.set_layout(false), *pipeline.set_layout(true)};
   const vk::DescriptorSetAllocateInfo set_info{
       .descriptorPool = *descriptor_pool,
@@ -91,11 +92,10 @@ GpuRenderer::Impl::Impl(const GpuOptions& options)
   colour_set = std::move(sets[0]);
   lit_set = std::move(sets[1]);
 
-  command_pool =
-      vk::raii::CommandPool(device, vk::CommandPoolCreateInfo{
-                                        .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
-                                        .queueFamilyIndex = context.queue_family(),
-                                    });
+  command_pool = vk::raii::CommandPool(device, vk::CommandPoolCreateInfo{
+                                                   .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                   .queueFamilyIndex = context.queue_family(),
+                                               });
   const vk::CommandBufferAllocateInfo command_info{
       .commandPool = *command_pool,
       .level = vk::CommandBufferLevel::ePrimary,
@@ -111,7 +111,8 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   // Setup. Check and upload first: a malformed list then throws before anything is touched.
   CheckSize(list.width, list.height, context.limits());
   if (list.wireframe && !context.wireframe()) {
-    throw GpuUnavailable(context.device_name() + " cannot draw wireframes (no fillModeNonSolid feature); "
+    throw GpuUnavailable(context.device_name() +
+                         " cannot draw wireframes (no fillModeNonSolid feature); "
                          "--backend cpu can");
   }
   const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
@@ -121,8 +122,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   if (list.lighting) lights.emplace(context, list);
   if (!target || target->width() != list.width || target->height() != list.height) {
     target.reset();  // free the old images first: at 16384x16384 one target holds 3 GiB
-    target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width,
-                                                    list.height);
+    target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width, list.height);
   }
   PointSets(meshes, lights ? &*lights : nullptr);
   const std::size_t draw_commands = Record(list, plan, meshes, instances, lights ? &*lights : nullptr);
@@ -131,8 +131,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
   // Draw: run the commands and wait for them.
   context.device().resetFences(*done);
   const vk::CommandBuffer command_buffer = *commands;
-  context.queue().submit(
-      vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &command_buffer}, *done);
+  context.queue().submit(vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &command_buffer}, *done);
   if (context.device().waitForFences(*done, VK_TRUE, std::numeric_limits<std::uint64_t>::max()) !=
       vk::Result::eSuccess) {
     throw std::runtime_error("the Vulkan device did not finish the frame");
@@ -159,10 +158,12 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
 // Safe to rewrite: the previous frame that read the sets has finished (Render waited for it).
 void GpuRenderer::Impl::PointSets(const gpu::MeshBuffers& meshes, const gpu::LightBuffers* lights) {
   const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer,
-                         vk::DeviceSize range = VK_WHOLE_SIZE, vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
+                         vk::DeviceSize range = VK_WHOLE_SIZE,
+                         vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
     const vk::DescriptorBufferInfo info{.buffer = buffer, .offset = 0, .range = range};
     context.device().updateDescriptorSets(
-        vk::WriteDescriptorSet{.dstSet = *set, .dstBinding = binding, .descriptorCount = 1, .descriptorType = type, .pBufferInfo = &info},
+        vk::WriteDescriptorSet{
+            .dstSet = *set, .dstBinding = binding, .descriptorCount = 1, .descriptorType = type, .pBufferInfo = &info},
         nullptr);
   };
   point(colour_set, 0, meshes.colours());
@@ -173,9 +174,8 @@ void GpuRenderer::Impl::PointSets(const gpu::MeshBuffers& meshes, const gpu::Lig
   }
 }
 
-std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan,
-                                      const gpu::MeshBuffers& meshes, const gpu::InstanceBuffers& instances,
-                                      const gpu::LightBuffers* lights) {
+std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
+                                      const gpu::InstanceBuffers& instances, const gpu::LightBuffers* lights) {
   const vk::raii::CommandBuffer& cmd = commands;
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
   cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
@@ -196,9 +196,8 @@ void GpuRenderer::Impl::BeginPass(const DrawList& list) {
   const vk::raii::CommandBuffer& cmd = commands;
   const vk::Extent2D extent{list.width, list.height};
   const float far_depth = list.reversed_z ? 0.0f : 1.0f;
-  const std::array clear_values = {
-      ClearColour(list.background),
-      vk::ClearValue{.depthStencil = {.depth = far_depth, .stencil = 0}}};
+  const std::array clear_values = {ClearColour(list.background),
+                                   vk::ClearValue{.depthStencil = {.depth = far_depth, .stencil = 0}}};
   cmd.beginRenderPass(
       vk::RenderPassBeginInfo{
           .renderPass = *pipeline.render_pass(),
@@ -221,8 +220,7 @@ void GpuRenderer::Impl::BeginPass(const DrawList& list) {
 // work is done.
 void GpuRenderer::Impl::CopyOut(const DrawList& list) {
   const vk::raii::CommandBuffer& cmd = commands;
-  cmd.copyImageToBuffer(target->colour_image(), vk::ImageLayout::eTransferSrcOptimal,
-                        target->readback().buffer(),
+  cmd.copyImageToBuffer(target->colour_image(), vk::ImageLayout::eTransferSrcOptimal, target->readback().buffer(),
                         vk::BufferImageCopy{
                             .bufferOffset = 0,
                             .bufferRowLength = 0,  // 0: rows tightly packed
@@ -234,8 +232,7 @@ void GpuRenderer::Impl::CopyOut(const DrawList& list) {
                             .imageOffset = {0, 0, 0},
                             .imageExtent = {list.width, list.height, 1},
                         });
-  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {},
-                      nullptr,
+  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {}, nullptr,
                       vk::BufferMemoryBarrier{
                           .srcAccessMask = vk::AccessFlagBits::eTransferWrite,
                           .dstAccessMask = vk::AccessFlagBits::eHostRead,

@@ -94,9 +94,7 @@ ReadStatus ReadTag(ByteSource& in, ReplyTag& tag) {
     case ReplyTag::kRendered:
     case ReplyTag::kUnavailable:
     case ReplyTag::kBadList:
-    case ReplyTag::kFailed:
-      tag = static_cast<ReplyTag>(byte);
-      return status;
+    case ReplyTag::kFailed: tag = static_cast<ReplyTag>(byte); return status;
   }
   throw std::logic_error("GPU process: unknown message");
 }

@@ -15,7 +15,8 @@ InstanceBuffers::InstanceBuffers(const VulkanContext& context, const DrawList& l
     if (!batch.instanced) continue;
     std::byte* destination = buffers_[batch.buffer].data() + std::size_t{batch.first_instance} * sizeof(glm::mat4);
     for (std::uint32_t i = 0; i < batch.count; ++i) {
-      std::memcpy(destination + std::size_t{i} * sizeof(glm::mat4), &list.draws[batch.first_draw + i].F, sizeof(glm::mat4));
+      std::memcpy(destination + std::size_t{i} * sizeof(glm::mat4), &list.draws[batch.first_draw + i].F,
+                  sizeof(glm::mat4));
     }
   }
 }

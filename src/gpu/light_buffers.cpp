@@ -38,7 +38,8 @@ static_assert(kLitInstancesPerRange * kLitInstanceBytes <= (vk::DeviceSize{1} <<
 
 LightBuffers::LightBuffers(const VulkanContext& context, const DrawList& list)
     : normals_(context, Corners(list) * sizeof(glm::vec3), vk::BufferUsageFlagBits::eVertexBuffer),
-      instances_(context, vk::DeviceSize{list.draws.size()} * kLitInstanceBytes, vk::BufferUsageFlagBits::eStorageBuffer),
+      instances_(context, vk::DeviceSize{list.draws.size()} * kLitInstanceBytes,
+                 vk::BufferUsageFlagBits::eStorageBuffer),
       instance_range_(std::min<vk::DeviceSize>(std::max<std::size_t>(list.draws.size(), 1), kLitInstancesPerRange) *
                       kLitInstanceBytes),
       lights_(context, kLightsHeader + list.lighting->lights.size() * sizeof(Std430Light),

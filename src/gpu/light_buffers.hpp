@@ -22,8 +22,8 @@ class LightBuffers {
  public:
   LightBuffers(const VulkanContext& context, const DrawList& list);
 
-  vk::Buffer normals() const { return normals_.buffer(); }      // vec3 per corner (binding 2)
-  vk::Buffer instances() const { return instances_.buffer(); }  // LitInstance per draw
+  vk::Buffer normals() const { return normals_.buffer(); }           // vec3 per corner (binding 2)
+  vk::Buffer instances() const { return instances_.buffer(); }       // LitInstance per draw
   vk::DeviceSize instance_range() const { return instance_range_; }  // the binding's size
   vk::Buffer lights() const { return lights_.buffer(); }
 

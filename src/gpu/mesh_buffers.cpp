@@ -36,8 +36,7 @@ MeshPlan PlanMeshes(const DrawList& list, const vk::PhysicalDeviceLimits& limits
 MeshBuffers::MeshBuffers(const VulkanContext& context, const DrawList& list)
     : plan_(PlanMeshes(list, context.limits())),
       corners_(context, plan_.triangles * 3 * sizeof(glm::vec3), vk::BufferUsageFlagBits::eVertexBuffer),
-      colours_(context, plan_.triangles * sizeof(std::uint32_t),
-               vk::BufferUsageFlagBits::eStorageBuffer) {
+      colours_(context, plan_.triangles * sizeof(std::uint32_t), vk::BufferUsageFlagBits::eStorageBuffer) {
   // The memory is host-coherent and the queue submission makes these writes visible to the GPU.
   std::byte* corner = corners_.data();
   std::byte* colour = colours_.data();

@@ -7,9 +7,8 @@
 namespace twinraster::gpu {
 namespace {
 
-AttachmentImage CreateAttachment(const VulkanContext& context, vk::Format format,
-                                 vk::ImageUsageFlags usage, vk::ImageAspectFlags aspect,
-                                 std::uint32_t width, std::uint32_t height) {
+AttachmentImage CreateAttachment(const VulkanContext& context, vk::Format format, vk::ImageUsageFlags usage,
+                                 vk::ImageAspectFlags aspect, std::uint32_t width, std::uint32_t height) {
   const vk::raii::Device& device = context.device();
   AttachmentImage result;
   result.image = vk::raii::Image(device, vk::ImageCreateInfo{
@@ -25,12 +24,12 @@ AttachmentImage CreateAttachment(const VulkanContext& context, vk::Format format
                                              .initialLayout = vk::ImageLayout::eUndefined,
                                          });
   const vk::MemoryRequirements requirements = result.image.getMemoryRequirements();
-  result.memory = vk::raii::DeviceMemory(
-      device, vk::MemoryAllocateInfo{
-                  .allocationSize = requirements.size,
-                  .memoryTypeIndex = context.FindMemoryType(
-                      requirements.memoryTypeBits, {}, vk::MemoryPropertyFlagBits::eDeviceLocal),
-              });
+  result.memory =
+      vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo{
+                                         .allocationSize = requirements.size,
+                                         .memoryTypeIndex = context.FindMemoryType(
+                                             requirements.memoryTypeBits, {}, vk::MemoryPropertyFlagBits::eDeviceLocal),
+                                     });
   result.image.bindMemory(*result.memory, 0);
   result.view = vk::raii::ImageView(device, vk::ImageViewCreateInfo{
                                                 .image = *result.image,
@@ -43,20 +42,16 @@ AttachmentImage CreateAttachment(const VulkanContext& context, vk::Format format
 
 }  // namespace
 
-OffscreenTarget::OffscreenTarget(const VulkanContext& context,
-                                 const vk::raii::RenderPass& render_pass, std::uint32_t width,
-                                 std::uint32_t height)
+OffscreenTarget::OffscreenTarget(const VulkanContext& context, const vk::raii::RenderPass& render_pass,
+                                 std::uint32_t width, std::uint32_t height)
     : width_(width),
       height_(height),
-      colour_(CreateAttachment(
-          context, kColourFormat,
-          vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc,
-          vk::ImageAspectFlagBits::eColor, width, height)),
-      depth_(CreateAttachment(context, kDepthFormat,
-                              vk::ImageUsageFlagBits::eDepthStencilAttachment,
+      colour_(CreateAttachment(context, kColourFormat,
+                               vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc,
+                               vk::ImageAspectFlagBits::eColor, width, height)),
+      depth_(CreateAttachment(context, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
                               vk::ImageAspectFlagBits::eDepth, width, height)),
-      readback_(context, vk::DeviceSize{width} * height * 4,
-                vk::BufferUsageFlagBits::eTransferDst) {
+      readback_(context, vk::DeviceSize{width} * height * 4, vk::BufferUsageFlagBits::eTransferDst) {
   const std::array views = {*colour_.view, *depth_.view};
   framebuffer_ = vk::raii::Framebuffer(context.device(), vk::FramebufferCreateInfo{
                                                              .renderPass = *render_pass,

@@ -19,16 +19,14 @@ struct AttachmentImage {
 
 class OffscreenTarget {
  public:
-  OffscreenTarget(const VulkanContext& context, const vk::raii::RenderPass& render_pass,
-                  std::uint32_t width, std::uint32_t height);
+  OffscreenTarget(const VulkanContext& context, const vk::raii::RenderPass& render_pass, std::uint32_t width,
+                  std::uint32_t height);
 
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
   vk::Image colour_image() const { return *colour_.image; }
   vk::Framebuffer framebuffer() const { return *framebuffer_; }
-  const HostBuffer& readback() const {
-    return readback_;
-  }  // width * height * 4 bytes, rows top first
+  const HostBuffer& readback() const { return readback_; }  // width * height * 4 bytes, rows top first
 
  private:
   std::uint32_t width_, height_;

@@ -58,14 +58,12 @@ vk::raii::RenderPass CreateRenderPass(const vk::raii::Device& device) {
       vk::SubpassDependency{
           .srcSubpass = VK_SUBPASS_EXTERNAL,
           .dstSubpass = 0,
-          .srcStageMask =
-              vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eLateFragmentTests,
+          .srcStageMask = vk::PipelineStageFlagBits::eTransfer | vk::PipelineStageFlagBits::eLateFragmentTests,
           .dstStageMask = vk::PipelineStageFlagBits::eColorAttachmentOutput |
                           vk::PipelineStageFlagBits::eEarlyFragmentTests |
                           vk::PipelineStageFlagBits::eLateFragmentTests,
           .srcAccessMask = vk::AccessFlagBits::eDepthStencilAttachmentWrite,
-          .dstAccessMask = vk::AccessFlagBits::eColorAttachmentWrite |
-                           vk::AccessFlagBits::eDepthStencilAttachmentRead |
+          .dstAccessMask = vk::AccessFlagBits::eColorAttachmentWrite | vk::AccessFlagBits::eDepthStencilAttachmentRead |
                            vk::AccessFlagBits::eDepthStencilAttachmentWrite,
       },
       // The copy to the readback buffer reads what the pass wrote (COLOR_ATTACHMENT_OUTPUT ->
@@ -91,31 +89,28 @@ vk::raii::RenderPass CreateRenderPass(const vk::raii::Device& device) {
 
 template <std::size_t N>
 vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device, const std::uint32_t (&words)[N]) {
-  return vk::raii::ShaderModule(device,
-                                vk::ShaderModuleCreateInfo{.codeSize = sizeof words, .pCode = words});
+  return vk::raii::ShaderModule(device, vk::ShaderModuleCreateInfo{.codeSize = sizeof words, .pCode = words});
 }
 
 vk::raii::ShaderModule VertexShader(const vk::raii::Device& device, Shading shading, bool instanced) {
   switch (shading) {
     case Shading::kFlat:
-      return instanced ? CreateShaderModule(device, lit_flat_instanced_vert_spv) : CreateShaderModule(device, lit_flat_vert_spv);
+      return instanced ? CreateShaderModule(device, lit_flat_instanced_vert_spv)
+                       : CreateShaderModule(device, lit_flat_vert_spv);
     case Shading::kGouraud:
       return instanced ? CreateShaderModule(device, lit_gouraud_instanced_vert_spv)
                        : CreateShaderModule(device, lit_gouraud_vert_spv);
-    case Shading::kUnlit:
-      break;
+    case Shading::kUnlit: break;
   }
-  return instanced ? CreateShaderModule(device, triangle_instanced_vert_spv) : CreateShaderModule(device, triangle_vert_spv);
+  return instanced ? CreateShaderModule(device, triangle_instanced_vert_spv)
+                   : CreateShaderModule(device, triangle_vert_spv);
 }
 
 vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading shading) {
   switch (shading) {
-    case Shading::kFlat:
-      return CreateShaderModule(device, lit_flat_frag_spv);
-    case Shading::kGouraud:
-      return CreateShaderModule(device, lit_gouraud_frag_spv);
-    case Shading::kUnlit:
-      break;
+    case Shading::kFlat: return CreateShaderModule(device, lit_flat_frag_spv);
+    case Shading::kGouraud: return CreateShaderModule(device, lit_gouraud_frag_spv);
+    case Shading::kUnlit: break;
   }
   return CreateShaderModule(device, triangle_frag_spv);
 }
@@ -182,10 +177,11 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   // dynamic offset, one range of kLitInstancesPerRange draws at a time (light_buffers.hpp).
   std::array<vk::DescriptorSetLayoutBinding, 3> lit_bindings{};
   for (std::uint32_t b = 0; b < lit_bindings.size(); ++b) {
-    lit_bindings[b] = {.binding = b,
-                       .descriptorType = b == 1 ? vk::DescriptorType::eStorageBufferDynamic : vk::DescriptorType::eStorageBuffer,
-                       .descriptorCount = 1,
-                       .stageFlags = vk::ShaderStageFlagBits::eVertex};
+    lit_bindings[b] = {
+        .binding = b,
+        .descriptorType = b == 1 ? vk::DescriptorType::eStorageBufferDynamic : vk::DescriptorType::eStorageBuffer,
+        .descriptorCount = 1,
+        .stageFlags = vk::ShaderStageFlagBits::eVertex};
   }
   lit_set_layout_ = vk::raii::DescriptorSetLayout(
       device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = lit_bindings.size(), .pBindings = lit_bindings.data()});
@@ -194,8 +190,11 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
 
 const vk::raii::Pipeline& Pipeline::pipeline(Shading shading, FSource source, bool reversed_z, bool wireframe) {
   if (shading != Shading::kUnlit && wireframe) throw std::logic_error("wireframe edges are not lit");
-  const std::size_t index = ((static_cast<std::size_t>(shading) * 2 + (source == FSource::kInstanceAttribute ? 1 : 0)) * 2 +
-                             (reversed_z ? 1 : 0)) * 2 + (wireframe ? 1 : 0);
+  const std::size_t index =
+      ((static_cast<std::size_t>(shading) * 2 + (source == FSource::kInstanceAttribute ? 1 : 0)) * 2 +
+       (reversed_z ? 1 : 0)) *
+          2 +
+      (wireframe ? 1 : 0);
   vk::raii::Pipeline& slot = pipelines_[index];
   if (!*slot) slot = Create(shading, source, reversed_z, wireframe);
   return slot;
@@ -208,8 +207,7 @@ vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool revers
   const vk::raii::ShaderModule vertex = VertexShader(device, shading, instanced);
   const vk::raii::ShaderModule fragment = FragmentShader(device, shading);
   const std::array stages = {
-      vk::PipelineShaderStageCreateInfo{
-          .stage = vk::ShaderStageFlagBits::eVertex, .module = *vertex, .pName = "main"},
+      vk::PipelineShaderStageCreateInfo{.stage = vk::ShaderStageFlagBits::eVertex, .module = *vertex, .pName = "main"},
       vk::PipelineShaderStageCreateInfo{
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
@@ -221,8 +219,7 @@ vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool revers
       .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(input.attributes.size()),
       .pVertexAttributeDescriptions = input.attributes.data(),
   };
-  const vk::PipelineInputAssemblyStateCreateInfo input_assembly{
-      .topology = vk::PrimitiveTopology::eTriangleList};
+  const vk::PipelineInputAssemblyStateCreateInfo input_assembly{.topology = vk::PrimitiveTopology::eTriangleList};
   // Viewport and scissor are dynamic so one pipeline serves every image size.
   const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   const vk::PipelineRasterizationStateCreateInfo rasterization{
@@ -234,15 +231,13 @@ vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool revers
       .depthBiasEnable = VK_FALSE,
       .lineWidth = 1.0f,
   };
-  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples =
-                                                               vk::SampleCountFlagBits::e1};
+  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
   const vk::PipelineColorBlendAttachmentState blend_attachment{
       .blendEnable = VK_FALSE,
       .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
                         vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA,
   };
-  const vk::PipelineColorBlendStateCreateInfo colour_blend{.attachmentCount = 1,
-                                                           .pAttachments = &blend_attachment};
+  const vk::PipelineColorBlendStateCreateInfo colour_blend{.attachmentCount = 1, .pAttachments = &blend_attachment};
   const std::array dynamic_states = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = dynamic_states.size(),
                                                    .pDynamicStates = dynamic_states.data()};

@@ -14,8 +14,7 @@
 
 namespace twinraster::gpu {
 
-constexpr vk::Format kColourFormat =
-    vk::Format::eR8G8B8A8Unorm;  // UNORM: colours reach the PNG unchanged
+constexpr vk::Format kColourFormat = vk::Format::eR8G8B8A8Unorm;  // UNORM: colours reach the PNG unchanged
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 
 // The push-constant block of shaders/triangle.vert, byte for byte (std430: 64).

@@ -16,8 +16,7 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 // The debug messenger's callback: keep the message for ValidationMessages().
 VKAPI_ATTR VkBool32 VKAPI_CALL StoreMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                             VkDebugUtilsMessageTypeFlagsEXT types,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                            void* user_data) {
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data) {
   // An exception must not unwind through the layer's C code; a lost message is the lesser harm.
   try {
     auto* messages = static_cast<std::vector<std::string>*>(user_data);
@@ -31,15 +30,13 @@ VKAPI_ATTR VkBool32 VKAPI_CALL StoreMessage(VkDebugUtilsMessageSeverityFlagBitsE
 
 bool HasLayer(const vk::raii::Context& context, std::string_view name) {
   const auto layers = context.enumerateInstanceLayerProperties();
-  return std::any_of(layers.begin(), layers.end(), [&](const vk::LayerProperties& layer) {
-    return std::string_view(layer.layerName) == name;
-  });
+  return std::any_of(layers.begin(), layers.end(),
+                     [&](const vk::LayerProperties& layer) { return std::string_view(layer.layerName) == name; });
 }
 
 bool HasExtension(const std::vector<vk::ExtensionProperties>& extensions, std::string_view name) {
-  return std::any_of(extensions.begin(), extensions.end(), [&](const vk::ExtensionProperties& e) {
-    return std::string_view(e.extensionName) == name;
-  });
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const vk::ExtensionProperties& e) { return std::string_view(e.extensionName) == name; });
 }
 
 bool ContainsIgnoringCase(std::string_view haystack, std::string_view needle) {
@@ -70,8 +67,8 @@ void CheckValidationLayer(const vk::raii::Context& context) {
 // Warnings and errors of every type, stored into `messages` by StoreMessage.
 vk::DebugUtilsMessengerCreateInfoEXT MessengerInfo(std::vector<std::string>* messages) {
   vk::DebugUtilsMessengerCreateInfoEXT info{
-      .messageSeverity = vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning |
-                         vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
+      .messageSeverity =
+          vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning | vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
       .messageType = vk::DebugUtilsMessageTypeFlagBitsEXT::eGeneral |
                      vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation |
                      vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
@@ -228,8 +225,7 @@ void VulkanContext::CreateDevice() {
   queue_ = device_.getQueue(queue_family_, 0);
 }
 
-std::uint32_t VulkanContext::FindMemoryType(std::uint32_t type_bits,
-                                            vk::MemoryPropertyFlags required,
+std::uint32_t VulkanContext::FindMemoryType(std::uint32_t type_bits, vk::MemoryPropertyFlags required,
                                             vk::MemoryPropertyFlags preferred) const {
   std::optional<std::uint32_t> fallback;
   for (std::uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {

@@ -15,9 +15,7 @@ struct Image {
   Image(std::uint32_t w, std::uint32_t h) : width(w), height(h), rgba(std::size_t{w} * h * 4, 0) {}
 
   std::uint8_t* pixel(std::uint32_t x, std::uint32_t y) { return &rgba[(std::size_t{y} * width + x) * 4]; }
-  const std::uint8_t* pixel(std::uint32_t x, std::uint32_t y) const {
-    return &rgba[(std::size_t{y} * width + x) * 4];
-  }
+  const std::uint8_t* pixel(std::uint32_t x, std::uint32_t y) const { return &rgba[(std::size_t{y} * width + x) * 4]; }
 };
 
 }  // namespace twinraster

@@ -18,8 +18,8 @@ namespace twinraster {
 namespace {
 
 void AppendBigEndian(std::string& out, std::uint32_t value) {
-  const char bytes[4] = {static_cast<char>(value >> 24), static_cast<char>(value >> 16),
-                         static_cast<char>(value >> 8), static_cast<char>(value)};
+  const char bytes[4] = {static_cast<char>(value >> 24), static_cast<char>(value >> 16), static_cast<char>(value >> 8),
+                         static_cast<char>(value)};
   out.append(bytes, 4);
 }
 
@@ -84,7 +84,8 @@ std::string TextChunks(const PngNotes& notes) {
       throw std::invalid_argument("PNG note key \"" + key + "\" is not 1-" + std::to_string(kMaxKey) +
                                   " printable Latin-1 characters without leading, trailing or double spaces");
     }
-    if (value.find('\0') != std::string::npos) throw std::invalid_argument("PNG note \"" + key + "\" has a NUL in its value");
+    if (value.find('\0') != std::string::npos)
+      throw std::invalid_argument("PNG note \"" + key + "\" has a NUL in its value");
     const std::string data = key + '\0' + value;
     AppendChunk(chunks, "tEXt", reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
   }
@@ -99,7 +100,8 @@ struct CompressorDeleter {
 
 std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   if (level < 0 || level > kPngSmallest) {
-    throw std::invalid_argument("PNG level " + std::to_string(level) + " is outside 0.." + std::to_string(kPngSmallest));
+    throw std::invalid_argument("PNG level " + std::to_string(level) + " is outside 0.." +
+                                std::to_string(kPngSmallest));
   }
   if (image.width == 0 || image.height == 0 || image.rgba.size() != std::size_t{image.width} * image.height * 4) {
     throw std::invalid_argument("cannot encode an empty or malformed image as PNG");
@@ -109,7 +111,8 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
   if (!compressor) throw std::bad_alloc();
   std::vector<std::uint8_t> zlib(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
-  const std::size_t zlib_size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
+  const std::size_t zlib_size =
+      libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
   if (zlib_size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
 
   std::string png(png_format::kSignature);

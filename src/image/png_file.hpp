@@ -31,7 +31,8 @@ inline constexpr int kPngSmallest = 12;
 // characters. Writing an invalid note throws std::invalid_argument.
 using PngNotes = std::vector<std::pair<std::string, std::string>>;
 
-std::string EncodePng(const Image& image, int level = kPngFastest, const PngNotes& notes = {});  // the bytes of a PNG file
+std::string EncodePng(const Image& image, int level = kPngFastest,
+                      const PngNotes& notes = {});  // the bytes of a PNG file
 StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,
                     const PngNotes& notes = {});
 void WritePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,

@@ -2,9 +2,8 @@
 // libspng, which checks every chunk's CRC and the zlib stream's Adler-32 and has limits. Nothing is
 // decoded before the declared size passes kMaxPngSide and the caller's check; the only large
 // allocation is the RGBA image itself; a file is streamed, never read whole.
-#include "image/png_file.hpp"
-
 #include "image/png_bytes.hpp"
+#include "image/png_file.hpp"
 
 #include <spng.h>
 #include <zlib.h>
@@ -45,22 +44,19 @@ using Source = std::function<int(spng_ctx*)>;
 std::string Problem(int error) {
   switch (error) {
     case SPNG_IO_EOF:
-    case SPNG_EIO:
-      return "the file ends before the PNG does (truncated)";
-    case SPNG_IO_ERROR:
-      return "a read error";
-    case SPNG_ESIGNATURE:
-      return "not a PNG file (its first 8 bytes are not the PNG signature)";
+    case SPNG_EIO: return "the file ends before the PNG does (truncated)";
+    case SPNG_IO_ERROR: return "a read error";
+    case SPNG_ESIGNATURE: return "not a PNG file (its first 8 bytes are not the PNG signature)";
     case SPNG_EUSER_WIDTH:
     case SPNG_EUSER_HEIGHT:
       return "it declares a side over " + std::to_string(kMaxPngSide) + " pixels, the most twinraster reads";
-    case SPNG_EMEM:
-      return "out of memory";
+    case SPNG_EMEM: return "out of memory";
     case SPNG_ECHUNK_LIMITS:
       return "an ancillary chunk holds more than twinraster keeps (1 MiB for one, 8 MiB in all, once inflated)";
     default: {
       const char* text = spng_strerror(error);
-      return std::string("corrupt: ") + (text != nullptr && *text != '\0' ? text : "libspng error " + std::to_string(error));
+      return std::string("corrupt: ") +
+             (text != nullptr && *text != '\0' ? text : "libspng error " + std::to_string(error));
     }
   }
 }
@@ -112,12 +108,20 @@ struct Header {
 // The bytes the image data must inflate to: each row's filter byte and samples, for the whole
 // image or for each of Adam7's passes (PNG spec 7.2, 8.2). 0 for a header libspng will refuse.
 std::uint64_t FilteredSize(const Header& h) {
-  const unsigned channels = h.colour == 0 ? 1 : h.colour == 2 ? 3 : h.colour == 3 ? 1 : h.colour == 4 ? 2 : h.colour == 6 ? 4 : 0;
+  const unsigned channels = h.colour == 0   ? 1
+                            : h.colour == 2 ? 3
+                            : h.colour == 3 ? 1
+                            : h.colour == 4 ? 2
+                            : h.colour == 6 ? 4
+                                            : 0;
   const std::uint64_t bits = std::uint64_t{channels} * h.depth;
-  const auto rows = [&](std::uint64_t width, std::uint64_t height) { return width == 0 ? 0 : height * (1 + (width * bits + 7) / 8); };
+  const auto rows = [&](std::uint64_t width, std::uint64_t height) {
+    return width == 0 ? 0 : height * (1 + (width * bits + 7) / 8);
+  };
   if (h.interlace == 0) return rows(h.width, h.height);
   std::uint64_t size = 0;
-  for (int p = 0; p < 7; ++p) size += rows(PassSize(h.width, kPassX0[p], kPassDx[p]), PassSize(h.height, kPassY0[p], kPassDy[p]));
+  for (int p = 0; p < 7; ++p)
+    size += rows(PassSize(h.width, kPassX0[p], kPassDx[p]), PassSize(h.height, kPassY0[p], kPassDy[p]));
   return size;
 }
 
@@ -157,15 +161,18 @@ class ImageDataCheck {
       } else if (result == Z_NEED_DICT) {
         Refuse(name_, "corrupt: the image data's zlib stream asks for a preset dictionary");
       } else if (result != Z_OK) {
-        Refuse(name_, std::string("corrupt: the image data's zlib stream: ") + (z_.msg != nullptr ? z_.msg : "error " + std::to_string(result)));
+        Refuse(name_, std::string("corrupt: the image data's zlib stream: ") +
+                          (z_.msg != nullptr ? z_.msg : "error " + std::to_string(result)));
       }
     }
   }
 
   void Finish() const {
     if (!ended_) Refuse(name_, "the image data ends before its zlib stream does (truncated)");
-    if (trailing_ > 0) Refuse(name_, "corrupt: " + std::to_string(trailing_) + " bytes after the end of the image data's zlib stream");
-    if (inflated_ != expected_) Refuse(name_, "corrupt: the image data inflates to " + std::to_string(inflated_) + " bytes, not the " + Needs());
+    if (trailing_ > 0)
+      Refuse(name_, "corrupt: " + std::to_string(trailing_) + " bytes after the end of the image data's zlib stream");
+    if (inflated_ != expected_)
+      Refuse(name_, "corrupt: the image data inflates to " + std::to_string(inflated_) + " bytes, not the " + Needs());
   }
 
  private:
@@ -191,8 +198,10 @@ void CheckStructure(std::istream& in, const std::string& name, const PngSizeChec
   bool have_header = false;
   std::vector<char> piece(std::size_t{1} << 16);
   while (in.read(header, 8)) {
-    const bool letters = std::all_of(header + 4, header + 8, [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); });
-    if (!letters) Refuse(name, "corrupt: a chunk type that is not four ASCII letters (bytes " + Hex(header + 4, 4) + ")");
+    const bool letters =
+        std::all_of(header + 4, header + 8, [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); });
+    if (!letters)
+      Refuse(name, "corrupt: a chunk type that is not four ASCII letters (bytes " + Hex(header + 4, 4) + ")");
     const std::string_view type(header + 4, 4);
     std::uint32_t length = png_format::BigEndian(header);
     if (type == "IHDR" && !have_header && length == 13) {
@@ -239,7 +248,8 @@ void CheckPaletteIndices(const Source& source, const std::string& name, const sp
   std::size_t row_bytes = 0;
   if (const int e = spng_decoded_image_size(ctx.get(), SPNG_FMT_PNG, &row_bytes)) Refuse(name, Problem(e));
   row_bytes /= ihdr.height;
-  if (const int e = spng_decode_image(ctx.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_DECODE_PROGRESSIVE)) Refuse(name, Problem(e));
+  if (const int e = spng_decode_image(ctx.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_DECODE_PROGRESSIVE))
+    Refuse(name, Problem(e));
   std::vector<std::uint8_t> scanline(row_bytes);
   const unsigned bits = ihdr.bit_depth, per_byte = 8 / bits, mask = (1u << bits) - 1;
   for (;;) {
@@ -250,7 +260,8 @@ void CheckPaletteIndices(const Source& source, const std::string& name, const sp
     }
     const int e = spng_decode_scanline(ctx.get(), scanline.data(), scanline.size());
     if (e != 0 && e != SPNG_EOI) Refuse(name, Problem(e));
-    const std::uint32_t width = std::min<std::uint32_t>(ScanlineWidth(ihdr, row.pass), static_cast<std::uint32_t>(scanline.size() * per_byte));
+    const std::uint32_t width =
+        std::min<std::uint32_t>(ScanlineWidth(ihdr, row.pass), static_cast<std::uint32_t>(scanline.size() * per_byte));
     for (std::uint32_t x = 0; x < width; ++x) {
       const unsigned shift = 8 - bits * (x % per_byte + 1);
       const unsigned index = (scanline[x / per_byte] >> shift) & mask;
@@ -274,9 +285,11 @@ Image Decode(std::istream& chunks, const Source& source, const std::string& name
     image = Image(ihdr.width, ihdr.height);
   } catch (const std::bad_alloc&) {
     Refuse(name, "its " + std::to_string(ihdr.width) + " x " + std::to_string(ihdr.height) + " pixels need " +
-                     std::to_string(std::size_t{ihdr.width} * ihdr.height * 4 >> 20) + " MiB, more than this machine gave");
+                     std::to_string(std::size_t{ihdr.width} * ihdr.height * 4 >> 20) +
+                     " MiB, more than this machine gave");
   }
-  if (const int e = spng_decode_image(ctx.get(), image.rgba.data(), image.rgba.size(), SPNG_FMT_RGBA8, SPNG_DECODE_TRNS)) {
+  if (const int e =
+          spng_decode_image(ctx.get(), image.rgba.data(), image.rgba.size(), SPNG_FMT_RGBA8, SPNG_DECODE_TRNS)) {
     Refuse(name, Problem(e));
   }
   // The chunks after the pixels, to IEND: a cut-off or corrupt end is a corrupt file too.
@@ -295,7 +308,8 @@ Image ReadPng(const std::filesystem::path& file, const PngSizeCheck& check) {
   const std::unique_ptr<std::FILE, FileClose> in(std::fopen(file.c_str(), "rb"));
   std::ifstream chunks(file, std::ios::binary);
   std::error_code error;
-  if (!in || !chunks || std::filesystem::is_directory(file, error)) throw FileError(file.string() + ": cannot open for reading");
+  if (!in || !chunks || std::filesystem::is_directory(file, error))
+    throw FileError(file.string() + ": cannot open for reading");
   return Decode(
       chunks,
       [&](spng_ctx* ctx) {
@@ -307,7 +321,8 @@ Image ReadPng(const std::filesystem::path& file, const PngSizeCheck& check) {
 
 Image DecodePng(std::string_view bytes, const std::string& name, const PngSizeCheck& check) {
   std::istringstream chunks{std::string(bytes)};
-  return Decode(chunks, [&](spng_ctx* ctx) { return spng_set_png_buffer(ctx, bytes.data(), bytes.size()); }, name, check);
+  return Decode(
+      chunks, [&](spng_ctx* ctx) { return spng_set_png_buffer(ctx, bytes.data(), bytes.size()); }, name, check);
 }
 
 }  // namespace twinraster

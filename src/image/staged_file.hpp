@@ -17,7 +17,7 @@ class FileError : public std::runtime_error {
 class StagedFile {
  public:
   StagedFile(std::filesystem::path target, std::string_view bytes);  // throws FileError
-  ~StagedFile();  // removes the temporary unless committed
+  ~StagedFile();                                                     // removes the temporary unless committed
   StagedFile(StagedFile&& other) noexcept;
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
@@ -27,6 +27,5 @@ class StagedFile {
  private:
   std::filesystem::path target_, temporary_;
 };
-
 
 }  // namespace twinraster

@@ -38,7 +38,8 @@ Image Thumbnail(const Image& image, std::uint32_t max_side, ThumbnailFilter filt
       const std::uint32_t count = (y1 - y0) * (x1 - x0);
       std::uint8_t* out = thumb.pixel(tx, ty);
       for (int c = 0; c < 4; ++c) {
-        out[c] = filter == ThumbnailFilter::kMean ? static_cast<std::uint8_t>((total[c] + count / 2) / count) : most_saturated[c];
+        out[c] = filter == ThumbnailFilter::kMean ? static_cast<std::uint8_t>((total[c] + count / 2) / count)
+                                                  : most_saturated[c];
       }
     }
   }

@@ -40,9 +40,12 @@ void Thumbnails(std::ostringstream& row, const run::RunRecord& r, const std::fil
 
 std::string DeviceText(const run::RunRecord& r) {
   std::string text;
-  if (const run::BackendRecord* gpu = r.Find(run::Backend::kGpu)) text = gpu->detail + (gpu->driver.empty() ? "" : " (" + gpu->driver + ")");
-  if (r.twin) text += (text.empty() ? "" : "; ") + std::string("twin: ") + r.twin->text;
-  else if (const run::BackendRecord* cpu = r.Find(run::Backend::kCpu)) text += (text.empty() ? "" : "; ") + cpu->detail;
+  if (const run::BackendRecord* gpu = r.Find(run::Backend::kGpu))
+    text = gpu->detail + (gpu->driver.empty() ? "" : " (" + gpu->driver + ")");
+  if (r.twin)
+    text += (text.empty() ? "" : "; ") + std::string("twin: ") + r.twin->text;
+  else if (const run::BackendRecord* cpu = r.Find(run::Backend::kCpu))
+    text += (text.empty() ? "" : "; ") + cpu->detail;
   return text;
 }
 
@@ -99,21 +102,22 @@ std::filesystem::path ThumbnailPath(const run::RunRecord& r, ImageKind kind) {
 std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& records) {
   std::vector<const run::RunRecord*> order;
   for (const run::RunRecord& r : records) order.push_back(&r);
-  std::stable_sort(order.begin(), order.end(),
-                   [](const run::RunRecord* a, const run::RunRecord* b) { return Rank(a->verdict) < Rank(b->verdict); });
+  std::stable_sort(order.begin(), order.end(), [](const run::RunRecord* a, const run::RunRecord* b) {
+    return Rank(a->verdict) < Rank(b->verdict);
+  });
   return order;
 }
 
-std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir, double total_ms) {
+std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir,
+                          double total_ms) {
   const BatchSummary s = Summarize(records, total_ms);
   std::ostringstream page;
   page << PageStart("twinraster render: " + std::to_string(s.scenes) + " scenes") << "<h1>twinraster render</h1>\n";
   page << "<table class=\"summary\" id=\"summary\"><tr>";
   const std::pair<const char*, std::size_t> counts[] = {{"scenes", s.scenes},       {"identical", s.identical},
                                                         {"verified", s.verified},   {"inconclusive", s.inconclusive},
-                                                        {"differing", s.differing},
-                                                        {"crashed", s.crashed},     {"errors", s.errors},
-                                                        {"drawn only", s.rendered}};
+                                                        {"differing", s.differing}, {"crashed", s.crashed},
+                                                        {"errors", s.errors},       {"drawn only", s.rendered}};
   for (const auto& [name, count] : counts) page << "<th class=\"n\">" << name << "</th>";
   page << "<th class=\"n\">total time</th></tr>\n<tr>";
   for (const auto& [name, count] : counts) page << "<td class=\"n\" data-count=\"" << name << "\">" << count << "</td>";
@@ -122,9 +126,10 @@ std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std:
           "was judged) and every pixel is one Vulkan allows. inconclusive: no pixel is wrong, but too few are certain "
           "to tell a broken image (docs/verify.md). differing: a pixel the verifier rejects, or a difference "
           "where the twin copies this driver exactly. Thumbnails link to the full PNGs.</p>\n";
-  page << "<table id=\"scenes\">\n<thead><tr><th>scene</th><th>GPU</th><th>twin</th><th>difference</th><th>verification "
-          "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device, rules "
-          "and times</th></tr></thead>\n<tbody>\n";
+  page
+      << "<table id=\"scenes\">\n<thead><tr><th>scene</th><th>GPU</th><th>twin</th><th>difference</th><th>verification "
+         "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device, rules "
+         "and times</th></tr></thead>\n<tbody>\n";
   for (const run::RunRecord* r : PageOrder(records)) {
     const run::Verdict verdict = r->verdict;
     std::ostringstream row;
@@ -136,12 +141,14 @@ std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std:
     } else {
       Thumbnails(row, *r, dir);
     }
-    row << "<td class=\"reason verdict-" << run::VerdictName(verdict) << "\"><b>" << run::VerdictName(verdict) << "</b><br>"
-        << Escape(VerdictReason(*r)) << "</td>";
-    row << "<td class=\"n differing\">" << (r->comparison ? std::to_string(r->comparison->differing_pixels) : "-") << "</td>";
-    row << "<td class=\"n violations\">" << (r->verification ? std::to_string(r->verification->violations) : "-") << "</td>";
-    row << "<td class=\"details\">" << Escape(DeviceText(*r)) << "<br>" << (verdict == run::Verdict::kError ? "" : TimesText(*r))
-        << "</td></tr>\n";
+    row << "<td class=\"reason verdict-" << run::VerdictName(verdict) << "\"><b>" << run::VerdictName(verdict)
+        << "</b><br>" << Escape(VerdictReason(*r)) << "</td>";
+    row << "<td class=\"n differing\">" << (r->comparison ? std::to_string(r->comparison->differing_pixels) : "-")
+        << "</td>";
+    row << "<td class=\"n violations\">" << (r->verification ? std::to_string(r->verification->violations) : "-")
+        << "</td>";
+    row << "<td class=\"details\">" << Escape(DeviceText(*r)) << "<br>"
+        << (verdict == run::Verdict::kError ? "" : TimesText(*r)) << "</td></tr>\n";
     page << row.str();
   }
   page << "</tbody></table>\n" << kPageEnd;

@@ -14,7 +14,8 @@
 namespace twinraster::report {
 
 struct BatchSummary {
-  std::size_t scenes = 0, identical = 0, verified = 0, inconclusive = 0, differing = 0, crashed = 0, errors = 0, rendered = 0;
+  std::size_t scenes = 0, identical = 0, verified = 0, inconclusive = 0, differing = 0, crashed = 0, errors = 0,
+              rendered = 0;
   double total_ms = 0;  // the whole batch, wall clock
 };
 BatchSummary Summarize(const std::vector<run::RunRecord>& records, double total_ms);
@@ -36,6 +37,7 @@ std::filesystem::path ThumbnailPath(const run::RunRecord& record, ImageKind kind
 std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& records);
 
 // The page, for `dir`/index.html: links to images are relative to `dir`.
-std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir, double total_ms);
+std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir,
+                          double total_ms);
 
 }  // namespace twinraster::report

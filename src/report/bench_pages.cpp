@@ -12,9 +12,9 @@ namespace {
 
 // One colour per row kind, the same on every plot.
 const std::map<std::string, std::string>& MethodColours() {
-  static const std::map<std::string, std::string> colours = {
-      {"compose-f64", "#1f77b4"}, {"compose-f32", "#d62728"}, {"steps-f32", "#ff7f0e"},
-      {"camera-relative", "#2ca02c"}, {"cpu-twin", "#9467bd"}, {"lavapipe", "#8c564b"}};
+  static const std::map<std::string, std::string> colours = {{"compose-f64", "#1f77b4"}, {"compose-f32", "#d62728"},
+                                                             {"steps-f32", "#ff7f0e"},   {"camera-relative", "#2ca02c"},
+                                                             {"cpu-twin", "#9467bd"},    {"lavapipe", "#8c564b"}};
   return colours;
 }
 
@@ -25,7 +25,8 @@ std::string ColourOf(const std::string& method) {
 
 // A row's name in a series: frame rows differ by thread count.
 std::string SeriesName(const BenchRow& r) {
-  return r.vertex_ms >= 0 ? r.method : r.method + ", " + std::to_string(r.threads) + (r.threads == 1 ? " thread" : " threads");
+  return r.vertex_ms >= 0 ? r.method
+                          : r.method + ", " + std::to_string(r.threads) + (r.threads == 1 ? " thread" : " threads");
 }
 
 // An error of exactly 0 has no place on a log axis: it is drawn at the floor, marked "≤".
@@ -40,7 +41,9 @@ PlotSeries& SeriesFor(std::vector<PlotSeries>& series, const std::string& name, 
   return series.back();
 }
 
-std::string Section(const std::string& title, const std::string& body) { return "<h2>" + Escape(title) + "</h2>\n" + body; }
+std::string Section(const std::string& title, const std::string& body) {
+  return "<h2>" + Escape(title) + "</h2>\n" + body;
+}
 
 }  // namespace
 
@@ -65,11 +68,12 @@ std::string BenchPageHtml(const BenchResult& result, const std::string& table) {
   std::ostringstream page;
   page << PageStart("twinraster bench") << "<h1>twinraster bench</h1>\n<p>" << Escape(result.machine) << "; medians of "
        << result.runs << " run(s), " << Number(result.seconds, 3) << " s in all.</p>\n";
-  page << Section("Speed against error",
-                  "<p>Each way of computing the chain (compose-f64: F composed in double and rounded once; compose-f32: "
-                  "composed in float; steps-f32: the chapter's steps one at a time in float; camera-relative: the camera's "
-                  "translation taken out first), on every scene: time per million vertices against the largest distance "
-                  "from the truth's vertex positions. Lower left is better; an error of 0 sits on the bottom line.</p>\n");
+  page << Section(
+      "Speed against error",
+      "<p>Each way of computing the chain (compose-f64: F composed in double and rounded once; compose-f32: "
+      "composed in float; steps-f32: the chapter's steps one at a time in float; camera-relative: the camera's "
+      "translation taken out first), on every scene: time per million vertices against the largest distance "
+      "from the truth's vertex positions. Lower left is better; an error of 0 sits on the bottom line.</p>\n");
   page << "<figure id=\"vertex-chart\">" << BenchChartSvg(result) << "</figure>\n";
   page << Section("Whole frames, scene by scene",
                   "<p>Per scene: each row's whole-frame time against the pixels where its image differs from the "
@@ -126,14 +130,18 @@ std::string ScaleStagesSvg(const ScaleResult& result) {
     const char* colour;
     double ScaleRow::*value;
   };
-  const Stage stages[] = {{"load", "#1f77b4", &ScaleRow::load_ms},          {"host chain", "#ff7f0e", &ScaleRow::chain_ms},
-                          {"gpu set-up", "#2ca02c", &ScaleRow::gpu_setup_ms}, {"gpu draw", "#8c564b", &ScaleRow::gpu_draw_ms},
-                          {"twin set-up", "#7f7f7f", &ScaleRow::twin_setup_ms}, {"twin draw", "#9467bd", &ScaleRow::twin_draw_ms},
+  const Stage stages[] = {{"load", "#1f77b4", &ScaleRow::load_ms},
+                          {"host chain", "#ff7f0e", &ScaleRow::chain_ms},
+                          {"gpu set-up", "#2ca02c", &ScaleRow::gpu_setup_ms},
+                          {"gpu draw", "#8c564b", &ScaleRow::gpu_draw_ms},
+                          {"twin set-up", "#7f7f7f", &ScaleRow::twin_setup_ms},
+                          {"twin draw", "#9467bd", &ScaleRow::twin_draw_ms},
                           {"png", "#bcbd22", &ScaleRow::png_ms}};
   for (const Stage& stage : stages) {
     PlotSeries s{stage.name, stage.colour, {}, true};
     for (const ScaleRow& r : result.rows) {
-      s.points.push_back({static_cast<double>(r.instances), r.*stage.value, std::to_string(r.instances) + " instances"});
+      s.points.push_back(
+          {static_cast<double>(r.instances), r.*stage.value, std::to_string(r.instances) + " instances"});
     }
     plot.series.push_back(std::move(s));
   }

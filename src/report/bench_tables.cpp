@@ -30,7 +30,8 @@ std::string Sci(double x) {
   return buffer;
 }
 
-const BenchRow* Find(const BenchResult& result, const std::string& scene, const std::string& method, unsigned threads = 0) {
+const BenchRow* Find(const BenchResult& result, const std::string& scene, const std::string& method,
+                     unsigned threads = 0) {
   for (const BenchRow& r : result.rows)
     if (r.scene == scene && r.method == method && (threads == 0 || r.threads == threads)) return &r;
   return nullptr;
@@ -73,7 +74,8 @@ std::vector<std::string> Scenes(const BenchResult& result) {
 std::vector<unsigned> ThreadCounts(const BenchResult& result) {
   std::vector<unsigned> counts;
   for (const BenchRow& r : result.rows)
-    if (r.method == "lavapipe" && std::find(counts.begin(), counts.end(), r.threads) == counts.end()) counts.push_back(r.threads);
+    if (r.method == "lavapipe" && std::find(counts.begin(), counts.end(), r.threads) == counts.end())
+      counts.push_back(r.threads);
   return counts;
 }
 
@@ -91,7 +93,8 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
     far[method] = number_or_null(r && r->vertex_error_px >= 0 ? std::optional(r->vertex_error_px) : std::nullopt);
   }
   for (const bool reversed : {false, true}) {
-    j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] = number_or_null(Onset(result, reversed).ratio);
+    j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] =
+        number_or_null(Onset(result, reversed).ratio);
   }
   const BenchRow* largest = Largest(result);
   Json& per_million = j["vertex_ms_per_million_vertices"] = Json::object();
@@ -126,13 +129,15 @@ std::string BenchSummary(const BenchResult& result) {
   for (VertexMethod m : kAllMethods) {
     const std::string method(MethodName(m));
     if (const BenchRow* r = Find(result, "hard/far-1e7", method))
-      out << "  " << method << ": " << Sci(r->vertex_error_px) << " px" << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
+      out << "  " << method << ": " << Sci(r->vertex_error_px) << " px"
+          << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
   }
   out << "Z-fighting onset (D32_SFLOAT, plates 0.02 apart at ~45 units; largest near/far that fights):\n";
   for (const bool reversed : {false, true}) {
     const ZFightOnset onset = Onset(result, reversed);
     out << "  " << (reversed ? "reversed Z: " : "standard Z: ")
-        << (onset.ratio ? "near/far = " + Sci(*onset.ratio) : "none down to near/far = " + Sci(onset.smallest_tried)) << "\n";
+        << (onset.ratio ? "near/far = " + Sci(*onset.ratio) : "none down to near/far = " + Sci(onset.smallest_tried))
+        << "\n";
   }
   if (const BenchRow* largest = Largest(result)) {
     out << "Vertex stage, ms per million vertices (" << largest->scene << ", " << largest->vertices << " vertices):\n";
@@ -172,9 +177,10 @@ std::string BenchTable(const BenchResult& result) {
   for (const BenchRow& r : result.rows) {
     const std::string colour =
         r.colour_error ? std::to_string(*r.colour_error) + " (" + std::to_string(r.colour_pixels) + ")" : "-";
-    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(), r.method.c_str(),
-                  r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(), Fixed(r.frame_ms, 2).c_str(),
-                  Sci(r.vertex_error_px).c_str(), static_cast<unsigned long long>(r.image_error_px),
+    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(),
+                  r.method.c_str(), r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(),
+                  Fixed(r.frame_ms, 2).c_str(), Sci(r.vertex_error_px).c_str(),
+                  static_cast<unsigned long long>(r.image_error_px),
                   r.z_fighting_px ? std::to_string(*r.z_fighting_px).c_str() : "-", colour.c_str());
     out << line;
   }
@@ -210,11 +216,13 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
   j["summary"] = BenchSummaryJson(result);
   j["rows"] = nlohmann::ordered_json::array();
   for (const BenchRow& r : result.rows) {
-    nlohmann::ordered_json row = {{"scene", r.scene},         {"method", r.method},       {"threads", r.threads},
-                                  {"width", r.width},         {"height", r.height},       {"vertices", r.vertices},
-                                  {"triangles", r.triangles}, {"frame_ms", r.frame_ms},   {"image_error_px", r.image_error_px}};
+    nlohmann::ordered_json row = {
+        {"scene", r.scene},         {"method", r.method},     {"threads", r.threads},
+        {"width", r.width},         {"height", r.height},     {"vertices", r.vertices},
+        {"triangles", r.triangles}, {"frame_ms", r.frame_ms}, {"image_error_px", r.image_error_px}};
     row["vertex_ms"] = r.vertex_ms < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_ms);
-    row["vertex_error_px"] = r.vertex_error_px < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_error_px);
+    row["vertex_error_px"] =
+        r.vertex_error_px < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.vertex_error_px);
     row["z_fighting_px"] = r.z_fighting_px ? nlohmann::ordered_json(*r.z_fighting_px) : nlohmann::ordered_json(nullptr);
     row["colour_error"] = r.colour_error ? nlohmann::ordered_json(*r.colour_error) : nlohmann::ordered_json(nullptr);
     row["colour_pixels"] = r.colour_error ? nlohmann::ordered_json(r.colour_pixels) : nlohmann::ordered_json(nullptr);

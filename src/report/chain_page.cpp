@@ -348,9 +348,10 @@ Panel LightPanel(const Trace& t) {
   p.marks.push_back({at, "V", kTraced});
   const std::optional<glm::dmat3>& normal_matrix = t.traced.normal_matrix;
   p.text = (normal_matrix ? Matrix("N = (M_Model's upper 3x3)⁻ᵀ", *normal_matrix) : std::string("N: none\n")) +
-           "n (model) = " + Vec(light.object_normal) + "\nN · n = " + Vec(light.world_normal) + "\nunit normal = " +
-           Vec(n) + "\n(M_Model · n would give " + Vec(light.wrong_normal) + ")\nambient = " + Num(light.ambient) +
-           "\n" + terms + "I = " + Num(light.intensity) + ", colour = " + Vec(light.colour) + "\n";
+           "n (model) = " + Vec(light.object_normal) + "\nN · n = " + Vec(light.world_normal) +
+           "\nunit normal = " + Vec(n) + "\n(M_Model · n would give " + Vec(light.wrong_normal) +
+           ")\nambient = " + Num(light.ambient) + "\n" + terms + "I = " + Num(light.intensity) +
+           ", colour = " + Vec(light.colour) + "\n";
   return p;
 }
 
@@ -388,8 +389,12 @@ std::string ChainPageHtml(const Explanation& e) {
       "instance " + std::to_string(traced.index) + " (model \"" + traced.model->name + "\")";
   const std::string vertex_name = "vertex " + std::to_string(v.index);
 
-  std::vector<Panel> panels = {ModelPanel(t, instance_name, vertex_name), WorldPanel(t, true), WorldPanel(t, false),
-                               CameraPanel(t), NdcPanel(t), CanvasPanel(t)};
+  std::vector<Panel> panels = {ModelPanel(t, instance_name, vertex_name),
+                               WorldPanel(t, true),
+                               WorldPanel(t, false),
+                               CameraPanel(t),
+                               NdcPanel(t),
+                               CanvasPanel(t)};
   if (v.light) panels.push_back(LightPanel(t));
   std::string page = PageHead(e, t, instance_name, vertex_name);
   for (const Panel& p : panels) page += Figure(p);

@@ -10,7 +10,8 @@ nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, con
   Json out;
   out["format"] = kCompareJsonFormat;
   for (const NamedImage* image : {&a, &b}) {
-    out[image == &a ? "a" : "b"] = {{"file", image->file}, {"width", image->image.width}, {"height", image->image.height}};
+    out[image == &a ? "a" : "b"] = {
+        {"file", image->file}, {"width", image->image.width}, {"height", image->image.height}};
   }
   out["same_size"] = c.same_size;
   // Pixels are compared only between images of one size.

@@ -38,11 +38,13 @@ std::string JUnitXml(const std::vector<run::RunRecord>& records, double total_ms
         << "\">\n";
     if (run::IsFailure(v)) {
       const char* element = v == run::Verdict::kDiffering ? "failure" : "error";
-      xml << "<" << element << " type=\"" << run::VerdictName(v) << "\" message=\"" << Escape(VerdictReason(r)) << "\"/>\n";
+      xml << "<" << element << " type=\"" << run::VerdictName(v) << "\" message=\"" << Escape(VerdictReason(r))
+          << "\"/>\n";
     }
     // Neither passed nor failed: JUnit's nearest word for a test that could not decide.
     if (run::IsInconclusive(v)) xml << "<skipped message=\"" << Escape(VerdictReason(r)) << "\"/>\n";
-    xml << "<system-out>" << Escape(v == run::Verdict::kError ? r.error + "\n" : RenderText(r, verify_asked)) << "</system-out>\n";
+    xml << "<system-out>" << Escape(v == run::Verdict::kError ? r.error + "\n" : RenderText(r, verify_asked))
+        << "</system-out>\n";
     xml << "</testcase>\n";
   }
   xml << "</testsuite>\n</testsuites>\n";

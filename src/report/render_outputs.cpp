@@ -62,14 +62,17 @@ std::string RenderText(const run::RunRecord& r, bool verify_asked) {
   std::ostringstream out;
   std::ostringstream head;
   head.precision(3);
-  head << std::fixed << r.scene << ": " << r.instances << (r.instances == 1 ? " instance, " : " instances, ") << r.triangles
-       << " triangles, " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
+  head << std::fixed << r.scene << ": " << r.instances << (r.instances == 1 ? " instance, " : " instances, ")
+       << r.triangles << " triangles, " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
   out << head.str() << "\n";
   for (const run::BackendRecord& b : r.backends) out << BackendText(b) << "\n";
   if (r.twin) out << "twin: " << r.twin->text << "\n";
   if (r.comparison) {
-    out << "gpu vs cpu: " << ComparisonText(r.width, r.height, *r.comparison) << (r.diff.empty() ? "" : ", diff in " + r.diff)
-        << (!r.comparison->Equal() && r.twin && !r.twin->exact ? " (the twin has no rules for this driver: not a verdict)" : "")
+    out << "gpu vs cpu: " << ComparisonText(r.width, r.height, *r.comparison)
+        << (r.diff.empty() ? "" : ", diff in " + r.diff)
+        << (!r.comparison->Equal() && r.twin && !r.twin->exact
+                ? " (the twin has no rules for this driver: not a verdict)"
+                : "")
         << "\n";
   } else if (r.backends.size() == 2) {
     out << "gpu vs cpu: not compared, there is no gpu image\n";
@@ -103,7 +106,8 @@ Json RenderJson(const run::RunRecord& r) {
   if (r.verification) {
     Json v;
     v["image"] = run::BackendName(*r.judged);
-    const Json verdict = VerificationJson(*r.verification, r.map.empty() ? std::nullopt : std::optional(r.map), r.verify_ms);
+    const Json verdict =
+        VerificationJson(*r.verification, r.map.empty() ? std::nullopt : std::optional(r.map), r.verify_ms);
     for (const auto& [key, value] : verdict.items()) v[key] = value;
     j["verify"] = v;
   } else {
@@ -114,8 +118,7 @@ Json RenderJson(const run::RunRecord& r) {
 
 std::string VerdictReason(const run::RunRecord& r) {
   switch (r.verdict) {
-    case run::Verdict::kError:
-      return r.error;
+    case run::Verdict::kError: return r.error;
     case run::Verdict::kCrashed:
       for (const run::BackendRecord& b : r.backends) {
         if (!b.Drawn()) return std::string(b.Name()) + " " + run::StatusName(b.status) + ": " + b.problem;
@@ -129,10 +132,8 @@ std::string VerdictReason(const run::RunRecord& r) {
         return std::string(run::BackendName(*r.judged)) + " image " + VerificationText(*r.verification);
       }
       return "the images differ in " + std::to_string(r.comparison->differing_pixels) + " px";
-    case run::Verdict::kIdentical:
-      return "0 differing pixels";
-    case run::Verdict::kRendered:
-      return "drawn";
+    case run::Verdict::kIdentical: return "0 differing pixels";
+    case run::Verdict::kRendered: return "drawn";
   }
   return "";
 }

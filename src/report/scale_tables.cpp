@@ -1,6 +1,5 @@
-#include "report/bench_tables.hpp"
-
 #include "gpu/draw_batches.hpp"
+#include "report/bench_tables.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,22 +33,27 @@ constexpr std::array<Stage, 9> kStages = {{
 
 std::string ScaleTable(const ScaleResult& result) {
   std::ostringstream s;
-  s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine << "\n";
+  s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine
+    << "\n";
   char line[256];
-  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s %8s |%8s  %s\n", "instances", "triangles",
-                "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw", "png", "verify", "peak MB",
-                "gpu == twin");
+  std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s %8s |%8s  %s\n", "instances",
+                "triangles", "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw",
+                "png", "verify", "peak MB", "gpu == twin");
   s << line;
   for (const ScaleRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f %8.1f |%8.0f  %s\n",
-                  r.instances, r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
+    std::snprintf(line, sizeof line,
+                  "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f %8.1f |%8.0f  %s\n", r.instances,
+                  r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
                   r.gpu_draw_ms, r.gpu_per_draw_ms, r.twin_setup_ms, r.twin_draw_ms, r.png_ms, r.verify_ms, r.peak_mib,
                   r.identical ? "yes" : "NO");
     s << line;
   }
   s << "(milliseconds; per-draw: lavapipe's set-up + draw with F pushed per draw, against gpu set-up + draw as a user\n"
-       " gets it, instanced from " << gpu::kInstancingThreshold << " draws of a mesh on; twin on " << (result.rows.empty() ? 0 : result.rows.front().threads)
-    << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after that size)\n";
+       " gets it, instanced from "
+    << gpu::kInstancingThreshold << " draws of a mesh on; twin on "
+    << (result.rows.empty() ? 0 : result.rows.front().threads)
+    << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after "
+       "that size)\n";
   return s.str();
 }
 

@@ -59,7 +59,8 @@ std::vector<std::pair<double, std::string>> Ticks(const Scale& s) {
     const double raw = (s.hi - s.lo) / 6;
     const double magnitude = std::pow(10, std::floor(std::log10(raw)));
     const double step = raw / magnitude < 2 ? 2 * magnitude : raw / magnitude < 5 ? 5 * magnitude : 10 * magnitude;
-    for (double v = std::ceil(s.lo / step) * step; v <= s.hi + 1e-9 * step; v += step) ticks.emplace_back(v, Number(v, 4));
+    for (double v = std::ceil(s.lo / step) * step; v <= s.hi + 1e-9 * step; v += step)
+      ticks.emplace_back(v, Number(v, 4));
   }
   return ticks;
 }
@@ -85,13 +86,14 @@ std::string PlotSvg(const Plot& plot) {
       << "\" font-family=\"sans-serif\" font-size=\"11\" role=\"img\" class=\"plot\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   if (!plot.title.empty()) {
-    svg << "<text x=\"" << left << "\" y=\"18\" font-size=\"13\" font-weight=\"bold\">" << Escape(plot.title) << "</text>\n";
+    svg << "<text x=\"" << left << "\" y=\"18\" font-size=\"13\" font-weight=\"bold\">" << Escape(plot.title)
+        << "</text>\n";
   }
   for (const auto& [v, label] : Ticks(sx)) {
     const double x = sx.from + (v - sx.lo) / (sx.hi - sx.lo) * (sx.to - sx.from);
-    svg << "<line x1=\"" << Number(x, 6) << "\" y1=\"" << top << "\" x2=\"" << Number(x, 6) << "\" y2=\"" << plot.height - bottom
-        << "\" stroke=\"#e2e2e2\"/><text x=\"" << Number(x, 6) << "\" y=\"" << plot.height - bottom + 14
-        << "\" text-anchor=\"middle\">" << Escape(label) << "</text>\n";
+    svg << "<line x1=\"" << Number(x, 6) << "\" y1=\"" << top << "\" x2=\"" << Number(x, 6) << "\" y2=\""
+        << plot.height - bottom << "\" stroke=\"#e2e2e2\"/><text x=\"" << Number(x, 6) << "\" y=\""
+        << plot.height - bottom + 14 << "\" text-anchor=\"middle\">" << Escape(label) << "</text>\n";
   }
   for (const auto& [v, label] : Ticks(sy)) {
     const double y = sy.from + (v - sy.lo) / (sy.hi - sy.lo) * (sy.to - sy.from);
@@ -99,8 +101,8 @@ std::string PlotSvg(const Plot& plot) {
         << "\" stroke=\"#e2e2e2\"/><text x=\"" << left - 5 << "\" y=\"" << Number(y + 4, 6) << "\" text-anchor=\"end\">"
         << Escape(label) << "</text>\n";
   }
-  svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\"" << plot.height - bottom - top
-      << "\" fill=\"none\" stroke=\"#999\"/>\n";
+  svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\""
+      << plot.height - bottom - top << "\" fill=\"none\" stroke=\"#999\"/>\n";
   svg << "<text x=\"" << (left + right) / 2 << "\" y=\"" << plot.height - 16 << "\" text-anchor=\"middle\">"
       << Escape(plot.x.label) << (plot.x.log ? " (log)" : "") << "</text>\n";
   const double mid = (top + plot.height - bottom) / 2;
@@ -108,8 +110,8 @@ std::string PlotSvg(const Plot& plot) {
       << (plot.y.log ? " (log)" : "") << "</text>\n";
   for (const ReferenceLine& r : plot.references) {
     svg << "<line x1=\"" << left << "\" y1=\"" << y_at(r.y) << "\" x2=\"" << right << "\" y2=\"" << y_at(r.y)
-        << "\" stroke=\"#777\" stroke-dasharray=\"4 3\"/><text x=\"" << right - 4 << "\" y=\"" << Number(sy.At(r.y) - 4, 6)
-        << "\" text-anchor=\"end\" fill=\"#555\">" << Escape(r.label) << "</text>\n";
+        << "\" stroke=\"#777\" stroke-dasharray=\"4 3\"/><text x=\"" << right - 4 << "\" y=\""
+        << Number(sy.At(r.y) - 4, 6) << "\" text-anchor=\"end\" fill=\"#555\">" << Escape(r.label) << "</text>\n";
   }
   double legend_y = top + 8;
   for (const PlotSeries& s : plot.series) {
@@ -121,14 +123,15 @@ std::string PlotSvg(const Plot& plot) {
       svg << "\"/>\n";
     }
     for (const PlotPoint& p : s.points) {
-      svg << "<circle class=\"point\" cx=\"" << x_at(p.x) << "\" cy=\"" << y_at(p.y) << "\" r=\"4\" fill-opacity=\"0.75\" fill=\""
-          << colour << "\" data-x=\"" << Number(p.x, 17) << "\" data-y=\"" << Number(p.y, 17) << "\"><title>"
+      svg << "<circle class=\"point\" cx=\"" << x_at(p.x) << "\" cy=\"" << y_at(p.y)
+          << "\" r=\"4\" fill-opacity=\"0.75\" fill=\"" << colour << "\" data-x=\"" << Number(p.x, 17) << "\" data-y=\""
+          << Number(p.y, 17) << "\"><title>"
           << Escape(s.name + (p.label.empty() ? "" : ", " + p.label) + ": " + plot.x.label + " " + Number(p.x) + ", " +
                     plot.y.label + " " + Number(p.y))
           << "</title></circle>\n";
     }
-    svg << "</g>\n<circle cx=\"" << right + 16 << "\" cy=\"" << legend_y << "\" r=\"5\" fill=\"" << colour << "\"/><text x=\""
-        << right + 26 << "\" y=\"" << legend_y + 4 << "\">" << Escape(s.name) << "</text>\n";
+    svg << "</g>\n<circle cx=\"" << right + 16 << "\" cy=\"" << legend_y << "\" r=\"5\" fill=\"" << colour
+        << "\"/><text x=\"" << right + 26 << "\" y=\"" << legend_y + 4 << "\">" << Escape(s.name) << "</text>\n";
     legend_y += 18;
   }
   svg << "</svg>\n";

@@ -13,8 +13,8 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   s << "Verify: the twin's render against the verifier's judgement of it, medians of " << result.runs << " run(s); "
     << result.machine << "\n";
   char line[256];
-  std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles", "twin ms",
-                "verify ms", "ratio", "uncertain", "violations");
+  std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles",
+                "twin ms", "verify ms", "ratio", "uncertain", "violations");
   s << line;
   for (const VerifyBenchRow& r : result.rows) {
     const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
@@ -27,7 +27,8 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
     s << line;
   }
   s << "(twin: RenderOnCpu on " << (result.rows.empty() ? 0 : result.rows.front().twin_threads)
-    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; uncertain: of the covered pixels)\n";
+    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; "
+       "uncertain: of the covered pixels)\n";
   return s.str();
 }
 

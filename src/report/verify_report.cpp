@@ -16,7 +16,8 @@ nlohmann::ordered_json ViolationJson(const std::optional<verify::Violation>& v) 
   using Json = nlohmann::ordered_json;
   if (!v) return nullptr;
   Json allowed = Json::array();
-  for (const verify::ColourRange& r : v->allowed) allowed.push_back({{"lo", ColourJson(r.lo)}, {"hi", ColourJson(r.hi)}});
+  for (const verify::ColourRange& r : v->allowed)
+    allowed.push_back({{"lo", ColourJson(r.lo)}, {"hi", ColourJson(r.hi)}});
   return {{"x", v->x}, {"y", v->y}, {"colour", ColourJson(v->colour)}, {"distance", v->distance}, {"allowed", allowed}};
 }
 
@@ -31,7 +32,9 @@ std::string InconclusiveReason(const verify::Verification& v) {
 
 std::string RangeText(const verify::ColourRange& r) {
   if (r.lo == r.hi) return Colour(r.lo);
-  const auto channel = [](int lo, int hi) { return lo == hi ? std::to_string(lo) : std::to_string(lo) + ".." + std::to_string(hi); };
+  const auto channel = [](int lo, int hi) {
+    return lo == hi ? std::to_string(lo) : std::to_string(lo) + ".." + std::to_string(hi);
+  };
   return "(" + channel(r.lo.r, r.hi.r) + ", " + channel(r.lo.g, r.hi.g) + ", " + channel(r.lo.b, r.hi.b) + ")";
 }
 
@@ -42,8 +45,8 @@ std::string VerificationText(const verify::Verification& v) {
   const double percent = 100.0 * v.UncertainFraction();
   const verify::Judgement verdict = v.Verdict();
   if (verdict != verify::Judgement::kFailed) {
-    s << (verdict == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, " << v.uncertain
-      << " uncertain (" << percent << " % of the " << v.covered << " covered";
+    s << (verdict == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, "
+      << v.uncertain << " uncertain (" << percent << " % of the " << v.covered << " covered";
     if (v.uncertain_shared_edges > 0) s << ", " << v.uncertain_shared_edges << " of them on shared edges";
     s << "), 0 violations";
     if (verdict == verify::Judgement::kInconclusive) s << "; " << InconclusiveReason(v);
@@ -89,8 +92,8 @@ std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Veri
       s << ", but the judgement is inconclusive: " << InconclusiveReason(v);
     }
   } else {
-    s << v.violations << " px " << (v.violations == 1 ? "is" : "are") << " not allowed: first at (" << v.first->x << ", "
-      << v.first->y << "), worst at (" << v.worst->x << ", " << v.worst->y << ") "
+    s << v.violations << " px " << (v.violations == 1 ? "is" : "are") << " not allowed: first at (" << v.first->x
+      << ", " << v.first->y << "), worst at (" << v.worst->x << ", " << v.worst->y << ") "
       << RangeText(verify::ColourRange::Exactly(v.worst->colour)) << " where ";
     for (std::size_t i = 0; i < v.worst->allowed.size(); ++i) {
       s << (i ? " or " : "") << RangeText(v.worst->allowed[i]);

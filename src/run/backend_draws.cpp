@@ -22,12 +22,9 @@ BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& s
   run.record.detail = r.device.name.empty() ? "no device" : r.device.name;
   run.record.driver = r.device.driver_info;
   switch (r.outcome) {
-    case GpuOutcome::kRendered:
-      break;
-    case GpuOutcome::kUnavailable:
-      throw GpuUnavailable(r.problem);
-    case GpuOutcome::kBadList:
-      throw std::invalid_argument(r.problem);
+    case GpuOutcome::kRendered: break;
+    case GpuOutcome::kUnavailable: throw GpuUnavailable(r.problem);
+    case GpuOutcome::kBadList: throw std::invalid_argument(r.problem);
     case GpuOutcome::kCrashed:
     case GpuOutcome::kTimedOut:
       run.record.status = r.outcome == GpuOutcome::kCrashed ? BackendStatus::kCrashed : BackendStatus::kTimedOut;

@@ -15,7 +15,7 @@ namespace twinraster::run {
 struct ImageJudgement {
   verify::Verification verification;
   double verify_ms = 0;
-  std::optional<Image> map;  // when asked for
+  std::optional<Image> map;              // when asked for
   Verdict verdict = Verdict::kVerified;  // kVerified, kInconclusive or kDiffering
 };
 

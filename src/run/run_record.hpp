@@ -30,10 +30,10 @@ const char* StatusName(BackendStatus status);  // "rendered", "crashed", "timed 
 // One backend's run: where it ran, how long each part took, and the file its image went to.
 struct BackendRecord {
   Backend backend = Backend::kCpu;
-  std::string detail;  // device name, or thread count
+  std::string detail;    // device name, or thread count
   unsigned threads = 0;  // cpu: the twin's threads
-  std::string driver;  // gpu: the driver's own version string (driverInfo)
-  std::string output;  // a file, or "-" for standard output; empty when nothing was written
+  std::string driver;    // gpu: the driver's own version string (driverInfo)
+  std::string output;    // a file, or "-" for standard output; empty when nothing was written
   double setup_ms = 0, draw_ms = 0, readback_ms = 0, png_ms = 0;
   double isolation_ms = 0;  // gpu: the child process's cost (fork, pipe, shared pixels, wait)
   BackendStatus status = BackendStatus::kRendered;

@@ -32,8 +32,8 @@ struct RunResult {
   RunRecord record;
   std::vector<Image> images;  // one per record.backends, in its order; empty for a backend that did not draw
   std::vector<verify::DrawnBy> drawn_by;  // likewise: the PNG notes of each image
-  std::optional<Image> diff;  // when the two images differ
-  std::optional<Image> map;   // the judgement's map, when RunOptions::map and an image was judged
+  std::optional<Image> diff;              // when the two images differ
+  std::optional<Image> map;               // the judgement's map, when RunOptions::map and an image was judged
 };
 
 // `source` names the scene in the record and in a crash's problem. `gpu` draws every GPU image

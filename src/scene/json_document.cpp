@@ -65,8 +65,10 @@ std::string LineAndColumn(std::size_t line, std::size_t column) {
 std::string LineAndColumnAt(std::string_view text, std::size_t offset) {
   std::size_t line = 1, column = 1;
   for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else
+      ++column;
   }
   return LineAndColumn(line, column);
 }
@@ -142,8 +144,8 @@ class LocatingBuilder {
     const std::string literal = open < close ? what.substr(open + 1, close - open - 1) : std::string("number");
     const std::size_t read = position_.offset - position_.line_start;
     const std::size_t column = read > literal.size() ? read - literal.size() : 1;
-    return Fail(PathOfNext(), "number " + literal + " is out of range for a double (" +
-                                  LineAndColumn(position_.line, column) + ")");
+    return Fail(PathOfNext(),
+                "number " + literal + " is out of range for a double (" + LineAndColumn(position_.line, column) + ")");
   }
 
   std::string PathOfNext() const {
@@ -206,7 +208,8 @@ class LocatingBuilder {
 void RejectBinaryText(std::string_view text, const std::string& file_name) {
   std::size_t first = 0;
   if (text.substr(0, 3) == "\xEF\xBB\xBF") first = 3;
-  while (first < text.size() && (text[first] == ' ' || text[first] == '\t' || text[first] == '\n' || text[first] == '\r'))
+  while (first < text.size() &&
+         (text[first] == ' ' || text[first] == '\t' || text[first] == '\n' || text[first] == '\r'))
     ++first;
   std::optional<std::size_t> bad;
   if (first < text.size()) {

@@ -6,9 +6,8 @@
 #include "base/closest_match.hpp"
 #include "scene/scene_error.hpp"
 
-#include <simdjson.h>
-
 #include <glm/vec3.hpp>
+#include <simdjson.h>
 
 #include <cstdint>
 #include <initializer_list>
@@ -45,7 +44,7 @@ class JsonReader {
   // An object whose keys must all be among `allowed`; an unknown key is an error that names the
   // closest allowed key.
   void ExpectObject(std::initializer_list<std::string_view> allowed) const;
-  void ExpectObject() const;  // any keys
+  void ExpectObject() const;                   // any keys
   std::vector<std::string_view> Keys() const;  // an object's keys, sorted
 
   // A child refers to its parent, so children of temporaries are not allowed.
@@ -71,7 +70,7 @@ class JsonReader {
 
   std::string String() const;
   bool Boolean() const;
-  double Number() const;  // finite, |x| <= kMaxMagnitude
+  double Number() const;    // finite, |x| <= kMaxMagnitude
   double Positive() const;  // > 0 and >= kMinPositive
   std::int64_t Integer(std::int64_t min, std::int64_t max) const;
   glm::dvec3 Vec3() const;
@@ -89,7 +88,7 @@ class JsonReader {
   simdjson::dom::element value_;
   const std::string* file_;
   const JsonReader* parent_ = nullptr;
-  std::string_view key_;              // this value's key in its parent object, or
+  std::string_view key_;               // this value's key in its parent object, or
   std::size_t index_ = kNotAnElement;  // its index in its parent array
   static constexpr std::size_t kNotAnElement = static_cast<std::size_t>(-1);
 };

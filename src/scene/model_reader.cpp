@@ -13,9 +13,9 @@ namespace {
 const std::map<std::string, Rgb8, std::less<>>& NamedColours() {
   // The chapter's six cube colours, plus the neutral ones a scene's background needs.
   static const std::map<std::string, Rgb8, std::less<>> colours = {
-      {"red", {255, 0, 0}},       {"green", {0, 255, 0}},   {"blue", {0, 0, 255}},
+      {"red", {255, 0, 0}},       {"green", {0, 255, 0}},    {"blue", {0, 0, 255}},
       {"yellow", {255, 255, 0}},  {"purple", {255, 0, 255}}, {"cyan", {0, 255, 255}},
-      {"white", {255, 255, 255}}, {"black", {0, 0, 0}},     {"gray", {128, 128, 128}},
+      {"white", {255, 255, 255}}, {"black", {0, 0, 0}},      {"gray", {128, 128, 128}},
   };
   return colours;
 }
@@ -25,7 +25,8 @@ constexpr std::pair<const char*, Shading> kShadings[] = {
 
 Shading ReadShading(const JsonReader& r, bool lit) {
   const std::string name = r.String();
-  const auto* found = std::find_if(std::begin(kShadings), std::end(kShadings), [&](const auto& s) { return name == s.first; });
+  const auto* found =
+      std::find_if(std::begin(kShadings), std::end(kShadings), [&](const auto& s) { return name == s.first; });
   if (found == std::end(kShadings)) {
     const std::string suggestion = ClosestMatch(name, {"unlit", "flat", "gouraud"});
     r.Fail("expected \"unlit\", \"flat\" or \"gouraud\", found \"" + name + "\"" +
@@ -100,7 +101,8 @@ Model ReadObjModel(const JsonReader& r, const std::string& name, const std::file
   const std::optional<JsonReader> colour_reader = r.Find("colour");
   const Rgb8 colour = colour_reader ? ReadColour(*colour_reader) : kDefaultObjColour;
   std::map<std::string, Rgb8, std::less<>> material_colours;
-  if (const std::optional<JsonReader> materials = r.Find("materials")) material_colours = ReadMaterials(*materials, mesh.materials);
+  if (const std::optional<JsonReader> materials = r.Find("materials"))
+    material_colours = ReadMaterials(*materials, mesh.materials);
   Model model = ObjModel(std::move(mesh), name, colour, material_colours);
   model.source = written;
   return model;
@@ -116,8 +118,7 @@ Rgb8 ReadColour(const JsonReader& r) {
     std::vector<std::string> names;
     for (const auto& entry : NamedColours()) names.push_back(entry.first);
     const std::string suggestion = ClosestMatch(name, names);
-    r.Fail("unknown colour \"" + name + "\"" +
-           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
+    r.Fail("unknown colour \"" + name + "\"" + (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
            "; use a name or [r, g, b] with 0..255");
   }
   if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + r.TypeName());
@@ -139,13 +140,15 @@ Model ReadModel(const JsonReader& r, const std::string& name, const std::filesys
   if (!obj) {
     for (const char* key : {"colour", "materials"}) {
       if (auto found = r.Find(key)) {
-        found->Fail("only for a model read from an OBJ file (\"obj\"); a model written as \"vertices\" gives each "
-                    "triangle its colour");
+        found->Fail(
+            "only for a model read from an OBJ file (\"obj\"); a model written as \"vertices\" gives each "
+            "triangle its colour");
       }
     }
   } else {
     for (const char* key : {"vertices", "triangles"}) {
-      if (auto found = r.Find(key)) found->Fail("a model is read from \"obj\" or written as \"vertices\" and \"triangles\", not both");
+      if (auto found = r.Find(key))
+        found->Fail("a model is read from \"obj\" or written as \"vertices\" and \"triangles\", not both");
     }
   }
   // Checked before an OBJ file is read: a mistake here costs nothing.

@@ -108,8 +108,7 @@ class LineChecker {
         CheckFace();
         ++seen_.faces;
         break;
-      case Statement::kOther:
-        break;
+      case Statement::kOther: break;
     }
   }
 
@@ -135,7 +134,8 @@ class LineChecker {
     std::string_view digits = word;
     if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);  // from_chars takes no '+'
     double x = 0;
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), x, std::chars_format::general);
+    const auto [end, error] =
+        std::from_chars(digits.data(), digits.data() + digits.size(), x, std::chars_format::general);
     const bool whole = error == std::errc() && end == digits.data() + digits.size();
     if (error == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
       Fail(std::string(Keyword()) + ": number " + std::string(word) + " is out of range for a double");
@@ -154,7 +154,8 @@ class LineChecker {
   void CheckFace() const {
     const std::size_t corners = words_.size() - 1;
     if (corners < 3) {
-      Fail("f: a face needs at least 3 corners, found " + (corners == 0 ? std::string("none") : std::to_string(corners)));
+      Fail("f: a face needs at least 3 corners, found " +
+           (corners == 0 ? std::string("none") : std::to_string(corners)));
     }
     const IndexKind vertex{"vertex", "vertex (v line)", "vertices (v lines)", totals_.vertices, seen_.vertices};
     const IndexKind texcoord{"texture coordinate", "texture coordinate (vt line)", "texture coordinates (vt lines)",
@@ -169,7 +170,8 @@ class LineChecker {
       const std::string_view v = corner.substr(0, first);
       const std::string_view vt = slashes == 0 ? std::string_view() : corner.substr(first + 1, second - first - 1);
       const std::string_view vn = slashes == 2 ? corner.substr(second + 1) : std::string_view();
-      const bool well_formed = slashes <= 2 && !v.empty() && (slashes != 1 || !vt.empty()) && (slashes != 2 || !vn.empty());
+      const bool well_formed =
+          slashes <= 2 && !v.empty() && (slashes != 1 || !vt.empty()) && (slashes != 2 || !vn.empty());
       const std::string which = "f: corner " + std::to_string(c) + " " + Quoted(corner);
       if (!well_formed) Fail(which + " is not v, v/vt, v//vn or v/vt/vn" + CommentHint(corner));
       CheckIndex(which, v, vertex);
@@ -198,7 +200,8 @@ class LineChecker {
     }
     if (negative && magnitude > kind.before) {
       Fail(which + ": " + index + " is out of range: " + (kind.before == 0 ? "" : "only ") +
-           Count(kind.before, kind.singular, kind.plural) + (kind.before == 1 ? " comes" : " come") + " before this line");
+           Count(kind.before, kind.singular, kind.plural) + (kind.before == 1 ? " comes" : " come") +
+           " before this line");
     }
   }
 

@@ -81,12 +81,14 @@ void OnUseMaterial(void* user_data, const char* name, int /*material_id: no .mtl
   // The callback passes the rest of the line as it is.
   std::string_view trimmed(name);
   const std::size_t first = trimmed.find_first_not_of(" \t");
-  trimmed = first == std::string_view::npos ? std::string_view() : trimmed.substr(first, trimmed.find_last_not_of(" \t") - first + 1);
+  trimmed = first == std::string_view::npos ? std::string_view()
+                                            : trimmed.substr(first, trimmed.find_last_not_of(" \t") - first + 1);
   if (trimmed.empty()) {
     r.material = kNoMaterial;
     return;
   }
-  const auto [it, added] = r.material_numbers.try_emplace(std::string(trimmed), static_cast<std::uint32_t>(r.mesh.materials.size()));
+  const auto [it, added] =
+      r.material_numbers.try_emplace(std::string(trimmed), static_cast<std::uint32_t>(r.mesh.materials.size()));
   if (added) r.mesh.materials.emplace_back(trimmed);
   r.material = it->second;
 }
@@ -159,7 +161,8 @@ ObjMesh ParseObj(std::string_view text, const std::string& file_name) {
   return std::move(reading.mesh);
 }
 
-Model ObjModel(ObjMesh mesh, std::string name, Rgb8 colour, const std::map<std::string, Rgb8, std::less<>>& material_colours) {
+Model ObjModel(ObjMesh mesh, std::string name, Rgb8 colour,
+               const std::map<std::string, Rgb8, std::less<>>& material_colours) {
   std::vector<Rgb8> colours;  // by material number
   for (const std::string& material : mesh.materials) {
     const auto it = material_colours.find(material);

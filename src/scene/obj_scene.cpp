@@ -41,7 +41,8 @@ Sphere BoundingSphere(const Model& model) {
   Sphere sphere;
   sphere.centre = (low + high) / 2.0;
   for (const Triangle& t : model.triangles) {
-    for (const std::uint32_t v : t.v) sphere.radius = std::max(sphere.radius, glm::length(model.vertices[v] - sphere.centre));
+    for (const std::uint32_t v : t.v)
+      sphere.radius = std::max(sphere.radius, glm::length(model.vertices[v] - sphere.centre));
   }
   // A mesh that is a single point still needs a camera apart from it: a radius at least a
   // millionth of the centre's distance from the origin (or of 1).

@@ -6,9 +6,8 @@
 #include "scene/model_reader.hpp"
 #include "scene/rotation.hpp"
 
-#include <simdjson.h>
-
 #include <glm/geometric.hpp>
+#include <simdjson.h>
 
 #include <algorithm>
 #include <array>
@@ -82,8 +81,7 @@ Canvas ReadCanvas(const JsonReader& r) {
 
 Viewport ReadViewport(const JsonReader& r) {
   r.ExpectObject({"width", "height", "distance", "projection"});
-  Viewport viewport{r.Required("width").Positive(), r.Required("height").Positive(),
-                    r.Required("distance").Positive()};
+  Viewport viewport{r.Required("width").Positive(), r.Required("height").Positive(), r.Required("distance").Positive()};
   if (auto projection = r.Find("projection")) {
     const std::string kind = projection->String();
     if (kind == "orthographic") {
@@ -207,7 +205,8 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
                (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)"));
   }
   instance.model = found->second;
-  const Model* lit_model = lit_scene && models[instance.model].shading != Shading::kUnlit ? &models[instance.model] : nullptr;
+  const Model* lit_model =
+      lit_scene && models[instance.model].shading != Shading::kUnlit ? &models[instance.model] : nullptr;
   if (auto transform = r.Find("transform")) {
     if (transform->IsArray()) {
       instance.transform.steps = ReadTransformSteps(*transform, lit_model);
@@ -249,7 +248,8 @@ InstanceGrid ReadGrid(const JsonReader& r, std::size_t room) {
 // The grid's copies of `instance`, appended in i-fastest order.
 void AppendGridCopies(const Instance& instance, const InstanceGrid& grid, std::vector<Instance>& out) {
   const auto offset = [&](std::size_t axis, std::uint32_t n) {
-    return (static_cast<double>(n) - (static_cast<double>(grid.count[axis]) - 1.0) / 2.0) * grid.spacing[static_cast<glm::length_t>(axis)];
+    return (static_cast<double>(n) - (static_cast<double>(grid.count[axis]) - 1.0) / 2.0) *
+           grid.spacing[static_cast<glm::length_t>(axis)];
   };
   for (std::uint32_t k = 0; k < grid.count[2]; ++k) {
     for (std::uint32_t j = 0; j < grid.count[1]; ++j) {
@@ -305,7 +305,8 @@ bool NeedsLocatingParser(simdjson::dom::element root) {
 }
 
 // `directory`: where the paths of OBJ files start.
-Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name, const std::filesystem::path& directory) {
+Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name,
+                const std::filesystem::path& directory) {
   const std::string_view view(text.data(), text.size());
   RejectBinaryText(view, file_name);
   simdjson::dom::parser parser;
@@ -316,7 +317,8 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
   if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem
 
   const JsonReader root(document, file_name);
-  root.ExpectObject({"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe", "lighting"});
+  root.ExpectObject(
+      {"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe", "lighting"});
   if (auto comment = root.Find("comment")) comment->String();
 
   Scene scene;
@@ -354,7 +356,8 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
       grid.written = at;
       grid.first = scene.instances.size();
       const std::size_t needed = scene.instances.size() + grid.copies() + later;
-      if (needed > scene.instances.capacity()) scene.instances.reserve(std::max(needed, 2 * scene.instances.capacity()));
+      if (needed > scene.instances.capacity())
+        scene.instances.reserve(std::max(needed, 2 * scene.instances.capacity()));
       AppendGridCopies(instance, grid, scene.instances);
       scene.grids.push_back(grid);
     } else {
@@ -373,7 +376,8 @@ Scene ParseScene(std::string_view json_text, const std::string& file_name, const
 
 Scene LoadScene(const std::filesystem::path& file) {
   std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw SceneError(file.string(), "(file)", "is a directory, not a scene file");
+  if (std::filesystem::is_directory(file, ec))
+    throw SceneError(file.string(), "(file)", "is a directory, not a scene file");
   if (!std::filesystem::exists(file, ec)) throw SceneError(file.string(), "(file)", "no such file");
   if (!std::filesystem::is_regular_file(file, ec)) throw SceneError(file.string(), "(file)", "not a regular file");
   // Far beyond any scene a person writes; refusing it keeps /dev/zero-like inputs from eating memory.
@@ -382,7 +386,8 @@ Scene LoadScene(const std::filesystem::path& file) {
     throw SceneError(file.string(), "(file)", "larger than 256 MiB: not a scene file");
   }
   simdjson::padded_string text;
-  if (const simdjson::error_code error = simdjson::padded_string::load(file.string()).get(text); error != simdjson::SUCCESS) {
+  if (const simdjson::error_code error = simdjson::padded_string::load(file.string()).get(text);
+      error != simdjson::SUCCESS) {
     throw SceneError(file.string(), "(file)", std::string("cannot read the file: ") + simdjson::error_message(error));
   }
   return ReadScene(text, file.string(), file.parent_path());

@@ -67,8 +67,12 @@ double PlaneDistance(const glm::dvec4& clip, int plane) {
 
 ClipPolygon ClipAgainstPlane(const ClipPolygon& polygon, int plane) { return ClipPolygonAgainstPlane(polygon, plane); }
 
-ClipPolygon ClipToViewVolume(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) { return ClipTriangle(a, b, c); }
+ClipPolygon ClipToViewVolume(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c) {
+  return ClipTriangle(a, b, c);
+}
 
-LitPolygon ClipToViewVolume(const LitVertex& a, const LitVertex& b, const LitVertex& c) { return ClipTriangle(a, b, c); }
+LitPolygon ClipToViewVolume(const LitVertex& a, const LitVertex& b, const LitVertex& c) {
+  return ClipTriangle(a, b, c);
+}
 
 }  // namespace twinraster::truth

@@ -126,10 +126,10 @@ void DrawTriangle(TruthTarget& target, const WindowTriangle& triangle) {
     edges[i] = Edge{a, b, IsTopOrLeftEdge(a, b)};
   }
 
-  const auto [x0, x1] = CentreRange(std::min({v[0].x, v[1].x, v[2].x}), std::max({v[0].x, v[1].x, v[2].x}),
-                                    target.colour.width);
-  const auto [y0, y1] = CentreRange(std::min({v[0].y, v[1].y, v[2].y}), std::max({v[0].y, v[1].y, v[2].y}),
-                                    target.colour.height);
+  const auto [x0, x1] =
+      CentreRange(std::min({v[0].x, v[1].x, v[2].x}), std::max({v[0].x, v[1].x, v[2].x}), target.colour.width);
+  const auto [y0, y1] =
+      CentreRange(std::min({v[0].y, v[1].y, v[2].y}), std::max({v[0].y, v[1].y, v[2].y}), target.colour.height);
   for (int py = y0; py <= y1; ++py) {
     for (int px = x0; px <= x1; ++px) {
       const glm::dvec2 centre{px + 0.5, py + 0.5};

@@ -18,7 +18,8 @@ namespace {
 // every draw.
 void ValidateInputs(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light) {
   ValidateDrawList(list);
-  if (list.lighting && light == nullptr) throw std::invalid_argument("the list is lit, but the truth was given no light");
+  if (list.lighting && light == nullptr)
+    throw std::invalid_argument("the list is lit, but the truth was given no light");
   if (list.wireframe) {
     // Lines have no exact pixel set to compare with: their width is a rasterization rule.
     throw std::invalid_argument("the truth draws filled triangles only, and this list is a wireframe");
@@ -94,10 +95,11 @@ TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const Ex
       if (colours.empty()) {
         DrawClipTriangle(target, positions[tri[0]], positions[tri[1]], positions[tri[2]], mesh.colours[t], surface);
       } else {
-        DrawLitTriangle(target,
-                        {truth::LitVertex{positions[tri[0]], colours[t][0]}, truth::LitVertex{positions[tri[1]], colours[t][1]},
-                         truth::LitVertex{positions[tri[2]], colours[t][2]}},
-                        surface);
+        DrawLitTriangle(
+            target,
+            {truth::LitVertex{positions[tri[0]], colours[t][0]}, truth::LitVertex{positions[tri[1]], colours[t][1]},
+             truth::LitVertex{positions[tri[2]], colours[t][2]}},
+            surface);
       }
     }
   }
@@ -131,7 +133,8 @@ glm::dvec3 ExactFramebuffer(glm::dvec4 clip, std::uint32_t width, std::uint32_t 
 ExactLight::ExactLight(const Scene& scene) : scene_(&scene), normals_(scene.models.size()) {
   if (!scene.lighting || scene.wireframe) return;
   for (std::size_t m = 0; m < scene.models.size(); ++m) {
-    if (scene.models[m].shading != Shading::kUnlit) normals_[m] = CornerNormals(scene.models[m], scene.models[m].shading);
+    if (scene.models[m].shading != Shading::kUnlit)
+      normals_[m] = CornerNormals(scene.models[m], scene.models[m].shading);
   }
 }
 

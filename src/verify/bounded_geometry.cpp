@@ -32,8 +32,8 @@ double DistanceError(const glm::dvec4& e, int plane) {
 // ends' and that of t = d_in / (d_in - d_out) in float.
 BoundedVertex Intersect(const BoundedVertex& in, double d_in, const BoundedVertex& out, double d_out, int plane) {
   const double t = d_in / (d_in - d_out);
-  const double t_error = (DistanceError(in.error, plane) + DistanceError(out.error, plane)) / std::abs(d_in - d_out) +
-                         4 * kUnit;
+  const double t_error =
+      (DistanceError(in.error, plane) + DistanceError(out.error, plane)) / std::abs(d_in - d_out) + 4 * kUnit;
   BoundedVertex v;
   v.clip = in.clip + t * (out.clip - in.clip);
   v.colour = in.colour + t * (out.colour - in.colour);
@@ -67,7 +67,8 @@ ClipPolygon ClipAgainst(const ClipPolygon& polygon, int plane) {
 double WindowError(double c, double ce, double w, double we, double half, double window) {
   const double margin = std::abs(w) - we;
   if (!(margin > 0)) return kInfinity;
-  return half * ((ce + std::abs(c / w) * we) / margin + 3 * kUnit * std::abs(c / w)) + 4 * kUnit * (std::abs(window) + 2 * half);
+  return half * ((ce + std::abs(c / w) * we) / margin + 3 * kUnit * std::abs(c / w)) +
+         4 * kUnit * (std::abs(window) + 2 * half);
 }
 
 // z / w, with viewport depth range [0, 1]: no scale, no offset.
@@ -79,7 +80,8 @@ double DepthError(double z, double ze, double w, double we) {
 
 }  // namespace
 
-void BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions, std::vector<BoundedVertex>& out) {
+void BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions,
+                   std::vector<BoundedVertex>& out) {
   const glm::dmat4 f(float_f);
   const glm::dmat4 magnitude = glm::dmat4(glm::abs(f[0]), glm::abs(f[1]), glm::abs(f[2]), glm::abs(f[3]));
   out.assign(float_positions.size(), BoundedVertex{});

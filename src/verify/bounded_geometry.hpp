@@ -30,7 +30,8 @@ struct BoundedVertex {
 // OpFAdd and OpFma). The host's rounding of F to float is not the device's to answer for: every
 // implementation gets the same F (bench measures that rounding against the truth).
 // Into `out`, whose storage is reused from draw to draw.
-void BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions, std::vector<BoundedVertex>& out);
+void BoundVertices(const glm::mat4& float_f, const std::vector<glm::vec3>& float_positions,
+                   std::vector<BoundedVertex>& out);
 
 // A framebuffer vertex: x and y in pixels, z the depth; xy_error bounds the distance along x and
 // along y (snapping included), z_error the depth's.

@@ -111,10 +111,10 @@ std::array<double, 2> TriangleShape::DepthRange() const {
   }
   // Within the triangle the plane stays between its corners; within `radius` outside it, it moves
   // |g| radius further. Depth(p)'s own widening, bounded over the box.
-  const double extent = (std::abs(gradient_.x) + std::abs(gradient_.y)) *
-                        (std::max({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) - std::min({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) +
-                         std::max({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) - std::min({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) +
-                         2 * radius_);
+  const double extent =
+      (std::abs(gradient_.x) + std::abs(gradient_.y)) *
+      (std::max({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) - std::min({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) +
+       std::max({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) - std::min({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) + 2 * radius_);
   const double e = depth_error_ + glm::length(gradient_) * radius_ + depth_relative_ * extent +
                    4 * kUnit * std::max(std::abs(lo), std::abs(hi)) + 4 * kUnit * extent;
   return {lo - e, hi + e};
@@ -131,9 +131,12 @@ std::array<int, 2> RowSpan(const std::array<glm::dvec2, 3>& normal, const std::a
   double lo = -1e9, hi = 1e9;
   for (std::size_t i = 0; i < 3; ++i) {
     const double a = normal[i].x, rest = normal[i].y * centre_y + offset[i] + bias[i];
-    if (a > 0) lo = std::max(lo, -rest / a);
-    else if (a < 0) hi = std::min(hi, -rest / a);
-    else if (inner ? !(rest > 0) : rest < 0) return {1, 0};
+    if (a > 0)
+      lo = std::max(lo, -rest / a);
+    else if (a < 0)
+      hi = std::min(hi, -rest / a);
+    else if (inner ? !(rest > 0) : rest < 0)
+      return {1, 0};
   }
   const double margin = 1e-6 * (1.0 + std::max(std::abs(lo), std::abs(hi)));
   lo = inner ? lo + margin : lo - margin;
@@ -154,12 +157,14 @@ std::array<int, 2> TriangleShape::InsideSpan(int y) const {
 }
 
 std::array<int, 2> TriangleShape::ReachSpan(int y) const {
-  if (orientation_ == 0 || !std::isfinite(radius_)) return {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
+  if (orientation_ == 0 || !std::isfinite(radius_))
+    return {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
   return RowSpan(normal_, offset_, outside_radius_, y, false);
 }
 
 std::array<double, 3> TriangleShape::EdgeDistances(glm::dvec2 p) const {
-  return {glm::dot(normal_[0], p) + offset_[0], glm::dot(normal_[1], p) + offset_[1], glm::dot(normal_[2], p) + offset_[2]};
+  return {glm::dot(normal_[0], p) + offset_[0], glm::dot(normal_[1], p) + offset_[1],
+          glm::dot(normal_[2], p) + offset_[2]};
 }
 
 std::array<double, 2> TriangleShape::Depth(glm::dvec2 p) const {
@@ -187,7 +192,8 @@ ColourRange TriangleShape::Colour(glm::dvec2 p, Rgb8 flat) const {
   } else {
     // Perspective-correct interpolation at p and where p may lie relative to moved vertices.
     const double r = radius_;
-    for (const glm::dvec2 q : {p, p + glm::dvec2(r, 0), p - glm::dvec2(r, 0), p + glm::dvec2(0, r), p - glm::dvec2(0, r)}) {
+    for (const glm::dvec2 q :
+         {p, p + glm::dvec2(r, 0), p - glm::dvec2(r, 0), p + glm::dvec2(0, r), p - glm::dvec2(0, r)}) {
       const double l0 = Cross(v_[1].xy - q, v_[2].xy - q) / area2_;
       const double l1 = Cross(v_[2].xy - q, v_[0].xy - q) / area2_;
       const double l2 = 1.0 - l0 - l1;
@@ -217,8 +223,10 @@ std::array<double, 2> InsideCanvas(glm::dvec2 a, glm::dvec2 b, std::uint32_t wid
       return;
     }
     const double t = (limit - start) / delta;
-    if (delta > 0) to = std::min(to, t);
-    else from = std::max(from, t);
+    if (delta > 0)
+      to = std::min(to, t);
+    else
+      from = std::max(from, t);
   };
   keep(a.x, d.x, double(width)), keep(-a.x, -d.x, 0.0), keep(a.y, d.y, double(height)), keep(-a.y, -d.y, 0.0);
   return {from, to};
@@ -296,8 +304,8 @@ Coverage LineShape::CoversNotStrict(glm::dvec2 p) const {
   const double t = high > low ? (p[major_] - a_major) / (b_major - a_major) : 0.0;
   const double across = std::abs(p[minor] - (a_.xy[minor] + t * (b_.xy[minor] - a_.xy[minor])));
   const double c0 = a_major + canvas_[0] * (b_major - a_major), c1 = a_major + canvas_[1] * (b_major - a_major);
-  const bool inside_ends = canvas_[0] <= canvas_[1] && p[major_] > std::min(c0, c1) + 1 + r &&
-                           p[major_] < std::max(c0, c1) - 1 - r;
+  const bool inside_ends =
+      canvas_[0] <= canvas_[1] && p[major_] > std::min(c0, c1) + 1 + r && p[major_] < std::max(c0, c1) - 1 - r;
   if (!from_clipping_ && inside_ends && across < 0.5 - r * (1 + slope_)) return Coverage::kIn;
   // A strict line is a rectangle one pixel wide: up to sqrt(1 + slope^2) / 2 along the minor axis.
   return across <= 0.5 * std::sqrt(1 + slope_ * slope_) + r * (1 + slope_) ? Coverage::kMaybe : Coverage::kOut;

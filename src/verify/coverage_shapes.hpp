@@ -48,13 +48,13 @@ class TriangleShape {
  private:
   std::array<WindowVertex, 3> v_;
   bool lit_ = false;
-  double radius_ = 0;                 // how far a vertex may move (Euclidean)
+  double radius_ = 0;                       // how far a vertex may move (Euclidean)
   std::array<double, 3> edge_radius_{};     // edge i's endpoints' movement along its normal
   std::array<double, 3> outside_radius_{};  // any vertex's movement along edge i's normal
-  int orientation_ = 0;               // sign of the area; 0: degenerate
-  std::array<glm::dvec2, 3> normal_;  // unit, inward
+  int orientation_ = 0;                     // sign of the area; 0: degenerate
+  std::array<glm::dvec2, 3> normal_;        // unit, inward
   std::array<double, 3> offset_{};
-  double area2_ = 0;  // twice the signed area
+  double area2_ = 0;          // twice the signed area
   glm::dvec2 gradient_{0.0};  // of depth
   double depth_error_ = 0, depth_relative_ = 0;
 };
@@ -85,12 +85,12 @@ class LineShape {
   WindowVertex a_, b_;
   bool from_clipping_ = false;
   LineRules rules_ = LineRules::kNotStrict;
-  double radius_ = 0;              // how far either endpoint may move (Euclidean)
+  double radius_ = 0;  // how far either endpoint may move (Euclidean)
   double radius_a_ = 0, radius_b_ = 0;
   double length_ = 0;
-  glm::dvec2 direction_{1, 0};     // unit, a -> b
+  glm::dvec2 direction_{1, 0};          // unit, a -> b
   std::array<double, 2> canvas_{0, 0};  // the part inside the canvas, as fractions of a -> b
-  int major_ = 0;  // 0: x-major, 1: y-major
+  int major_ = 0;                       // 0: x-major, 1: y-major
   double slope_ = 0;
   double depth_error_ = 0;
 };

@@ -86,7 +86,8 @@ bool FrameJudge::MayShow(int x, int y, std::array<double, 2> depth) const {
 void FrameJudge::Offer(int x, int y, const ColourRange& colours, bool certain_line) {
   State& s = state_[Index(x, y)];
   const auto gap = [](std::uint8_t g, std::uint8_t hi) { return std::max<std::uint8_t>(g, std::uint8_t(255 - hi)); };
-  s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g), std::max(s.max_lo.b, colours.lo.b)};
+  s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g),
+              std::max(s.max_lo.b, colours.lo.b)};
   s.hi_gap = {gap(s.hi_gap.r, colours.hi.r), gap(s.hi_gap.g, colours.hi.g), gap(s.hi_gap.b, colours.hi.b)};
   s.offers = std::uint8_t(std::min(2, s.offers + 1));
   s.closeness = std::max<std::uint8_t>(s.closeness, std::uint8_t(255 - colours.Distance(ImageColour(x, y))));
@@ -103,10 +104,13 @@ void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
       State& s = state_[i];
       if (s.offers > 0) ++v.covered;
       if (gap_[i] == 0) Offer(x, y, ColourRange::Exactly(background_));
-      const bool disjoint = s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
+      const bool disjoint =
+          s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
       const int distance = 255 - s.closeness;
       if (s.background_closeness < 255) ++v.background_excluded;
-      const PixelClass c = distance > 0 ? PixelClass::kViolation : disjoint ? PixelClass::kUncertain : PixelClass::kCertain;
+      const PixelClass c = distance > 0 ? PixelClass::kViolation
+                           : disjoint   ? PixelClass::kUncertain
+                                        : PixelClass::kCertain;
       pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
       if (c == PixelClass::kViolation) {
         ++v.violations;

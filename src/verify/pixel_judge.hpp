@@ -65,9 +65,9 @@ class FrameJudge {
   // depend on the order of the offers. All zeros when nothing was offered.
   struct State {
     Rgb8 max_lo{0, 0, 0};
-    Rgb8 hi_gap{0, 0, 0};       // 255 - the smallest high end
-    std::uint8_t offers = 0;    // saturates at 2
-    std::uint8_t closeness = 0; // 255 - the image colour's distance from the nearest offer
+    Rgb8 hi_gap{0, 0, 0};                   // 255 - the smallest high end
+    std::uint8_t offers = 0;                // saturates at 2
+    std::uint8_t closeness = 0;             // 255 - the image colour's distance from the nearest offer
     std::uint8_t background_closeness = 0;  // the same for the background's colour
     std::uint8_t not_certain_line = 0;      // 1: some offer came from other than a certain line
   };

@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <future>
 #include <optional>
-#include <unordered_map>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <type_traits>
+#include <unordered_map>
 
 namespace twinraster::verify {
 
@@ -211,8 +211,8 @@ class Primitives {
   }
 
   static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
-                                    const DrawMesh& mesh, const std::vector<std::array<Neighbour, 3>>& nb, std::size_t t,
-                                    const DrawGeometry& g) {
+                                    const DrawMesh& mesh, const std::vector<std::array<Neighbour, 3>>& nb,
+                                    std::size_t t, const DrawGeometry& g) {
     std::array<std::optional<TriangleShape>, 3> across;
     Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
       if (c == Coverage::kIn) {
@@ -317,7 +317,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
       JudgeBand(scene, list, image, options, row0, row1, bands[b], result.pixels);
     }));
   }
-  for (auto& r : running) r.get();  // rethrows a band's exception
+  for (auto& r : running) r.get();          // rethrows a band's exception
   for (const Verification& band : bands) {  // top to bottom: the first violation is the first band's
     result.certain += band.certain, result.uncertain += band.uncertain, result.violations += band.violations;
     result.covered += band.covered, result.uncertain_shared_edges += band.uncertain_shared_edges;

@@ -1,8 +1,8 @@
 // `twinraster bench` as a user runs it: the table, the files it writes, and its errors.
 #include "bench/bench_suite.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -92,7 +92,8 @@ TEST_CASE("bench rejects bad options with exit code 2", "[bench][cli]") {
   REQUIRE(test::RunCli({"bench", "extra"}).exit_code == 2);
 }
 
-TEST_CASE("bench --methods runs only the named code paths, and without Vulkan when lavapipe is not one", "[bench][cli]") {
+TEST_CASE("bench --methods runs only the named code paths, and without Vulkan when lavapipe is not one",
+          "[bench][cli]") {
   const test::CliResult r =
       test::RunCli({"bench", "--runs", "1", "--only", "far-1e3", "--methods", "steps-f32,cpu-twin", "--scenes",
                     test::SourcePath("scenes").string(), "--json"},

@@ -5,10 +5,10 @@
 #include "bench/error_metrics.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -151,7 +151,7 @@ TEST_CASE("RunBench: every row of a lit scene has a colour error near 0 over mos
     INFO(row.method << " " << row.threads);
     REQUIRE(row.scene == "lit-gouraud");
     REQUIRE(row.colour_error.has_value());
-    CHECK(*row.colour_error <= 2);  // float against double: a rounding here and there
+    CHECK(*row.colour_error <= 2);     // float against double: a rounding here and there
     CHECK(row.colour_pixels > 30000);  // of 640 x 400, the meshes' insides
   }
   options.only = "cgfs-scene";

@@ -1,14 +1,13 @@
 // The hard scenes against the double-precision ground truth: where depth precision runs out, and
 // how far the bit-exact twin (and so lavapipe) may stray from the truth on each, with the reason.
 #include "bench/error_metrics.hpp"
-#include "cpu/cpu_renderer.hpp"
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
-
-#include "support/catch.hpp"
 
 #include <map>
 
@@ -41,7 +40,8 @@ std::uint64_t ZFighting(const Rendered& r) {
 TEST_CASE("Depth precision: standard Z fights from near/far = 1e-4, reversed Z never down to 1e-6", "[hard][depth]") {
   for (int exponent = 1; exponent <= 6; ++exponent) {
     for (const bool reversed : {false, true}) {
-      const std::string name = "scenes/hard/depth-ratio-1e-" + std::to_string(exponent) + (reversed ? "-reversed" : "") + ".json";
+      const std::string name =
+          "scenes/hard/depth-ratio-1e-" + std::to_string(exponent) + (reversed ? "-reversed" : "") + ".json";
       INFO(name);
       const std::uint64_t fighting = ZFighting(RenderBoth(test::SourcePath(name)));
       if (reversed || exponent <= 3) {
@@ -58,7 +58,9 @@ TEST_CASE("Every hard scene: the twin stays within its documented distance of th
   // the reason; measured, and kept tight so that a change in either shows up.
   const std::map<std::string, std::uint64_t> allowed = {
       // Standard Z z-fights (see the depth test above): the far plate shows through.
-      {"depth-ratio-1e-4.json", 15004}, {"depth-ratio-1e-5.json", 18779}, {"depth-ratio-1e-6.json", 25796},
+      {"depth-ratio-1e-4.json", 15004},
+      {"depth-ratio-1e-5.json", 18779},
+      {"depth-ratio-1e-6.json", 25796},
       // In float the 1e6-scaled cube's near face lands on z = w exactly: depth 1.0 fails LESS
       // against the clear, while in double its depth is 0.99999998667 and it draws.
       {"extreme-scales.json", 11671},
@@ -69,7 +71,8 @@ TEST_CASE("Every hard scene: the twin stays within its documented distance of th
       {"up-near-parallel.json", 11},
       // Lit: a colour whose exact value is within float rounding of k + 1/2 (of 255) rounds the
       // other way in float; each such pixel is off by 1 (the colour test below holds that).
-      {"lit-grazing-light.json", 7}, {"lit-mirror-scales.json", 6},
+      {"lit-grazing-light.json", 7},
+      {"lit-mirror-scales.json", 6},
   };
   std::size_t judged = 0, listed = 0;
   for (const auto& file : test::ShippedScenes()) {
@@ -83,8 +86,8 @@ TEST_CASE("Every hard scene: the twin stays within its documented distance of th
     REQUIRE(differing <= (it == allowed.end() ? 4 : it->second));
     ++judged;
   }
-  CHECK(judged == 29);                // every scene in scenes/hard
-  CHECK(listed == allowed.size());    // and every exception above names one of them
+  CHECK(judged == 29);              // every scene in scenes/hard
+  CHECK(listed == allowed.size());  // and every exception above names one of them
 }
 
 TEST_CASE("Lit hard scenes: the twin's colours stay within 1 of the truth's triangle by triangle", "[hard][lighting]") {

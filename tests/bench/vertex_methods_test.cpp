@@ -1,14 +1,14 @@
 // The four ways of computing clip-space positions: the default one is exactly what the renderers
 // compute, all agree on ordinary scenes, and far from the origin only the double-composed ones hold.
-#include "bench/error_metrics.hpp"
 #include "bench/vertex_methods.hpp"
-#include "cpu/cpu_renderer.hpp"
+
+#include "bench/error_metrics.hpp"
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
-
-#include "support/catch.hpp"
 
 using namespace twinraster;
 
@@ -46,7 +46,8 @@ TEST_CASE("On the chapter's scenes every method lands within 1e-3 px of the trut
   }
 }
 
-TEST_CASE("1e7 units from the origin: composing in double keeps vertices within 1/256 px, float does not", "[methods][hard]") {
+TEST_CASE("1e7 units from the origin: composing in double keeps vertices within 1/256 px, float does not",
+          "[methods][hard]") {
   const Scene scene = Load("scenes/hard/far-1e7.json");
   const DrawList list = BuildDrawList(scene);
   const ExactClipPositions exact = ExactClipSpace(scene);
@@ -67,8 +68,10 @@ TEST_CASE("Vertex error grows with the distance from the origin for float compos
     const Scene scene = Load(name);
     const DrawList list = BuildDrawList(scene);
     const ExactClipPositions exact = ExactClipSpace(scene);
-    const double f32 = VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kComposeFloat), exact, list.width, list.height);
-    const double relative = VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kCameraRelative), exact, list.width, list.height);
+    const double f32 =
+        VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kComposeFloat), exact, list.width, list.height);
+    const double relative = VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kCameraRelative), exact,
+                                              list.width, list.height);
     REQUIRE(f32 > previous);
     REQUIRE(relative < 1.0 / 256);
     previous = f32;

@@ -1,8 +1,8 @@
 // The demo's canvas: JavaScript's `| 0`, and where PutPixel puts a canvas point.
 #include "book/book_canvas.hpp"
-#include "support/image_counts.hpp"
 
 #include "support/catch.hpp"
+#include "support/image_counts.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,9 +1,10 @@
 // The demo's matrix arithmetic: its summation order, its rotation entries, and its matrices for
 // figure 10-10 by hand.
 #include "book/book_chain.hpp"
-#include "scene/rotation.hpp"
 
+#include "scene/rotation.hpp"
 #include "support/catch.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -37,7 +38,8 @@ TEST_CASE("MultiplyMM4 and MultiplyMV add left to right from 0, rounding every s
   REQUIRE_FALSE(std::signbit(MultiplyMM4(negative, Mat4x4{})[0][0]));
 }
 
-TEST_CASE("Transposed swaps rows and columns, and the translation and scaling matrices are the demo's", "[book][chain]") {
+TEST_CASE("Transposed swaps rows and columns, and the translation and scaling matrices are the demo's",
+          "[book][chain]") {
   const Mat4x4 t = MakeTranslationMatrix({1.25, 2.5, 7.5});
   REQUIRE(t[0][3] == 1.25);
   REQUIRE(t[1][3] == 2.5);
@@ -85,7 +87,8 @@ TEST_CASE("Where the loader's rotation rounds its axis entry below 1, the orient
     for (glm::length_t c = 0; c < 3; ++c) REQUIRE(t[std::size_t(r)][std::size_t(c)] == tilted[c][r]);
 }
 
-TEST_CASE("Figure 10-10's camera matrix: Transposed(R(-30°)) · T(3, -1, -2), summed as the demo sums", "[book][chain]") {
+TEST_CASE("Figure 10-10's camera matrix: Transposed(R(-30°)) · T(3, -1, -2), summed as the demo sums",
+          "[book][chain]") {
   Camera camera;
   camera.position = {-3, 1, 2};
   camera.rotation = Rotation({0, 1, 0}, -30);

@@ -15,9 +15,8 @@
 //   this renderer's images pixel for pixel (twinraster compare: 0 differing pixels, all three).
 #include "book/book_renderer.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <map>
 #include <string>
@@ -54,8 +53,12 @@ void RequireCounts(const Image& image, std::size_t red, std::size_t green, std::
   REQUIRE(image.width == 600);
   REQUIRE(image.height == 600);
   const Counts counts = CountColours(image);
-  const Counts expected = {{Key(kRed), red},       {Key(kGreen), green},   {Key(kBlue), blue},
-                           {Key(kYellow), yellow}, {Key(kPurple), purple}, {Key(kCyan), cyan},
+  const Counts expected = {{Key(kRed), red},
+                           {Key(kGreen), green},
+                           {Key(kBlue), blue},
+                           {Key(kYellow), yellow},
+                           {Key(kPurple), purple},
+                           {Key(kCyan), cyan},
                            {Key(kWhite), 600 * 600 - (red + green + blue + yellow + purple + cyan)}};
   REQUIRE(counts == expected);
 }
@@ -98,8 +101,14 @@ TEST_CASE("Figure 10-3 by the book's rules: the demo's pixels", "[book][figures]
   // x = 2.25/8.5·600 = 158.82, 0.25/8.5·600 = 17.65 -> columns 458, 317; y = 3/8.5·600 = 211.76,
   // 1/8.5·600 = 70.59 -> rows 88, 229. z = 6.5: x = 207.69, 23.08 -> columns 507, 323;
   // y = 276.92, 92.31 -> rows 23, 207.
-  vertices.insert(vertices.end(), {{458, 88, kPurple}, {317, 88, kPurple}, {317, 229, kCyan}, {458, 229, kCyan},
-                                   {507, 23, kPurple}, {323, 23, kPurple}, {323, 207, kCyan}, {507, 207, kCyan}});
+  vertices.insert(vertices.end(), {{458, 88, kPurple},
+                                   {317, 88, kPurple},
+                                   {317, 229, kCyan},
+                                   {458, 229, kCyan},
+                                   {507, 23, kPurple},
+                                   {323, 23, kPurple},
+                                   {323, 207, kCyan},
+                                   {507, 207, kCyan}});
   RequireVertexPixels(image, vertices);
   RequireCounts(image, 284, 650, 753, 950, 1213, 1149);  // 4999 painted pixels
 }
@@ -117,10 +126,22 @@ TEST_CASE("Figure 10-10 by the book's rules: the demo's pixels", "[book][figures
   //   cube 1: (102.004, 274.026) (204.249, 217.766) (204.249, 43.553) (102.004, 54.805)
   //           (-42.125, 217.766) (67.254, 180.672) (67.254, 36.134) (-42.125, 43.553)
   RequireVertexPixels(image, {
-                                 {209, 323, kPurple}, {51, 327, kPurple}, {51, 495, kCyan},  {209, 471, kCyan},
-                                 {278, 330, kPurple}, {82, 335, kPurple}, {82, 557, kCyan},  {278, 517, kCyan},
-                                 {402, 25, kPurple},  {504, 82, kPurple}, {504, 256, kCyan}, {402, 245, kCyan},
-                                 {258, 82, kPurple},  {367, 119, kPurple}, {367, 263, kCyan}, {258, 256, kCyan},
+                                 {209, 323, kPurple},
+                                 {51, 327, kPurple},
+                                 {51, 495, kCyan},
+                                 {209, 471, kCyan},
+                                 {278, 330, kPurple},
+                                 {82, 335, kPurple},
+                                 {82, 557, kCyan},
+                                 {278, 517, kCyan},
+                                 {402, 25, kPurple},
+                                 {504, 82, kPurple},
+                                 {504, 256, kCyan},
+                                 {402, 245, kCyan},
+                                 {258, 82, kPurple},
+                                 {367, 119, kPurple},
+                                 {367, 263, kCyan},
+                                 {258, 256, kCyan},
                              });
   RequireCounts(image, 389, 658, 689, 1098, 1394, 1420);  // 5648 painted pixels
 }

@@ -108,7 +108,8 @@ TEST_CASE("DrawLine steps along y when |dx| <= |dy|, bottom to top, and at |dx| 
   REQUIRE(Line({1, 1}, {3.5, -1.5}) == std::set<Pixel>{{13, 10}, {12, 9}, {11, 9}});
 }
 
-TEST_CASE("DrawLine: a point is one pixel, and endpoints beyond 2^20 pixels or not numbers are refused", "[book][lines]") {
+TEST_CASE("DrawLine: a point is one pixel, and endpoints beyond 2^20 pixels or not numbers are refused",
+          "[book][lines]") {
   REQUIRE(Line({-3.7, 4.2}, {-3.7, 4.2}) == std::set<Pixel>{{7, 5}});
   DemoCanvas canvas(20, 20, kWhite);
   REQUIRE_THROWS_AS(DrawLine(canvas, {0, 0}, {2e6, 1}, kRed), std::invalid_argument);

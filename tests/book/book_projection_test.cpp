@@ -28,7 +28,8 @@ TEST_CASE("ProjectVertex on the demos' numbers, by hand", "[book][projection]") 
   REQUIRE(ProjectVertex({-0.5, 1, 8, 5}, kChapterViewport, kChapterCanvas) == CanvasPoint{-37.5, 75});
 }
 
-TEST_CASE("ProjectVertex uses the scene's d, viewport and canvas, in the demo's order of operations", "[book][projection]") {
+TEST_CASE("ProjectVertex uses the scene's d, viewport and canvas, in the demo's order of operations",
+          "[book][projection]") {
   // Viewport 2 x 1 at d = 2, canvas 800 x 300, vertex (1, 0.5, 4): viewport point (1·2/4, 0.5·2/4)
   // = (0.5, 0.25), canvas point (0.5·800/2, 0.25·300/1) = (200, 75).
   REQUIRE(ProjectVertex({1, 0.5, 4, 1}, Viewport{2, 1, 2}, Canvas{800, 300}) == CanvasPoint{200, 75});

@@ -1,10 +1,10 @@
 // The book's renderer on small scenes: the scene's background, instances in order, and the
 // scenes it refuses (odd canvases, vertices projecting out of reach) with where and why.
 #include "book/book_renderer.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
 
+#include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <string>
 
@@ -18,10 +18,12 @@ namespace {
 Scene TriangleScene(const std::string& canvas, double z0, const std::string& instances) {
   return ParseScene(R"({"canvas": )" + canvas + R"(, "viewport": {"width": 1, "height": 1, "distance": 1},
       "camera": {"position": [0, 0, 0]},
-      "models": {"t": {"vertices": [[0, 0, )" + std::to_string(z0) + R"(], [1, 0, 2], [0, 1, 2], [0, 0, 0]],
+      "models": {"t": {"vertices": [[0, 0, )" +
+                        std::to_string(z0) + R"(], [1, 0, 2], [0, 1, 2], [0, 0, 0]],
                        "triangles": [[0, 1, 2, "red"]]},
                  "u": {"vertices": [[0, 0, 2], [1, 0, 2], [0, 1, 2]], "triangles": [[0, 1, 2, "blue"]]}},
-      "instances": )" + instances + "}",
+      "instances": )" + instances +
+                        "}",
                     "test.json");
 }
 
@@ -49,8 +51,8 @@ TEST_CASE("The book's renderer starts from the scene's background and draws late
   // Canvas 8 x 8, so columns 4 + (x|0) and rows 3 - (y|0). The triangle at z = 2 projects to
   // (0, 0), (4, 0), (0, 4); 4 is off the canvas (column 8, row -1). The unused vertex 3 sits at
   // z = 0 and is never looked at.
-  const Image red = RenderScene(TriangleScene(R"({"width": 8, "height": 8, "background": [10, 20, 30]})", 2,
-                                               R"([{"model": "t"}])"));
+  const Image red =
+      RenderScene(TriangleScene(R"({"width": 8, "height": 8, "background": [10, 20, 30]})", 2, R"([{"model": "t"}])"));
   REQUIRE(red.width == 8);
   const std::uint8_t* corner = red.pixel(0, 7);
   REQUIRE((corner[0] == 10 && corner[1] == 20 && corner[2] == 30 && corner[3] == 255));
@@ -62,7 +64,8 @@ TEST_CASE("The book's renderer starts from the scene's background and draws late
   REQUIRE(Count(red, {255, 0, 0}) == 10);
   REQUIRE(Count(red, {10, 20, 30}) == 64 - 10);
   // The blue copy drawn after the red one covers it pixel for pixel.
-  const Image both = RenderScene(TriangleScene(R"({"width": 8, "height": 8})", 2, R"([{"model": "t"}, {"model": "u"}])"));
+  const Image both =
+      RenderScene(TriangleScene(R"({"width": 8, "height": 8})", 2, R"([{"model": "t"}, {"model": "u"}])"));
   REQUIRE(Count(both, {255, 0, 0}) == 0);
   REQUIRE(Count(both, {0, 0, 255}) == 10);
 }
@@ -87,10 +90,11 @@ TEST_CASE("The book's rules refuse an odd canvas, and a drawn vertex that projec
                  "ok": {"vertices": [[0, 0, 2], [1, 0, 2], [0, 1, 2]], "triangles": [[0, 1, 2, "red"]]}},
       "instances": [{"model": "ok", "grid": {"count": [2, 1, 1], "spacing": [0, 0, 0]}}, {"model": "near"}]})",
                                 "near.json");
-  REQUIRE(ErrorOf(near) == "instances[1]: model \"near\" triangle 0: vertex 1 is at camera-space z = "
-                           "9.5367431640625e-07 and projects to canvas (8388608, 0); the demos walk every step of a "
-                           "line, on the canvas or off it, so the book's rules stop at 2^20 pixels from the centre "
-                           "(the Vulkan rules clip instead)");
+  REQUIRE(ErrorOf(near) ==
+          "instances[1]: model \"near\" triangle 0: vertex 1 is at camera-space z = "
+          "9.5367431640625e-07 and projects to canvas (8388608, 0); the demos walk every step of a "
+          "line, on the canvas or off it, so the book's rules stop at 2^20 pixels from the centre "
+          "(the Vulkan rules clip instead)");
   // The same vertex in a grid's second copy.
   const Scene grid = ParseScene(R"({"canvas": {"width": 8, "height": 8}, "camera": {"position": [0, 0, 0]},
       "viewport": {"width": 1, "height": 1, "distance": 1},

@@ -1,11 +1,10 @@
 // Properties of the chain that hold for every shipped scene: inverses, orthonormal rotations,
 // and F · V agreeing with the chapter's step-by-step route (Listing 10-3).
 #include "chain/matrices.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
 #include "chain/vertex_trace.hpp"
-
+#include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <glm/matrix.hpp>
 
@@ -72,8 +71,8 @@ TEST_CASE("A million accumulated steps drift from orthonormal unless re-orthonor
   };
   const double raw = drift("accumulated-rotation.json");
   const double fixed = drift("accumulated-rotation-reorthonormalized.json");
-  REQUIRE(raw > 1e-12);   // the drift is real
-  REQUIRE(raw < 1e-10);   // but in double it stays tiny: about 7e-11 after 1e6 steps
+  REQUIRE(raw > 1e-12);  // the drift is real
+  REQUIRE(raw < 1e-10);  // but in double it stays tiny: about 7e-11 after 1e6 steps
   REQUIRE(fixed < 1e-15);
 }
 

@@ -1,12 +1,12 @@
 // The draw list both renderers consume: F rounded once from the double chain, and the checks
 // every renderer makes before drawing a list built elsewhere.
 #include "chain/draw_list.hpp"
+
 #include "chain/matrices.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/chapter_cube.hpp"
 #include "support/test_support.hpp"
-
-#include "support/catch.hpp"
 
 using namespace twinraster;
 
@@ -52,7 +52,8 @@ TEST_CASE("ValidateDrawList names what a renderer could not draw", "[draw-list]"
   REQUIRE(message(list) == "mesh 0 has 12 triangles but 11 colours");
 }
 
-TEST_CASE("ValidateDrawList: lighting must cover every draw and every lit mesh, and never a wireframe", "[chain][lighting]") {
+TEST_CASE("ValidateDrawList: lighting must cover every draw and every lit mesh, and never a wireframe",
+          "[chain][lighting]") {
   Scene scene;
   scene.canvas = Canvas{.width = 8, .height = 8};
   Model cube = test::ChapterCube();

@@ -1,10 +1,10 @@
 // `twinraster explain`, run as a user runs it: the text names the chapter's matrices and traces
 // one vertex per instance unless asked for all, --html prints only where the page went, and the
 // JSON trace agrees with the chapter's canvas formula and with Vulkan's framebuffer convention.
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
 #include "support/negative_zero.hpp"
+#include "support/test_support.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -26,7 +26,10 @@ TEST_CASE("explain prints the chain with the chapter's names", "[explain]") {
   REQUIRE(r.err.empty());
 }
 
-TEST_CASE("explain --json: canvas equals x·d·Cw/(z·Vw) (orthographic x·Cw/Vw), framebuffer is the canvas moved to Vulkan's origin", "[explain]") {
+TEST_CASE(
+    "explain --json: canvas equals x·d·Cw/(z·Vw) (orthographic x·Cw/Vw), framebuffer is the canvas moved to Vulkan's "
+    "origin",
+    "[explain]") {
   for (const auto& file : test::ShippedScenes()) {
     INFO(file.string());
     const test::CliResult r = test::RunCli({"explain", file.string(), "--json"});
@@ -84,7 +87,8 @@ TEST_CASE("explain --instance and --vertex select one trace, and reject indices 
 
 TEST_CASE("explain - reads the scene from standard input, named <stdin>", "[explain]") {
   const std::string text = test::ReadFile(test::SourcePath("scenes/cgfs-transforms.json"));
-  const test::CliResult from_file = test::RunCli({"explain", test::SourcePath("scenes/cgfs-transforms.json").string(), "--json"});
+  const test::CliResult from_file =
+      test::RunCli({"explain", test::SourcePath("scenes/cgfs-transforms.json").string(), "--json"});
   const test::CliResult from_stdin = test::RunCliWithInput({"explain", "-", "--json"}, text);
   INFO(from_stdin.err);
   REQUIRE(from_stdin.exit_code == 0);

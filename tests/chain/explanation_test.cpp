@@ -1,7 +1,8 @@
 // chain/explanation.hpp on its own: the typed Explanation holds the chain's matrices, the
 // instances asked for, and the vertices ExplainOptions chose, with the one to follow marked.
-#include "base/usage_error.hpp"
 #include "chain/explanation.hpp"
+
+#include "base/usage_error.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"

@@ -1,9 +1,9 @@
 // The chapter's matrices against values derived by hand from its formulas.
 #include "chain/matrices.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
 
+#include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <cmath>
 
@@ -38,10 +38,9 @@ TEST_CASE("The chapter demo's rotation about Y, by hand", "[matrices]") {
 
 TEST_CASE("cgfs-transforms: M_Camera = C_R⁻¹ · C_T⁻¹ by hand", "[matrices]") {
   // C_R⁻¹ = C_Rᵀ = [[√3/2, 0, -1/2], [0, 1, 0], [1/2, 0, √3/2]]; translation column = C_R⁻¹ · (3, -1, -2).
-  RequireNear(CameraMatrix(Load("cgfs-transforms").camera), {{kSqrt3 / 2, 0, -0.5, 3 * kSqrt3 / 2 + 1},
-                                                              {0, 1, 0, -1},
-                                                              {0.5, 0, kSqrt3 / 2, 1.5 - kSqrt3},
-                                                              {0, 0, 0, 1}});
+  RequireNear(
+      CameraMatrix(Load("cgfs-transforms").camera),
+      {{kSqrt3 / 2, 0, -0.5, 3 * kSqrt3 / 2 + 1}, {0, 1, 0, -1}, {0.5, 0, kSqrt3 / 2, 1.5 - kSqrt3}, {0, 0, 0, 1}});
 }
 
 TEST_CASE("cgfs-transforms: M_Model = I_T · I_R · I_S by hand", "[matrices]") {
@@ -58,13 +57,11 @@ TEST_CASE("M_Projection from Vw, Vh, d, Cw, Ch, near, far by hand", "[matrices]"
   const Viewport viewport{1.5, 0.75, 2};
   const Canvas canvas{800, 400, {}};
   const Depth depth{0.5, 40};
-  RequireNear(ProjectionMatrix(viewport, canvas, depth), {{2 * 2 / 1.5, 0, 0, 0},
-                                                          {0, -2 * 2 / 0.75, 0, 0},
-                                                          {0, 0, 40 / 39.5, -40 * 0.5 / 39.5},
-                                                          {0, 0, 1, 0}});
+  RequireNear(ProjectionMatrix(viewport, canvas, depth),
+              {{2 * 2 / 1.5, 0, 0, 0}, {0, -2 * 2 / 0.75, 0, 0}, {0, 0, 40 / 39.5, -40 * 0.5 / 39.5}, {0, 0, 1, 0}});
   // The chapter's own 3x4 is the first, second and fourth rows of M · P before CanvasToClip.
   const glm::dmat4 chapter = ViewportToCanvas(viewport, canvas) * PerspectiveMatrix(viewport, depth);
-  REQUIRE(chapter[0][0] == Approx(2 * 800 / 1.5).epsilon(kTolerance));  // d·Cw/Vw
+  REQUIRE(chapter[0][0] == Approx(2 * 800 / 1.5).epsilon(kTolerance));   // d·Cw/Vw
   REQUIRE(chapter[1][1] == Approx(2 * 400 / 0.75).epsilon(kTolerance));  // d·Ch/Vh
   REQUIRE(chapter[2][3] == 1);
 }
@@ -129,9 +126,11 @@ TEST_CASE("Reversed Z maps near to depth 1 and far to depth 0", "[matrices]") {
   }
 }
 
-TEST_CASE("The orthographic P by hand: x and y kept, depth linear from near to far, w = 1", "[matrices][orthographic]") {
+TEST_CASE("The orthographic P by hand: x and y kept, depth linear from near to far, w = 1",
+          "[matrices][orthographic]") {
   // near 2, far 10: depth = (z - 2) / 8 = z/8 - 1/4; reversed: (10 - z) / 8 = -z/8 + 5/4.
-  RequireNear(OrthographicMatrix(Depth{2, 10, false}), {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0.125, -0.25}, {0, 0, 0, 1}});
+  RequireNear(OrthographicMatrix(Depth{2, 10, false}),
+              {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0.125, -0.25}, {0, 0, 0, 1}});
   RequireNear(OrthographicMatrix(Depth{2, 10, true}), {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -0.125, 1.25}, {0, 0, 0, 1}});
   // M_Projection for a 320 x 240 canvas and an 8 x 6 viewport: x · 320/8 = 40 px per unit, then
   // 2/320 to clip: clip x = x / 4; y likewise with Vulkan's flip: clip y = -y / 3. d plays no part.
@@ -148,7 +147,8 @@ TEST_CASE("The orthographic P by hand: x and y kept, depth linear from near to f
   }
 }
 
-TEST_CASE("catlike-orthographic: the scene says orthographic, and its M_Projection has no w = z row", "[matrices][orthographic]") {
+TEST_CASE("catlike-orthographic: the scene says orthographic, and its M_Projection has no w = z row",
+          "[matrices][orthographic]") {
   const Scene scene = Load("catlike-orthographic");
   REQUIRE(scene.viewport.projection == Projection::kOrthographic);
   const glm::dmat4 projection = SceneChain(scene).projection;

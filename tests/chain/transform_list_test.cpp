@@ -3,9 +3,9 @@
 #include "chain/matrices.hpp"
 #include "chain/vertex_trace.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -22,7 +22,8 @@ std::string ListScene(const std::string& transform, const std::string& grid = ""
   return R"({"canvas": {"width": 64, "height": 48}, "viewport": {"width": 1, "height": 1, "distance": 1},
              "camera": {"position": [0, 0, 0]},
              "models": {"tri": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2, "red"]]}},
-             "instances": [{"model": "tri", "transform": )" + transform + grid + "}]}";
+             "instances": [{"model": "tri", "transform": )" +
+         transform + grid + "}]}";
 }
 
 glm::dvec3 World(const Transform& t, glm::dvec3 v) { return glm::dvec3(ModelMatrix(t) * glm::dvec4(v, 1.0)); }
@@ -55,7 +56,8 @@ TEST_CASE("Figures 10-4 and 10-5: rotate then translate is not translate then ro
 }
 
 TEST_CASE("A transform list: steps in the order written, the object form unchanged", "[chain][transform-list]") {
-  const Scene listed = ParseScene(ListScene(R"([{"scale": 2}, {"translation": [1, 0, 0]}, {"scale": [1, 3, 1]}])"), "list.json");
+  const Scene listed =
+      ParseScene(ListScene(R"([{"scale": 2}, {"translation": [1, 0, 0]}, {"scale": [1, 3, 1]}])"), "list.json");
   // (x, y, z) -> (2x, 2y, 2z) -> (2x + 1, 2y, 2z) -> (2x + 1, 6y, 2z)
   CHECK(World(listed.instances[0].transform, {1, 1, 1}) == glm::dvec3(3, 6, 2));
   const Scene empty = ParseScene(ListScene("[]"), "empty.json");
@@ -66,16 +68,18 @@ TEST_CASE("A transform list: steps in the order written, the object form unchang
   CHECK(World(object.instances[0].transform, {1, 1, 1}) == glm::dvec3(3, 2, 2));
 }
 
-TEST_CASE("A grid of a transform list moves each copy after the steps, in world space", "[chain][transform-list][grid]") {
-  const Scene scene = ParseScene(
-      ListScene(R"([{"translation": [0, 0, 5]}, {"rotation": {"axis": "y", "degrees": 90}}])",
-                R"(, "grid": {"count": [2, 1, 1], "spacing": [10, 1, 1]})"),
-      "grid.json");
+TEST_CASE("A grid of a transform list moves each copy after the steps, in world space",
+          "[chain][transform-list][grid]") {
+  const Scene scene =
+      ParseScene(ListScene(R"([{"translation": [0, 0, 5]}, {"rotation": {"axis": "y", "degrees": 90}}])",
+                           R"(, "grid": {"count": [2, 1, 1], "spacing": [10, 1, 1]})"),
+                 "grid.json");
   REQUIRE(scene.instances.size() == 2);
   REQUIRE(scene.instances[0].transform.steps == scene.instances[1].transform.steps);  // shared, not copied
   // The list takes the origin to (-5, 0, 0) (a quarter turn of (0, 0, 5)); the copies sit 10 apart
   // around that, at x = -5 - 5 and -5 + 5.
-  const glm::dvec3 a = World(scene.instances[0].transform, {0, 0, 0}), b = World(scene.instances[1].transform, {0, 0, 0});
+  const glm::dvec3 a = World(scene.instances[0].transform, {0, 0, 0}),
+                   b = World(scene.instances[1].transform, {0, 0, 0});
   CHECK(a.x == Approx(-10));
   CHECK(b.x == Approx(0).margin(1e-12));
   CHECK(a.z == Approx(0).margin(1e-12));
@@ -86,8 +90,8 @@ TEST_CASE("explain shows each step of a transform list and their product", "[cha
   const test::CliResult text = test::RunCli({"explain", file, "--instance", "1", "--vertex", "0"});
   INFO(text.err);
   REQUIRE(text.exit_code == 0);
-  for (const char* expected : {"a list of 2 steps, applied in the order written", "step 1: I_T1", "step 2: I_R2",
-                               "M_Model = I_R2 · I_T1"}) {
+  for (const char* expected :
+       {"a list of 2 steps, applied in the order written", "step 1: I_T1", "step 2: I_R2", "M_Model = I_R2 · I_T1"}) {
     INFO(expected);
     CHECK(text.out.find(expected) != std::string::npos);
   }

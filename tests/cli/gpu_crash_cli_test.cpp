@@ -2,9 +2,9 @@
 // crash or the time limit and the scene, the twin's image is still written, a batch goes on to its
 // later scenes, and exit code 5 tells a script what happened.
 #include "image/png_file.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -27,7 +27,8 @@ TEST_CASE("render: a Vulkan driver that aborts is reported, and the twin's image
   const test::CliResult r = test::RunCli({"render", kTransforms, "-o", out}, {"TWINRASTER_TEST_GPU_FAULT=abort"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 5);
-  CHECK(r.out.find("gpu: the Vulkan driver crashed (SIGABRT) on " + kTransforms + "; no gpu image") != std::string::npos);
+  CHECK(r.out.find("gpu: the Vulkan driver crashed (SIGABRT) on " + kTransforms + "; no gpu image") !=
+        std::string::npos);
   CHECK(r.out.find("gpu vs cpu: not compared, there is no gpu image") != std::string::npos);
   CHECK(r.out.find("twin: ") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "f-gpu.png"));
@@ -48,8 +49,8 @@ TEST_CASE("render: a Vulkan driver that hangs is stopped by --timeout and report
 TEST_CASE("render: a batch goes on after the Vulkan driver crashes, each scene in a fresh GPU process",
           "[cli][render][isolation]") {
   const test::TempDir dir;
-  const test::CliResult r =
-      test::RunCli({"render", kTransforms, kLookAt, "-o", dir.path().string(), "--json"}, {"TWINRASTER_TEST_GPU_FAULT=abort"});
+  const test::CliResult r = test::RunCli({"render", kTransforms, kLookAt, "-o", dir.path().string(), "--json"},
+                                         {"TWINRASTER_TEST_GPU_FAULT=abort"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 5);
   int scenes = 0;

@@ -3,9 +3,9 @@
 // path (GALLIUM_OVERRIDE_CPU_CAPS=nosse), for which the twin has no bit-exact rules and must say so
 // rather than compare.
 #include "cpu/twin_rules.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -33,9 +33,10 @@ bool KnownRelease(const std::string& mesa, const std::string& major) {
 
 // Whether the table names this release's 128-bit path as unproven, with a reason.
 bool Unproven128(const std::string& mesa, const std::string& major, const std::string& instruction_set) {
-  return std::any_of(cpu::UnprovenLavapipes().begin(), cpu::UnprovenLavapipes().end(), [&](const cpu::UnprovenLavapipe& u) {
-    return u.mesa == mesa && u.llvm_major == major && u.instruction_set == instruction_set && u.vector_bits == 128;
-  });
+  return std::any_of(
+      cpu::UnprovenLavapipes().begin(), cpu::UnprovenLavapipes().end(), [&](const cpu::UnprovenLavapipe& u) {
+        return u.mesa == mesa && u.llvm_major == major && u.instruction_set == instruction_set && u.vector_bits == 128;
+      });
 }
 
 }  // namespace
@@ -107,8 +108,9 @@ TEST_CASE("render on lavapipe's no-SSE path: the twin says it has no rules, and 
   const test::TempDir dir;
   // catlike-grid: x87 arithmetic moves edge pixels there (docs/lavapipe-paths.md).
   const std::string scene = test::SourcePath("scenes/catlike-grid.json").string();
-  const test::CliResult r = test::RunCli(
-      {"render", scene, "--backend", "both", "--json", "-o", (dir / "t.png").string()}, {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
+  const test::CliResult r =
+      test::RunCli({"render", scene, "--backend", "both", "--json", "-o", (dir / "t.png").string()},
+                   {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
   INFO(r.out << r.err);
   const nlohmann::json result = nlohmann::json::parse(r.out);
   // lavapipe took the path: it names 128-bit vectors, and its picture is not the twin's.
@@ -119,8 +121,8 @@ TEST_CASE("render on lavapipe's no-SSE path: the twin says it has no rules, and 
   const std::string text = result["twin_rules"]["text"];
   CHECK(text.starts_with("no bit-exact rules for Mesa "));
   CHECK(text.find("no SSE") != std::string::npos);
-  const test::CliResult plain = test::RunCli(
-      {"render", scene, "--backend", "both", "-o", (dir / "u.png").string()}, {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
+  const test::CliResult plain = test::RunCli({"render", scene, "--backend", "both", "-o", (dir / "u.png").string()},
+                                             {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
   INFO(plain.out << plain.err);
   CHECK(plain.out.find("twin: no bit-exact rules for Mesa ") != std::string::npos);
 }

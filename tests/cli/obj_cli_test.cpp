@@ -2,10 +2,9 @@
 // command line takes one.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
-
-#include "support/catch.hpp"
 
 #include <string>
 #include <vector>
@@ -26,7 +25,8 @@ TEST_CASE("render mesh.obj --backend cpu writes the framed mesh as a PNG", "[cli
   const test::TempDir dir;
   test::WriteFile(dir / "octahedron.obj", kOctahedron);
   const auto out = dir / "out.png";
-  const test::CliResult r = test::RunCli({"render", (dir / "octahedron.obj").string(), "--backend", "cpu", "-o", out.string()});
+  const test::CliResult r =
+      test::RunCli({"render", (dir / "octahedron.obj").string(), "--backend", "cpu", "-o", out.string()});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("1 instance, 8 triangles, 800 x 800") != std::string::npos);
@@ -49,7 +49,8 @@ TEST_CASE("render mesh.obj --backend cpu writes the framed mesh as a PNG", "[cli
 TEST_CASE("explain mesh.obj prints the chain of the scene render gives it", "[cli][obj]") {
   const test::TempDir dir;
   test::WriteFile(dir / "octahedron.obj", kOctahedron);
-  const test::CliResult r = test::RunCli({"explain", (dir / "octahedron.obj").string(), "--instance", "0", "--vertex", "0"});
+  const test::CliResult r =
+      test::RunCli({"explain", (dir / "octahedron.obj").string(), "--instance", "0", "--vertex", "0"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("Scene \"octahedron\": canvas Cw x Ch = 800 x 800 px") != std::string::npos);
@@ -60,13 +61,15 @@ TEST_CASE("A bad OBJ file on the command line: one line naming it and the line, 
   const test::TempDir dir;
   const auto bad = dir / "bad.obj";
   test::WriteFile(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n");
-  const std::vector<std::vector<std::string>> runs = {{"render", bad.string(), "--backend", "cpu"}, {"explain", bad.string()}};
+  const std::vector<std::vector<std::string>> runs = {{"render", bad.string(), "--backend", "cpu"},
+                                                      {"explain", bad.string()}};
   for (const auto& args : runs) {
     INFO(args[0]);
     const test::CliResult r = test::RunCli(args);
     REQUIRE(r.exit_code == 2);
-    REQUIRE(r.err == "twinraster: " + bad.string() +
-                         ": line 5: f: corner 3 \"4\": vertex index 4 is out of range: the file has 3 vertices (v lines)\n");
+    REQUIRE(r.err ==
+            "twinraster: " + bad.string() +
+                ": line 5: f: corner 3 \"4\": vertex index 4 is out of range: the file has 3 vertices (v lines)\n");
   }
   const test::CliResult missing = test::RunCli({"render", (dir / "none.obj").string(), "--backend", "cpu"});
   REQUIRE(missing.exit_code == 2);

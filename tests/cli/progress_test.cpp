@@ -1,9 +1,9 @@
 // Progress on standard error: status lines replaced in place and erased, lines that stay, shown
 // only on a terminal, and the line each bench row prints.
-#include "bench/bench_suite.hpp"
 #include "cli/progress.hpp"
-#include "report/bench_tables.hpp"
 
+#include "bench/bench_suite.hpp"
+#include "report/bench_tables.hpp"
 #include "support/catch.hpp"
 
 #include <fcntl.h>
@@ -29,7 +29,8 @@ TEST_CASE("Progress: a status line is replaced by the next and erased at the end
           "\r\033[Kgpu: drawing...\r\033[Kcpu: drawing...\r\033[K[1/2] a row\n[2/2] a row\n\r\033[Kwriting...\r\033[K");
 }
 
-TEST_CASE("Progress: a status longer than a terminal line is cut, so that erasing it erases all of it", "[cli][progress]") {
+TEST_CASE("Progress: a status longer than a terminal line is cut, so that erasing it erases all of it",
+          "[cli][progress]") {
   std::ostringstream out;
   Progress progress(&out);
   progress.Status(std::string(200, 'x'));
@@ -78,5 +79,6 @@ TEST_CASE("BenchProgressLine numbers the row and gives its figures", "[cli][prog
   row.method = "lavapipe";
   row.threads = 1;
   row.vertex_error_px = -1;  // whole-frame rows have no vertex error
-  REQUIRE(report::BenchProgressLine(row, 56, 56) == "[56/56] hard/far-1e5 lavapipe, 1 thread: frame 0.97 ms, image error 2514 px");
+  REQUIRE(report::BenchProgressLine(row, 56, 56) ==
+          "[56/56] hard/far-1e5 lavapipe, 1 thread: frame 0.97 ms, image error 2514 px");
 }

@@ -2,9 +2,9 @@
 // files that a failed run never truncates or destroys.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -49,11 +49,13 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
 
 TEST_CASE("Without a Vulkan device: gpu exits 3 saying what to install, cpu still works", "[cli][render]") {
   const test::TempDir dir;
-  const test::CliResult gpu = test::RunCli({"render", kScene, "-o", (dir / "g.png").string(), "--backend", "gpu"}, {kNoVulkan});
+  const test::CliResult gpu =
+      test::RunCli({"render", kScene, "-o", (dir / "g.png").string(), "--backend", "gpu"}, {kNoVulkan});
   REQUIRE(gpu.exit_code == 3);
   REQUIRE(gpu.err.find("apt-get install mesa-vulkan-drivers") != std::string::npos);
   REQUIRE(!std::filesystem::exists(dir / "g.png"));
-  const test::CliResult cpu = test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu"}, {kNoVulkan});
+  const test::CliResult cpu =
+      test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu"}, {kNoVulkan});
   INFO(cpu.err);
   REQUIRE(cpu.exit_code == 0);
   REQUIRE(ReadPng(dir / "c.png").height == 600);
@@ -114,7 +116,8 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
 
   // Sizes that differ: no pixel counts (null, not missing), no diff, exit 1.
   WritePng(dir / "small.png", Image(2, 2));
-  const test::CliResult sizes = test::RunCli({"compare", (dir / "a.png").string(), (dir / "small.png").string(), "--json"});
+  const test::CliResult sizes =
+      test::RunCli({"compare", (dir / "a.png").string(), (dir / "small.png").string(), "--json"});
   REQUIRE(sizes.exit_code == 1);
   const auto s = nlohmann::json::parse(sizes.out);
   REQUIRE(s["same_size"] == false);
@@ -125,7 +128,8 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(s["diff"].is_null());
 }
 
-TEST_CASE("render -o must name a file, and an output that is a directory fails before anything is replaced", "[cli][render]") {
+TEST_CASE("render -o must name a file, and an output that is a directory fails before anything is replaced",
+          "[cli][render]") {
   const test::TempDir dir;
   REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string(), "--backend", "cpu"}).exit_code == 2);
   REQUIRE(test::RunCli({"render", kScene, "-o", dir.path().string() + "/", "--backend", "cpu"}).exit_code == 2);
@@ -144,21 +148,23 @@ TEST_CASE("render -o must name a file, and an output that is a directory fails b
 }
 
 TEST_CASE("Without a Vulkan device, bench exits 3 too", "[cli][bench]") {
-  const test::CliResult r = test::RunCli({"bench", "--runs", "1", "--only", "cgfs-scene", "--scenes",
-                                          test::SourcePath("scenes").string()}, {kNoVulkan});
+  const test::CliResult r = test::RunCli(
+      {"bench", "--runs", "1", "--only", "cgfs-scene", "--scenes", test::SourcePath("scenes").string()}, {kNoVulkan});
   REQUIRE(r.exit_code == 3);
   REQUIRE(r.err.find("mesa-vulkan-drivers") != std::string::npos);
 }
 
-TEST_CASE("render --json keeps every key with one backend: the other backend and the comparison are null", "[cli][render]") {
+TEST_CASE("render --json keeps every key with one backend: the other backend and the comparison are null",
+          "[cli][render]") {
   const test::TempDir dir;
-  const test::CliResult r = test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu", "--json"});
+  const test::CliResult r =
+      test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu", "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"format", "scene", "rules", "wireframe", "width", "height", "instances", "triangles",
-                          "load_ms", "differing_pixels", "max_channel_difference", "diff", "backends", "twin_rules",
-                          "verify"}) {
+  for (const char* key :
+       {"format", "scene", "rules", "wireframe", "width", "height", "instances", "triangles", "load_ms",
+        "differing_pixels", "max_channel_difference", "diff", "backends", "twin_rules", "verify"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
@@ -243,7 +249,8 @@ TEST_CASE("render -o and compare --diff must name .png files, in any case", "[cl
   REQUIRE(test::ReadFile(dir / "keep.jpg") == "earlier result");
   REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 1);
 
-  const test::CliResult upper = test::RunCli({"render", kScene, "-o", (dir / "Frame.PNG").string(), "--backend", "cpu"});
+  const test::CliResult upper =
+      test::RunCli({"render", kScene, "-o", (dir / "Frame.PNG").string(), "--backend", "cpu"});
   INFO(upper.err);
   REQUIRE(upper.exit_code == 0);
   REQUIRE(ReadPng(dir / "Frame.PNG").width == 600);
@@ -252,8 +259,8 @@ TEST_CASE("render -o and compare --diff must name .png files, in any case", "[cl
   b.pixel(0, 0)[0] = 200;
   WritePng(dir / "a.png", a);
   WritePng(dir / "b.png", b);
-  const test::CliResult diff = test::RunCli({"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff",
-                                             (dir / "d.gif").string()});
+  const test::CliResult diff =
+      test::RunCli({"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.gif").string()});
   REQUIRE(diff.exit_code == 2);
   REQUIRE(diff.err.find("--diff") != std::string::npos);
   REQUIRE(!std::filesystem::exists(dir / "d.gif"));
@@ -274,11 +281,20 @@ TEST_CASE("Without a terminal on standard error, render and bench print no progr
   REQUIRE(bench.out.find("[1/") == std::string::npos);
 }
 
-TEST_CASE("On a terminal, render and bench show progress on standard error, and --quiet silences it", "[cli][progress]") {
+TEST_CASE("On a terminal, render and bench show progress on standard error, and --quiet silences it",
+          "[cli][progress]") {
   const test::TempDir dir;
   const std::vector<std::string> render = {"render", kScene, "-o", (dir / "x.png").string()};
-  const std::vector<std::string> bench = {"bench", "--runs", "1", "--only", "cgfs-scene", "--methods",
-                                          "compose-f64,cpu-twin", "--scenes", test::SourcePath("scenes").string(), "--json"};
+  const std::vector<std::string> bench = {"bench",
+                                          "--runs",
+                                          "1",
+                                          "--only",
+                                          "cgfs-scene",
+                                          "--methods",
+                                          "compose-f64,cpu-twin",
+                                          "--scenes",
+                                          test::SourcePath("scenes").string(),
+                                          "--json"};
   const test::CliResult shown = test::RunCliInTerminal(render);
   INFO(shown.out + shown.err);
   REQUIRE(shown.exit_code == 0);
@@ -316,7 +332,8 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   const std::string lookat = test::SourcePath("scenes/lookat.json").string();
   test::WriteFile(dir / "broken.json", "{\"canvas\": ");
   const auto out = dir / "frames";  // made by render
-  const test::CliResult r = test::RunCli({"render", kScene, (dir / "broken.json").string(), lookat, "-o", out.string()});
+  const test::CliResult r =
+      test::RunCli({"render", kScene, (dir / "broken.json").string(), lookat, "-o", out.string()});
   INFO(r.err);
   REQUIRE(r.exit_code == 2);  // the worst: the broken scene's bad input, although the others matched
   REQUIRE(r.err.find("broken.json: line 1") != std::string::npos);
@@ -328,7 +345,8 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   // The Vulkan device is made once: the second scene's set-up is only its buffers.
   REQUIRE(r.out.find("lookat.json: 3 instances, 36 triangles, 640 x 480") != std::string::npos);
 
-  const test::CliResult good = test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
+  const test::CliResult good =
+      test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
   REQUIRE(good.exit_code == 0);
   REQUIRE(ReadPng(out / "lookat.png").width == 640);
   // -o naming a file, and - among several scenes, are refused before anything runs.
@@ -337,7 +355,8 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   REQUIRE(test::RunCli({"render", kScene, "-", "-o", out.string()}).exit_code == 2);
 }
 
-TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so", "[cli][render][wireframe]") {
+TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so",
+          "[cli][render][wireframe]") {
   const test::TempDir dir;
   const test::CliResult r = test::RunCli({"render", kScene, "--wireframe", "-o", (dir / "w.png").string(), "--json"});
   INFO(r.err);

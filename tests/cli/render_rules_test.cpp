@@ -3,10 +3,10 @@
 // rules cannot draw reported like bad scenes.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -20,14 +20,14 @@ const std::string kFigure2 = test::SourcePath("scenes/cgfs-scene.json").string()
 const std::string kFigure10 = test::SourcePath("scenes/cgfs-transforms.json").string();
 const std::string kNoVulkan = "VK_ICD_FILENAMES=/nonexistent/icd.json";  // no driver at all
 
-
 }  // namespace
 
-TEST_CASE("render --rules book draws the demo's canvas on the CPU, with no Vulkan device, named as --backend cpu names it",
-          "[cli][render][book]") {
+TEST_CASE(
+    "render --rules book draws the demo's canvas on the CPU, with no Vulkan device, named as --backend cpu names it",
+    "[cli][render][book]") {
   const test::TempDir dir;
-  const test::CliResult r = test::RunCli({"render", kFigure2, "--rules", "book", "-o", (dir / "f.png").string(), "--json"},
-                                         {kNoVulkan});
+  const test::CliResult r =
+      test::RunCli({"render", kFigure2, "--rules", "book", "-o", (dir / "f.png").string(), "--json"}, {kNoVulkan});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -68,13 +68,15 @@ TEST_CASE("render --rules book draws the demo's canvas on the CPU, with no Vulka
   REQUIRE(ReadPng(dir / "piped.png").rgba == image.rgba);
 }
 
-TEST_CASE("render --rules book reports a scene the demos cannot draw like a bad scene: exit 2, and the others still render",
-          "[cli][render][book]") {
+TEST_CASE(
+    "render --rules book reports a scene the demos cannot draw like a bad scene: exit 2, and the others still render",
+    "[cli][render][book]") {
   const test::TempDir dir;
   std::string odd = test::ReadFile(kFigure2);
   const std::string width = "\"width\": 600";
   odd.replace(odd.find(width), width.size(), "\"width\": 601");
-  const test::CliResult r = test::RunCliWithInput({"render", "-", "--rules", "book", "-o", (dir / "odd.png").string()}, odd);
+  const test::CliResult r =
+      test::RunCliWithInput({"render", "-", "--rules", "book", "-o", (dir / "odd.png").string()}, odd);
   REQUIRE(r.exit_code == 2);
   REQUIRE(r.out.empty());
   REQUIRE(r.err.rfind("twinraster: <stdin>: canvas: --rules book: the book's rules need an even width and height (this "
@@ -82,7 +84,8 @@ TEST_CASE("render --rules book reports a scene the demos cannot draw like a bad 
                       0) == 0);
   REQUIRE_FALSE(std::filesystem::exists(dir / "odd.png"));
   // The same scene under the Vulkan rules draws.
-  REQUIRE(test::RunCliWithInput({"render", "-", "--backend", "cpu", "-o", (dir / "odd.png").string()}, odd).exit_code == 0);
+  REQUIRE(test::RunCliWithInput({"render", "-", "--backend", "cpu", "-o", (dir / "odd.png").string()}, odd).exit_code ==
+          0);
 
   test::WriteFile(dir / "odd.json", odd);
   const auto out = dir / "frames";

@@ -1,8 +1,7 @@
 // The command line itself: mistakes give one line saying what is wrong (with the closest valid
 // command or option) and where to read more, exit code 2; --help and --version print on stdout.
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <filesystem>
 #include <regex>
@@ -26,16 +25,22 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
       {{"--frobnicate"}, "twinraster: unknown option --frobnicate", "see 'twinraster --help'"},
       {{"--verison"}, "twinraster: unknown option --verison (did you mean --version?)", "see 'twinraster --help'"},
       {{"explain"}, "twinraster explain: missing SCENE", "see 'twinraster explain --help'"},
-      {{"explain", "a.json", "b.json"}, "twinraster explain: unexpected argument b.json", "see 'twinraster explain --help'"},
+      {{"explain", "a.json", "b.json"},
+       "twinraster explain: unexpected argument b.json",
+       "see 'twinraster explain --help'"},
       {{"compare", "a.png"}, "twinraster compare: missing B.png", "see 'twinraster compare --help'"},
-      {{"render", scene, "--backnd", "gpu"}, "twinraster render: unknown option --backnd (did you mean --backend?)",
+      {{"render", scene, "--backnd", "gpu"},
+       "twinraster render: unknown option --backnd (did you mean --backend?)",
        "see 'twinraster render --help'"},
-      {{"render", scene, "--jsno=1"}, "twinraster render: unknown option --jsno (did you mean --json?)",
+      {{"render", scene, "--jsno=1"},
+       "twinraster render: unknown option --jsno (did you mean --json?)",
        "see 'twinraster render --help'"},
       {{"render", scene, "--backend", "gpuu"},
        "twinraster render: --backend: unknown backend \"gpuu\" (did you mean \"gpu\"?); choose from gpu, cpu, both",
        "see 'twinraster render --help'"},
-      {{"render", scene, "--threads"}, "twinraster render: option --threads needs a value", "see 'twinraster render --help'"},
+      {{"render", scene, "--threads"},
+       "twinraster render: option --threads needs a value",
+       "see 'twinraster render --help'"},
       {{"render", scene, "--rules", "book", "--backend", "gpu"},
        "twinraster render: --rules book draws on the CPU only, as the chapter's demos do: drop --backend gpu",
        "see 'twinraster render --help'"},
@@ -45,18 +50,27 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
       {{"render", scene, "--rules", "bok"},
        "twinraster render: --rules: unknown rule set \"bok\" (did you mean \"book\"?); choose from vulkan, book",
        "see 'twinraster render --help'"},
-      {{"render", scene, "--json=maybe"}, "twinraster render: --json: cannot take the value \"maybe\"",
+      {{"render", scene, "--json=maybe"},
+       "twinraster render: --json: cannot take the value \"maybe\"",
        "see 'twinraster render --help'"},
-      {{"explain", scene, "--vertex", "x"}, "twinraster explain: --vertex: expects a non-negative integer, got \"x\"",
+      {{"explain", scene, "--vertex", "x"},
+       "twinraster explain: --vertex: expects a non-negative integer, got \"x\"",
        "see 'twinraster explain --help'"},
-      {{"explain", scene, "compare"}, "twinraster explain: unexpected argument compare", "see 'twinraster explain --help'"},
-      {{"render", scene, "--png-level", "13"}, "twinraster render: --png-level: expects an integer in 0..12, got \"13\"",
+      {{"explain", scene, "compare"},
+       "twinraster explain: unexpected argument compare",
+       "see 'twinraster explain --help'"},
+      {{"render", scene, "--png-level", "13"},
+       "twinraster render: --png-level: expects an integer in 0..12, got \"13\"",
        "see 'twinraster render --help'"},
-      {{"render", scene, scene}, "twinraster render: two scenes are named \"cgfs-scene\": their images would overwrite each other; render them in separate calls",
+      {{"render", scene, scene},
+       "twinraster render: two scenes are named \"cgfs-scene\": their images would overwrite each other; render them "
+       "in separate calls",
        "see 'twinraster render --help'"},
-      {{"bench", "--runs", "0"}, "twinraster bench: --runs: expects an integer in 1..1000, got \"0\"",
+      {{"bench", "--runs", "0"},
+       "twinraster bench: --runs: expects an integer in 1..1000, got \"0\"",
        "see 'twinraster bench --help'"},
-      {{"help", "rendr"}, "twinraster help: unknown command \"rendr\" (did you mean \"render\"?)",
+      {{"help", "rendr"},
+       "twinraster help: unknown command \"rendr\" (did you mean \"render\"?)",
        "see 'twinraster help --help'"},
   };
   for (const Case& c : cases) {
@@ -75,17 +89,23 @@ TEST_CASE("Help: --help, -h and the help command print a command's usage on stdo
     std::vector<std::string> mentions;
   };
   const std::vector<Case> cases = {
-      {{"--help"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench", "--version", "Exit codes"}},
+      {{"--help"},
+       "Usage: twinraster [OPTIONS] [COMMAND]",
+       {"explain", "render", "compare", "bench", "--version", "Exit codes"}},
       {{"-h"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench"}},
       {{"help"}, "Usage: twinraster [OPTIONS] [COMMAND]", {"explain", "render", "compare", "bench"}},
-      {{"render", "--help"}, "Usage: twinraster render [OPTIONS] SCENE...",
-       {"-o,--output OUT.png|DIR", "--png-level 0-12", "--backend gpu|cpu|both", "--rules vulkan|book", "--json", "--device NAME", "--threads N", "-q,--quiet",
-        "standard input", "standard output"}},
-      {{"render", "-h", "no-such-scene.json", "--backend", "cpu"}, "Usage: twinraster render [OPTIONS] SCENE...", {"--backend"}},
+      {{"render", "--help"},
+       "Usage: twinraster render [OPTIONS] SCENE...",
+       {"-o,--output OUT.png|DIR", "--png-level 0-12", "--backend gpu|cpu|both", "--rules vulkan|book", "--json",
+        "--device NAME", "--threads N", "-q,--quiet", "standard input", "standard output"}},
+      {{"render", "-h", "no-such-scene.json", "--backend", "cpu"},
+       "Usage: twinraster render [OPTIONS] SCENE...",
+       {"--backend"}},
       {{"help", "render"}, "Usage: twinraster render [OPTIONS] SCENE...", {"--backend"}},
       {{"explain", "--help"}, "Usage: twinraster explain [OPTIONS] SCENE", {"--instance I", "--vertex V", "--json"}},
       {{"compare", "-h"}, "Usage: twinraster compare [OPTIONS] A.png B.png", {"--diff D.png", "--json"}},
-      {{"bench", "--help"}, "Usage: twinraster bench [OPTIONS]",
+      {{"bench", "--help"},
+       "Usage: twinraster bench [OPTIONS]",
        {"--out DIR", "--runs N", "--only TEXT", "--methods A,B", "--scenes DIR", "--json", "-q,--quiet", "lavapipe"}},
   };
   for (const Case& c : cases) {
@@ -118,7 +138,8 @@ TEST_CASE("Version: --version prints the project version, and in a git checkout 
   }
   // Then the CPU path lavapipe takes here and the lavapipes the twin copies bit for bit.
   REQUIRE(r.out.find("\nlavapipe's CPU path on this machine: ") != std::string::npos);
-  const std::size_t rules = r.out.find("\nthe twin has bit-exact rules for:\n  Mesa 22.3.6 (LLVM 15), AVX2+FMA, 256-bit: ");
+  const std::size_t rules =
+      r.out.find("\nthe twin has bit-exact rules for:\n  Mesa 22.3.6 (LLVM 15), AVX2+FMA, 256-bit: ");
   REQUIRE(rules != std::string::npos);
   // Each row names the CI step that proves it against its driver (docs/lavapipe-paths.md).
   std::istringstream rows(r.out.substr(r.out.find('\n', rules + 1) + 1));

@@ -2,9 +2,9 @@
 // the sentence about a difference, and bad input that names the file and loses nothing.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -26,7 +26,8 @@ std::filesystem::path LavapipeImage(const test::TempDir& dir) {
 
 std::size_t CountRed(const Image& map) {
   std::size_t n = 0;
-  for (std::size_t i = 0; i < map.rgba.size(); i += 4) n += map.rgba[i] == 255 && map.rgba[i + 1] == 0 && map.rgba[i + 2] == 0;
+  for (std::size_t i = 0; i < map.rgba.size(); i += 4)
+    n += map.rgba[i] == 255 && map.rgba[i + 1] == 0 && map.rgba[i + 2] == 0;
   return n;
 }
 
@@ -45,8 +46,9 @@ TEST_CASE("verify: lavapipe's image passes (exit 0), and the map beside it is al
   CHECK(CountRed(map) == 0);
 }
 
-TEST_CASE("verify: an image upside down fails (exit 1), names the worst pixel and what is allowed there, and maps it red",
-          "[cli][verify]") {
+TEST_CASE(
+    "verify: an image upside down fails (exit 1), names the worst pixel and what is allowed there, and maps it red",
+    "[cli][verify]") {
   const test::TempDir dir;
   Image image = ReadPng(LavapipeImage(dir).string());
   Image flipped(image.width, image.height);
@@ -69,7 +71,8 @@ TEST_CASE("verify: an image upside down fails (exit 1), names the worst pixel an
   CHECK_THAT(text.out, HasSubstring(" allowed ("));
 }
 
-TEST_CASE("verify: bad input names the file and the problem, exits 2, and leaves an existing map alone", "[cli][verify]") {
+TEST_CASE("verify: bad input names the file and the problem, exits 2, and leaves an existing map alone",
+          "[cli][verify]") {
   const test::TempDir dir;
   const auto map = dir / "map.png";
   test::WriteFile(map, "an earlier map");
@@ -87,8 +90,8 @@ TEST_CASE("verify: bad input names the file and the problem, exits 2, and leaves
   }
   SECTION("a scene that is not one") {
     test::WriteFile(dir / "bad.json", "{\"canvas\": 3}");
-    const test::CliResult r = test::RunCli({"verify", (dir / "bad.json").string(), LavapipeImage(dir).string(),
-                                            "--map", map.string()});
+    const test::CliResult r =
+        test::RunCli({"verify", (dir / "bad.json").string(), LavapipeImage(dir).string(), "--map", map.string()});
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, HasSubstring("bad.json"));
   }
@@ -101,7 +104,8 @@ TEST_CASE("verify and compare: every malformed PNG exits 2, naming the file, wit
   const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
   const std::string good = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
   const auto printable = [](const std::string& text) {
-    return std::none_of(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7f; });
+    return std::none_of(text.begin(), text.end(),
+                        [](char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7f; });
   };
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
@@ -136,17 +140,20 @@ TEST_CASE("render --verify judges lavapipe's image and writes OUT-gpu-map.png, a
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.out, HasSubstring("verify: gpu image passes: "));
   CHECK(std::filesystem::exists(dir / "t-gpu-map.png"));
-  const test::CliResult book = test::RunCli({"render", kScene, "--verify", "--rules", "book", "-o", (dir / "b.png").string()});
+  const test::CliResult book =
+      test::RunCli({"render", kScene, "--verify", "--rules", "book", "-o", (dir / "b.png").string()});
   CHECK(book.exit_code == 2);
   CHECK_THAT(book.err, HasSubstring("--verify judges by Vulkan's rules"));
 }
 
-TEST_CASE("render --backend both says what a difference is: within what Vulkan allows, but inconclusive (exit 6) where depth is uncertain",
-          "[cli][verify][render]") {
+TEST_CASE(
+    "render --backend both says what a difference is: within what Vulkan allows, but inconclusive (exit 6) where depth "
+    "is uncertain",
+    "[cli][verify][render]") {
   const test::TempDir dir;
-  const test::CliResult r =
-      test::RunCli({"render", test::SourcePath("scenes/hard/depth-ratio-1e-4.json").string(), "-o", (dir / "d.png").string()},
-                   {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
+  const test::CliResult r = test::RunCli(
+      {"render", test::SourcePath("scenes/hard/depth-ratio-1e-4.json").string(), "-o", (dir / "d.png").string()},
+      {"GALLIUM_OVERRIDE_CPU_CAPS=nosse"});
   INFO(r.out << r.err);
   // The twin has no rules for the x87 path, so the verifier decides: no pixel is wrong, but in
   // float the two planes' depths cannot be told apart, so it cannot tell a broken image either.
@@ -156,8 +163,10 @@ TEST_CASE("render --backend both says what a difference is: within what Vulkan a
   CHECK_THAT(r.out, HasSubstring("but the judgement is inconclusive"));
 }
 
-TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the verifier judges, and verify reads the image's notes",
-          "[cli][verify][render][swiftshader]") {
+TEST_CASE(
+    "render --backend both on SwiftShader: no bit-exact rules, so the verifier judges, and verify reads the image's "
+    "notes",
+    "[cli][verify][render][swiftshader]") {
   const test::TempDir dir;
   const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
   const test::CliResult r = test::RunCli(
@@ -180,8 +189,9 @@ TEST_CASE("render --backend both on SwiftShader: no bit-exact rules, so the veri
   CHECK_THAT(loose.out, HasSubstring("(subpixel bits 4)"));
 }
 
-TEST_CASE("Version: --version lists every Vulkan device it reaches, SwiftShader and lavapipe, with the twin's rules for each",
-          "[cli][swiftshader]") {
+TEST_CASE(
+    "Version: --version lists every Vulkan device it reaches, SwiftShader and lavapipe, with the twin's rules for each",
+    "[cli][swiftshader]") {
   const test::CliResult r = test::RunCli({"--version"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);

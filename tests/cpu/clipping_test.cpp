@@ -1,7 +1,7 @@
 // Stage 2: outcodes, trivial accept/reject, Sutherland-Hodgman against the Vulkan view volume.
 #include "cpu/clipping.hpp"
-#include "cpu/geometry.hpp"
 
+#include "cpu/geometry.hpp"
 #include "support/catch.hpp"
 
 #include <cmath>
@@ -86,8 +86,7 @@ TEST_CASE("a triangle fully inside is drawn unchanged", "[cpu][clip]") {
 
 TEST_CASE("a triangle fully outside is rejected", "[cpu][clip]") {
   // All three beyond x = w: trivially rejected.
-  CHECK(Assemble(Vertex(1.5f, 0.0f, 0.5f, 1.0f), Vertex(2.0f, 0.5f, 0.5f, 1.0f),
-                 Vertex(1.2f, -0.5f, 0.5f, 1.0f))
+  CHECK(Assemble(Vertex(1.5f, 0.0f, 0.5f, 1.0f), Vertex(2.0f, 0.5f, 0.5f, 1.0f), Vertex(1.2f, -0.5f, 0.5f, 1.0f))
             .empty());
   // No shared bit (one beyond x = w, one beyond y = w), yet outside the corner x, y <= w: clipping
   // against x = w leaves a piece with y >= 1.4 that the y = w plane removes.
@@ -124,8 +123,7 @@ TEST_CASE("a triangle straddling the near plane z = 0 becomes a quadrilateral", 
   CHECK(Assemble(v0, v1, v2).size() == 2);
 }
 
-TEST_CASE("new vertices start from the endpoint nearer the plane, whichever way the edge runs",
-          "[cpu][clip]") {
+TEST_CASE("new vertices start from the endpoint nearer the plane, whichever way the edge runs", "[cpu][clip]") {
   // Plane z >= 0. Inside vertex at distance 1, outside at -3: the inside one is nearer, t = 1/4.
   // From it: 0.1f + 0.25 (0.9f - 0.1f) = 0x1.333332p-2; from the other end the float result would
   // be 0x1.333334p-2.
@@ -146,16 +144,14 @@ TEST_CASE("new vertices start from the endpoint nearer the plane, whichever way 
 
   // A tie (distances 1 and -1) starts from the inside vertex: 0.1f + 0.5 (0.3f - 0.1f) =
   // 0x1.99999cp-3, where starting from 0.3f would give 0x1.99999ap-3.
-  const ClipVertex in_tie = Vertex(0.1f, 0.0f, 1.0f, 1.0f),
-                   out_tie = Vertex(0.3f, 0.0f, -1.0f, 1.0f);
+  const ClipVertex in_tie = Vertex(0.1f, 0.0f, 1.0f, 1.0f), out_tie = Vertex(0.3f, 0.0f, -1.0f, 1.0f);
   CHECK(IntersectEdge(in_tie, 1.0f, out_tie, -1.0f, kVp).clip.x == 0x1.99999cp-3f);
   CHECK(IntersectEdge(out_tie, -1.0f, in_tie, 1.0f, kVp).clip.x == 0x1.99999cp-3f);
 }
 
 TEST_CASE("triangles behind the camera (w < 0)", "[cpu][clip]") {
   // Entirely behind: every vertex has z < 0, so the triangle is rejected without clipping.
-  CHECK(Assemble(Vertex(0.5f, 0.5f, -1.2f, -1.0f), Vertex(-0.5f, 0.5f, -1.2f, -1.0f),
-                 Vertex(0.0f, -0.5f, -2.4f, -2.0f))
+  CHECK(Assemble(Vertex(0.5f, 0.5f, -1.2f, -1.0f), Vertex(-0.5f, 0.5f, -1.2f, -1.0f), Vertex(0.0f, -0.5f, -2.4f, -2.0f))
             .empty());
 
   // One vertex behind: x and y planes first (all four are set by the w < 0 vertex), then z >= 0.

@@ -2,7 +2,6 @@
 #include "cpu/depth_plane.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/triangle_setup.hpp"
-
 #include "support/catch.hpp"
 
 #include <cmath>
@@ -11,8 +10,7 @@ using namespace twinraster::cpu;
 
 namespace {
 
-Framebuffer Cleared(std::uint32_t w, std::uint32_t h, std::uint32_t colour,
-                    DepthCompare op = DepthCompare::kLess) {
+Framebuffer Cleared(std::uint32_t w, std::uint32_t h, std::uint32_t colour, DepthCompare op = DepthCompare::kLess) {
   Framebuffer fb(w, h, op);
   ClearRows(fb, 0, static_cast<int>(h), colour);
   return fb;
@@ -26,8 +24,7 @@ TEST_CASE("depth plane through three window-space vertices", "[cpu][depth]") {
   // v2 = (8.5, 0.5): e = 0, f = -64, ooa = 1/64, dzdx = -(0.5)(-0.125) = 0.0625,
   // dzdy = -(-0.25)(0.125) = 0.03125, a0 = 0.25 - 0 = 0.25.
   TriangleSetup t;
-  REQUIRE(SetUpTriangle({0.5f, 0.5f, 0.25f}, {8.5f, 0.5f, 0.75f}, {0.5f, 8.5f, 0.5f},
-                        PixelRect{0, 0, 15, 15}, t));
+  REQUIRE(SetUpTriangle({0.5f, 0.5f, 0.25f}, {8.5f, 0.5f, 0.75f}, {0.5f, 8.5f, 0.5f}, PixelRect{0, 0, 15, 15}, t));
   CHECK(t.swapped);
   CHECK(t.depth.a0 == 0.25f);
   CHECK(t.depth.dzdx == 0.0625f);
@@ -36,14 +33,12 @@ TEST_CASE("depth plane through three window-space vertices", "[cpu][depth]") {
   CHECK(DepthAt(t.depth, 0, 0) == 0.25f);
 }
 
-TEST_CASE("the plane's origin value: z0 - (dzdx * (x0 - 0.5) + dzdy * (y0 - 0.5))",
-          "[cpu][depth]") {
+TEST_CASE("the plane's origin value: z0 - (dzdx * (x0 - 0.5) + dzdy * (y0 - 0.5))", "[cpu][depth]") {
   // v0 = (4.5, 4.5, 0.1f), z falling by 2^-7 per pixel in x and rising by 2^-9 in y (the other two
   // vertices are 8 pixels away, their z exact in float). The bracket is exact:
   // -4/128 + 4/512 = -0.0234375, and 0.1f + 0.0234375 rounds once, to 0x1.f9999ap-4. Subtracting
   // the two terms one after the other would round twice and give 0x1.f99998p-4.
-  const WindowPos v0{4.5f, 4.5f, 0.1f}, v1{12.5f, 4.5f, 0x1.333334p-5f},
-      v2{4.5f, 12.5f, 0x1.d9999ap-4f};
+  const WindowPos v0{4.5f, 4.5f, 0.1f}, v1{12.5f, 4.5f, 0x1.333334p-5f}, v2{4.5f, 12.5f, 0x1.d9999ap-4f};
   const DepthPlane p = MakeDepthPlane(v0, v1, v2);
   CHECK(p.dzdx == -0x1p-7f);
   CHECK(p.dzdy == 0x1p-9f);
@@ -76,16 +71,15 @@ TEST_CASE("the depth plane is evaluated with fused multiply-adds, then clamped",
   CHECK(ClampDepth(INFINITY) == 1.0f);
 }
 
-TEST_CASE("a triangle with zero float area but non-zero snapped area has depth NaN, clamped to 1",
-          "[cpu][depth]") {
+TEST_CASE("a triangle with zero float area but non-zero snapped area has depth NaN, clamped to 1", "[cpu][depth]") {
   // Window vertices (0.5, 0.5), (1.5, 0.5 + d), (2.5, 0.5 + 2d) with d = 0x1.f8p-10: collinear in
   // float (e = -1 * 2d, f = -d * 2, e - f = 0, ooa = inf, gradients 0 * inf = NaN), but snapped
   // (0, 0), (256, 0), (512, 1) since 256d = 0.49 rounds to 0 and 512d = 0.98 to 1. The only pixel
   // covered is (0, 0): at v0, on the top edge v0 v1 and on the left edge v2 v0.
   const float d = 0x1.f8p-10f;
   TriangleSetup t;
-  REQUIRE(SetUpTriangle({0.5f, 0.5f, 0.5f}, {1.5f, 0.5f + d, 0.5f}, {2.5f, 0.5f + 2 * d, 0.5f},
-                        PixelRect{0, 0, 15, 15}, t));
+  REQUIRE(SetUpTriangle({0.5f, 0.5f, 0.5f}, {1.5f, 0.5f + d, 0.5f}, {2.5f, 0.5f + 2 * d, 0.5f}, PixelRect{0, 0, 15, 15},
+                        t));
   CHECK(std::isnan(PlaneDepth(t.depth, 0.0f, 0.0f)));
   CHECK(DepthAt(t.depth, 0, 0) == 1.0f);
   CHECK(Covers(t, 0, 0));
@@ -121,8 +115,7 @@ TEST_CASE("depth test LESS: equal depth is rejected, nearer passes and writes", 
   CHECK(fb.colour_word(10) == 0x11223344u);
 }
 
-TEST_CASE("reversed Z: cleared to 0, GREATER rejects equal depth, farther fragments fail",
-          "[cpu][depth]") {
+TEST_CASE("reversed Z: cleared to 0, GREATER rejects equal depth, farther fragments fail", "[cpu][depth]") {
   Framebuffer fb = Cleared(4, 4, 0x11223344u, DepthCompare::kGreater);
   CHECK(fb.depth[5] == 0.0f);
   CHECK(ShadeFragment(fb, 1, 1, DepthPlane{0.25f, 0.0f, 0.0f}, 0xaabbccddu));

@@ -1,11 +1,11 @@
 // Stage 7's depth tiles: the bound on a triangle's nearest fragment really bounds every fragment
 // DepthAt computes, and skipping hidden triangles changes no pixel while skipping many.
-#include "cpu/cpu_renderer.hpp"
 #include "cpu/depth_tiles.hpp"
-#include "cpu/triangle_setup.hpp"
-#include "test_scenes.hpp"
 
+#include "cpu/cpu_renderer.hpp"
+#include "cpu/triangle_setup.hpp"
 #include "support/catch.hpp"
+#include "test_scenes.hpp"
 
 #include <algorithm>
 #include <random>

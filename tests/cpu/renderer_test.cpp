@@ -4,9 +4,8 @@
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/geometry.hpp"
-#include "test_scenes.hpp"
-
 #include "support/catch.hpp"
+#include "test_scenes.hpp"
 
 #include <cmath>
 #include <random>
@@ -32,11 +31,10 @@ DrawList RandomTriangles(std::uint32_t width, std::uint32_t height, int count, u
     DrawMesh mesh;
     for (int t = 0; t < count; ++t) {
       const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-      for (int k = 0; k < 3; ++k)
-        mesh.positions.push_back({xy(rng), xy(rng), m == 0 ? z(rng) : depth(rng)});
+      for (int k = 0; k < 3; ++k) mesh.positions.push_back({xy(rng), xy(rng), m == 0 ? z(rng) : depth(rng)});
       mesh.triangles.push_back({base, base + 1, base + 2});
-      mesh.colours.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
-                              static_cast<std::uint8_t>(rng())});
+      mesh.colours.push_back(
+          {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())});
       if (t % 7 == 0) {  // the same triangle again, another colour: LESS keeps the first
         mesh.triangles.push_back({base, base + 1, base + 2});
         mesh.colours.push_back({static_cast<std::uint8_t>(rng()), 0, 0});
@@ -74,8 +72,7 @@ Image RenderPixelByPixel(const DrawList& list) {
 
 }  // namespace
 
-TEST_CASE("a fan inside the image covers every pixel at most once, and the inside exactly once",
-          "[cpu][render]") {
+TEST_CASE("a fan inside the image covers every pixel at most once, and the inside exactly once", "[cpu][render]") {
   const DrawList fan = Fan(97, 83, {0.03f, -0.05f}, 0.8f, 17);
   const cpu::CoverageCounts counts = cpu::CountCoverage(fan);
   const auto& ring = fan.meshes[0].positions;
@@ -117,12 +114,10 @@ TEST_CASE("a clipped fan larger than the image covers every pixel exactly once",
   }
 }
 
-TEST_CASE("closed cubes: every pixel is covered by as many front-facing as back-facing triangles",
-          "[cpu][render]") {
+TEST_CASE("closed cubes: every pixel is covered by as many front-facing as back-facing triangles", "[cpu][render]") {
   // Rotated cubes, one inside the image and one cut by the image's left edge.
-  const DrawList list = CubeScene(151, 127,
-                                  {{{0.4, -0.2, 6.0}, {0.3, 0.8, 0.5}, 37.0, 1.0},
-                                   {{-3.2, 0.6, 7.5}, {1.0, 0.2, 0.1}, 61.0, 1.3}});
+  const DrawList list = CubeScene(
+      151, 127, {{{0.4, -0.2, 6.0}, {0.3, 0.8, 0.5}, 37.0, 1.0}, {{-3.2, 0.6, 7.5}, {1.0, 0.2, 0.1}, 61.0, 1.3}});
   const cpu::CoverageCounts counts = cpu::CountCoverage(list);
   std::size_t covered = 0;
   for (std::uint32_t y = 0; y < list.height; ++y) {
@@ -144,8 +139,7 @@ TEST_CASE("colours: the triangle's colour with alpha 255 over the background", "
   list.background = {7, 8, 9};
   DrawMesh mesh;
   // Clip-space square (-0.5, -0.5) .. (0.5, 0.5): window [2, 6]^2, pixels 2..5 in both directions.
-  mesh.positions = {
-      {-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}};
+  mesh.positions = {{-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   mesh.colours = {{200, 100, 50}, {200, 100, 50}};
   list.meshes.push_back(mesh);
@@ -193,16 +187,14 @@ TEST_CASE("depth ties keep the earlier draw (LESS), nearer later draws win", "[c
 
 TEST_CASE("reversed Z: nearer still wins, ties keep the earlier draw", "[cpu][render]") {
   // Two cubes, the second in front of the first: standard and reversed Z give the same picture.
-  Placed back{{0.3, 0.1, 9.0}, {0.2, 1.0, 0.3}, 25.0, 1.5},
-      front{{-0.4, -0.2, 6.5}, {1.0, 0.4, 0.0}, 40.0, 1.0};
+  Placed back{{0.3, 0.1, 9.0}, {0.2, 1.0, 0.3}, 25.0, 1.5}, front{{-0.4, -0.2, 6.5}, {1.0, 0.4, 0.0}, 40.0, 1.0};
   const DrawList standard = CubeScene(160, 120, {back, front});
   DrawList reversed = CubeScene(160, 120, {back, front}, /*reversed_z=*/true);
   REQUIRE(reversed.reversed_z);
   const Image a = RenderOnCpu(standard), b = RenderOnCpu(reversed);
   std::size_t differing = 0;
   for (std::size_t i = 0; i < a.rgba.size(); i += 4)
-    differing +=
-        a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
+    differing += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
   // Depth rounds differently, so a pixel where two faces nearly meet may differ; the cubes do not
   // touch, so the pictures should agree everywhere.
   CHECK(differing == 0);

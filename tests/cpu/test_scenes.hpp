@@ -1,10 +1,10 @@
 // Scenes for the CPU twin's whole-renderer tests: the chapter's cube and hand-made draw lists.
 #pragma once
 
-#include "support/chapter_cube.hpp"
 #include "chain/draw_list.hpp"
 #include "chain/matrices.hpp"
 #include "scene/scene.hpp"
+#include "support/chapter_cube.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -20,8 +20,8 @@ struct Placed {
   double degrees = 0;
   double scale = 1;
 };
-inline DrawList CubeScene(std::uint32_t width, std::uint32_t height,
-                          std::initializer_list<Placed> cubes, bool reversed_z = false) {
+inline DrawList CubeScene(std::uint32_t width, std::uint32_t height, std::initializer_list<Placed> cubes,
+                          bool reversed_z = false) {
   Scene scene;
   scene.name = "cubes";
   scene.canvas.width = width;
@@ -50,12 +50,11 @@ inline DrawList Fan(std::uint32_t width, std::uint32_t height, glm::vec2 centre,
   mesh.positions.push_back({centre.x, centre.y, 0.5f});
   for (int i = 0; i < n; ++i) {
     const double a = 2 * std::numbers::pi * (i + 0.37 * std::sin(i * 1.7)) / n;
-    mesh.positions.push_back({centre.x + r * static_cast<float>(std::cos(a)),
-                              centre.y + r * static_cast<float>(std::sin(a)), 0.5f});
+    mesh.positions.push_back(
+        {centre.x + r * static_cast<float>(std::cos(a)), centre.y + r * static_cast<float>(std::sin(a)), 0.5f});
   }
   for (int i = 0; i < n; ++i) {
-    const auto a = static_cast<std::uint32_t>(1 + i),
-               b = static_cast<std::uint32_t>(1 + (i + 1) % n);
+    const auto a = static_cast<std::uint32_t>(1 + i), b = static_cast<std::uint32_t>(1 + (i + 1) % n);
     if (i % 2 == 0) {
       mesh.triangles.push_back({0, a, b});
     } else {

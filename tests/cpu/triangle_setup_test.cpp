@@ -1,7 +1,7 @@
 // Stages 4 and 5: snapping to 1/256 pixel, edge functions and the top-left rule.
-#include "cpu/rasterize.hpp"
 #include "cpu/triangle_setup.hpp"
 
+#include "cpu/rasterize.hpp"
 #include "support/catch.hpp"
 
 #include <cmath>
@@ -67,8 +67,7 @@ TEST_CASE("snapping: (w - 0.5) * 256 rounded to nearest, ties to even", "[cpu][s
   CHECK(SnapToSubpixel(10.5f + 2.5f / 256) == 2562);
   CHECK(SnapToSubpixel(10.5f + 3.5f / 256) == 2564);
   // Nothing representable: SSE's integer indefinite.
-  CHECK(SnapToSubpixel(std::numeric_limits<float>::quiet_NaN()) ==
-        std::numeric_limits<std::int32_t>::min());
+  CHECK(SnapToSubpixel(std::numeric_limits<float>::quiet_NaN()) == std::numeric_limits<std::int32_t>::min());
   CHECK(SnapToSubpixel(1e10f) == std::numeric_limits<std::int32_t>::min());
 }
 
@@ -98,8 +97,7 @@ TEST_CASE("zero area draws nothing", "[cpu][edges]") {
   TriangleSetup t;
   CHECK_FALSE(SetUpTriangle({1.5f, 1.5f, 0}, {5.5f, 5.5f, 0}, {9.5f, 9.5f, 0}, kRegion, t));
   // Distinct float positions that snap to collinear points.
-  CHECK_FALSE(
-      SetUpTriangle({1.5f, 1.5f, 0}, {5.5f, 1.5f + 0.001f, 0}, {9.5f, 1.5f, 0}, kRegion, t));
+  CHECK_FALSE(SetUpTriangle({1.5f, 1.5f, 0}, {5.5f, 1.5f + 0.001f, 0}, {9.5f, 1.5f, 0}, kRegion, t));
 }
 
 TEST_CASE("top-left rule: two triangles sharing an edge through pixel centres", "[cpu][edges]") {
@@ -114,8 +112,7 @@ TEST_CASE("top-left rule: two triangles sharing an edge through pixel centres", 
   for (int py = 0; py < 16; ++py) {
     for (int px = 0; px < 16; ++px) {
       const std::size_t i = static_cast<std::size_t>(py * 16 + px);
-      const bool in_square =
-          px >= 2 && px <= 7 && py >= 2 && py <= 7;  // left/top in, right/bottom out
+      const bool in_square = px >= 2 && px <= 7 && py >= 2 && py <= 7;  // left/top in, right/bottom out
       INFO("pixel " << px << "," << py);
       CHECK(up[i] + low[i] == (in_square ? 1 : 0));
       // The diagonal is a left edge of `upper` (inside to its right) and a right edge of `lower`.
@@ -151,8 +148,7 @@ TEST_CASE("coverage is limited to the draw region", "[cpu][edges]") {
   CHECK_FALSE(SetUpTriangle({20.5f, 1.5f, 0}, {30.5f, 1.5f, 0}, {20.5f, 9.5f, 0}, kRegion, t));
 }
 
-TEST_CASE("row spans, divided or stepped, equal per-pixel edge tests on many triangles",
-          "[cpu][edges]") {
+TEST_CASE("row spans, divided or stepped, equal per-pixel edge tests on many triangles", "[cpu][edges]") {
   // Vertices on a coarse grid of quarter pixels and half subpixels, so that edges often pass
   // exactly through pixel centres.
   unsigned state = 12345u;

@@ -25,8 +25,7 @@ TEST_CASE("vertex stage sums ((F0*x + F1*y) + F2*z) + F3 in float", "[cpu][verte
   CHECK((x + z) + y + 0.25f == 1.25f);
 }
 
-TEST_CASE("vertex stage rounds every product before adding (no fused multiply-add)",
-          "[cpu][vertex]") {
+TEST_CASE("vertex stage rounds every product before adding (no fused multiply-add)", "[cpu][vertex]") {
   // x * a with a = 1 + 2^-12 and x = 1 + 2^-12: exact product 1 + 2^-11 + 2^-24, which rounds to
   // the even neighbour 1 + 2^-11; adding -(1 + 2^-11) then gives exactly 0. A fused multiply-add
   // would keep the 2^-24.

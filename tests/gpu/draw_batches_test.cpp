@@ -45,8 +45,8 @@ TEST_CASE("PlanDraws kNever: one per-draw batch per run of a mesh", "[gpu][batch
 
 TEST_CASE("PlanDraws kAuto: only runs of at least kInstancingThreshold are instanced", "[gpu][batches]") {
   std::vector<std::uint32_t> meshes(gpu::kInstancingThreshold, 0);  // a long run of mesh 0
-  meshes.push_back(1);                                               // one draw of mesh 1
-  meshes.insert(meshes.end(), gpu::kInstancingThreshold - 1, 0);      // a short run of mesh 0
+  meshes.push_back(1);                                              // one draw of mesh 1
+  meshes.insert(meshes.end(), gpu::kInstancingThreshold - 1, 0);    // a short run of mesh 0
   const DrawList list = ListOfMeshes(meshes);
   const gpu::DrawPlan plan = gpu::PlanDraws(list, Instancing::kAuto);
   RequireCoversInOrder(list, plan);

@@ -48,9 +48,7 @@ DeviceReply SomeDevice() {
 RenderedReply SomeRendered(std::size_t pixel_bytes) {
   const GpuTimings timings{
       .setup_ms = 1.5, .draw_ms = 2.25, .readback_ms = 0.125, .draw_commands = 300, .instanced_draws = 9};
-  return {.timings = timings,
-          .work_ms = 4.5,
-          .pixel_bytes = pixel_bytes};
+  return {.timings = timings, .work_ms = 4.5, .pixel_bytes = pixel_bytes};
 }
 
 }  // namespace

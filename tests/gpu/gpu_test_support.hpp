@@ -2,9 +2,9 @@
 // pixels, so the expected image can be worked out by hand (or by the edge test below).
 #pragma once
 
-#include "support/chapter_cube.hpp"
 #include "chain/draw_list.hpp"
 #include "image/image.hpp"
+#include "support/chapter_cube.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -51,18 +51,17 @@ struct WindowTriangle {
 // Window pixels to clip space for F = identity: x_ndc = 2x / width - 1 (exact for power-of-two
 // sizes).
 inline glm::vec3 ToNdc(glm::dvec2 window, std::uint32_t width, std::uint32_t height, float z) {
-  return glm::vec3(static_cast<float>(2.0 * window.x / width - 1.0),
-                   static_cast<float>(2.0 * window.y / height - 1.0), z);
+  return glm::vec3(static_cast<float>(2.0 * window.x / width - 1.0), static_cast<float>(2.0 * window.y / height - 1.0),
+                   z);
 }
 
 // A mesh of separate triangles at depth z, placed with F = identity.
-inline DrawMesh MeshOf(const std::vector<WindowTriangle>& triangles, std::uint32_t width,
-                       std::uint32_t height, float z = 0.5f) {
+inline DrawMesh MeshOf(const std::vector<WindowTriangle>& triangles, std::uint32_t width, std::uint32_t height,
+                       float z = 0.5f) {
   DrawMesh mesh;
   for (const WindowTriangle& t : triangles) {
     const auto first = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const glm::dvec2& corner : {t.a, t.b, t.c})
-      mesh.positions.push_back(ToNdc(corner, width, height, z));
+    for (const glm::dvec2& corner : {t.a, t.b, t.c}) mesh.positions.push_back(ToNdc(corner, width, height, z));
     mesh.triangles.push_back({first, first + 1, first + 2});
     mesh.colours.push_back(t.colour);
   }
@@ -114,8 +113,7 @@ struct PixelCheck {
 
 // Compares every pixel with non-overlapping triangles over the background: certain pixels must
 // match exactly (alpha 255 too); pixels within a subpixel of an edge are only counted.
-inline PixelCheck CheckPixels(const Image& image, Rgb8 background,
-                              const std::vector<WindowTriangle>& triangles) {
+inline PixelCheck CheckPixels(const Image& image, Rgb8 background, const std::vector<WindowTriangle>& triangles) {
   PixelCheck check;
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
@@ -139,8 +137,8 @@ inline PixelCheck CheckPixels(const Image& image, Rgb8 background,
       if (RgbAt(image, x, y) != *expected || image.pixel(x, y)[3] != 255) {
         if (check.mismatches++ == 0) {
           std::ostringstream text;
-          text << "pixel (" << x << ", " << y << ") is " << RgbAt(image, x, y) << " alpha "
-               << int{image.pixel(x, y)[3]} << ", expected " << *expected;
+          text << "pixel (" << x << ", " << y << ") is " << RgbAt(image, x, y) << " alpha " << int{image.pixel(x, y)[3]}
+               << ", expected " << *expected;
           check.first_mismatch = text.str();
         }
       }
@@ -151,8 +149,7 @@ inline PixelCheck CheckPixels(const Image& image, Rgb8 background,
 
 // The chapter's "instances" demo (figure 10-3): two cubes in front of the camera, on a
 // width x height canvas, through the host's own chain (BuildDrawList), optionally with reversed Z.
-inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height = 600,
-                                 bool reversed_z = false) {
+inline DrawList ChapterInstances(std::uint32_t width = 600, std::uint32_t height = 600, bool reversed_z = false) {
   Scene scene;
   scene.canvas.width = width;
   scene.canvas.height = height;

@@ -1,11 +1,11 @@
 // The GPU process: the same pixels as drawing in this process, the device named, and a driver
 // that aborts, hangs or refuses a list reported as such while this process goes on.
-#include "gpu/gpu_renderer.hpp"
 #include "gpu/isolated_gpu.hpp"
-#include "gpu_test_support.hpp"
-#include "support/lit_scene.hpp"
 
+#include "gpu/gpu_renderer.hpp"
+#include "gpu_test_support.hpp"
 #include "support/catch.hpp"
+#include "support/lit_scene.hpp"
 
 #include <chrono>
 

@@ -1,7 +1,6 @@
 // Pixels of small hand-made draw lists, checked against what the geometry says by hand.
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
-
 #include "support/catch.hpp"
 
 using namespace twinraster;
@@ -11,8 +10,7 @@ namespace {
 
 const Rgb8 kBackground{10, 20, 30};
 
-DrawList ListOf(std::uint32_t width, std::uint32_t height, std::vector<DrawMesh> meshes,
-                std::vector<DrawCall> draws) {
+DrawList ListOf(std::uint32_t width, std::uint32_t height, std::vector<DrawMesh> meshes, std::vector<DrawCall> draws) {
   DrawList list;
   list.width = width;
   list.height = height;
@@ -35,8 +33,7 @@ TEST_CASE("A triangle with F = identity covers exactly the pixels inside it", "[
   const Rgb8 colour{200, 100, 50};
   const WindowTriangle triangle{{1, 1}, {7, 1}, {1, 6}, colour};
   GpuRenderer gpu;
-  const Image image =
-      gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
+  const Image image = gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(image.width == 8);
   REQUIRE(image.height == 8);
   REQUIRE(image.rgba.size() == 8 * 8 * 4);
@@ -51,8 +48,7 @@ TEST_CASE("A triangle with F = identity covers exactly the pixels inside it", "[
       inside += covered;
     }
   }
-  CHECK(inside ==
-        15);  // rows 1..5 hold 5, 4, 3, 2, 1 pixels: the triangle is upright, top row first
+  CHECK(inside == 15);  // rows 1..5 hold 5, 4, 3, 2, 1 pixels: the triangle is upright, top row first
 
   // The generic checker used below agrees and finds no pixel uncertain here.
   const PixelCheck check = CheckPixels(image, kBackground, {triangle});
@@ -65,13 +61,11 @@ TEST_CASE("The pixel checker fails on wrong images (the tests can fail)", "[gpu]
   const Rgb8 colour{200, 100, 50};
   const WindowTriangle triangle{{1, 1}, {7, 1}, {1, 6}, colour};
   GpuRenderer gpu;
-  Image image =
-      gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
+  Image image = gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(CheckPixels(image, kBackground, {triangle}).mismatches == 0);
 
   // A wrong colour, a wrong background, a shifted or flipped triangle: all are caught.
-  CHECK(CheckPixels(image, kBackground, {{triangle.a, triangle.b, triangle.c, {200, 100, 51}}})
-            .mismatches == 15);
+  CHECK(CheckPixels(image, kBackground, {{triangle.a, triangle.b, triangle.c, {200, 100, 51}}}).mismatches == 15);
   CHECK(CheckPixels(image, Rgb8{10, 20, 31}, {triangle}).mismatches == 64 - 15);
   CHECK(CheckPixels(image, kBackground, {{{2, 1}, {8, 1}, {2, 6}, colour}}).mismatches > 0);
   CHECK(CheckPixels(image, kBackground, {{{1, 7}, {7, 7}, {1, 2}, colour}}).mismatches > 0);
@@ -109,8 +103,7 @@ TEST_CASE("Triangle colours arrive exactly, for every 8-bit value", "[gpu][pixel
     for (const WindowTriangle& t : Square(x, y, x + 1, y + 1, colour)) squares.push_back(t);
   }
   GpuRenderer gpu;
-  const Image image =
-      gpu.Render(ListOf(16, 16, {MeshOf(squares, 16, 16)}, {DrawCall{0, glm::mat4(1.0f)}}));
+  const Image image = gpu.Render(ListOf(16, 16, {MeshOf(squares, 16, 16)}, {DrawCall{0, glm::mat4(1.0f)}}));
   for (int i = 0; i < 256; ++i) {
     const auto x = static_cast<std::uint32_t>(i % 16), y = static_cast<std::uint32_t>(i / 16);
     INFO("pixel (" << x << ", " << y << ")");
@@ -121,17 +114,14 @@ TEST_CASE("Triangle colours arrive exactly, for every 8-bit value", "[gpu][pixel
 TEST_CASE("A nearer triangle hides a farther one whatever the draw order", "[gpu][pixels][depth]") {
   // Three squares over the same pixels [2, 6)^2 of an 8x8 image, at different depths.
   const Rgb8 near_colour{255, 0, 0}, far_colour{0, 255, 0}, other_far{0, 0, 255};
-  const auto square = [](Rgb8 colour, float z) {
-    return MeshOf(Square(2, 2, 6, 6, colour), 8, 8, z);
-  };
-  const std::vector<DrawMesh> meshes = {square(near_colour, 0.25f), square(far_colour, 0.75f),
-                                        square(other_far, 0.75f), square(near_colour, 1.0f)};
+  const auto square = [](Rgb8 colour, float z) { return MeshOf(Square(2, 2, 6, 6, colour), 8, 8, z); };
+  const std::vector<DrawMesh> meshes = {square(near_colour, 0.25f), square(far_colour, 0.75f), square(other_far, 0.75f),
+                                        square(near_colour, 1.0f)};
   const glm::mat4 identity(1.0f);
   GpuRenderer gpu;
   const auto expect_square = [&](std::vector<DrawCall> draws, std::optional<Rgb8> visible) {
     const Image image = gpu.Render(ListOf(8, 8, meshes, std::move(draws)));
-    const std::vector<WindowTriangle> expected =
-        visible ? Square(2, 2, 6, 6, *visible) : std::vector<WindowTriangle>{};
+    const std::vector<WindowTriangle> expected = visible ? Square(2, 2, 6, 6, *visible) : std::vector<WindowTriangle>{};
     const PixelCheck check = CheckPixels(image, kBackground, expected);
     INFO(check.first_mismatch);
     CHECK(check.mismatches == 0);
@@ -148,9 +138,7 @@ TEST_CASE("A nearer triangle hides a farther one whatever the draw order", "[gpu
   // Depth is cleared to 1.0 and 1.0 is not LESS than 1.0.
   SECTION("depth 1.0 is hidden by the clear") { expect_square({{3, identity}}, std::nullopt); }
   // The depth comes from F too: the far square moved nearer (z 0.75 - 0.6 = 0.15) now wins.
-  SECTION("depth through F") {
-    expect_square({{0, identity}, {1, Translation(0, 0, -0.6f)}}, far_colour);
-  }
+  SECTION("depth through F") { expect_square({{0, identity}, {1, Translation(0, 0, -0.6f)}}, far_colour); }
 }
 
 TEST_CASE("Each triangle gets its own colour, in every mesh and instance", "[gpu][pixels]") {
@@ -158,9 +146,8 @@ TEST_CASE("Each triangle gets its own colour, in every mesh and instance", "[gpu
   // indices are local (0..5): vertexOffset must place them. Its two triangles have opposite
   // windings (no culling) and different colours.
   const Rgb8 a{1, 2, 3}, b{4, 5, 6}, c{7, 8, 9}, left{250, 128, 0}, right{0, 128, 250};
-  const std::vector<WindowTriangle> first = {{{0, 14}, {2, 14}, {0, 16}, a},
-                                             {{3, 14}, {5, 14}, {3, 16}, b},
-                                             {{6, 14}, {8, 14}, {6, 16}, c}};
+  const std::vector<WindowTriangle> first = {
+      {{0, 14}, {2, 14}, {0, 16}, a}, {{3, 14}, {5, 14}, {3, 16}, b}, {{6, 14}, {8, 14}, {6, 16}, c}};
   const std::vector<WindowTriangle> second = {{{1, 1}, {7.3, 1}, {1, 6.6}, left},
                                               {{15, 1}, {9, 6.6}, {15, 6.6}, right}};
   GpuRenderer gpu;
@@ -198,12 +185,10 @@ TEST_CASE("Each triangle gets its own colour, in every mesh and instance", "[gpu
 TEST_CASE("An odd-sized image keeps its rows apart and top first", "[gpu][pixels]") {
   // 37 x 23: a row is 148 bytes, not a multiple of any copy alignment. A lopsided triangle
   // near the top left shows any transposition, flip or row-pitch error.
-  const std::vector<WindowTriangle> triangles = {
-      {{2.2, 1.3}, {30.7, 4.1}, {5.1, 20.6}, {9, 99, 199}},
-      {{33, 2}, {36.5, 22.5}, {31.2, 22}, {77, 0, 255}}};
+  const std::vector<WindowTriangle> triangles = {{{2.2, 1.3}, {30.7, 4.1}, {5.1, 20.6}, {9, 99, 199}},
+                                                 {{33, 2}, {36.5, 22.5}, {31.2, 22}, {77, 0, 255}}};
   GpuRenderer gpu;
-  const Image image =
-      gpu.Render(ListOf(37, 23, {MeshOf(triangles, 37, 23)}, {DrawCall{0, glm::mat4(1.0f)}}));
+  const Image image = gpu.Render(ListOf(37, 23, {MeshOf(triangles, 37, 23)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(image.width == 37);
   REQUIRE(image.height == 23);
   const PixelCheck check = CheckPixels(image, kBackground, triangles);
@@ -213,23 +198,20 @@ TEST_CASE("An odd-sized image keeps its rows apart and top first", "[gpu][pixels
   CHECK(check.background_pixels > 300);
 }
 
-TEST_CASE("A triangle through the near plane is clipped and keeps its colour",
-          "[gpu][pixels][clip]") {
+TEST_CASE("A triangle through the near plane is clipped and keeps its colour", "[gpu][pixels][clip]") {
   // Triangle 0 lies wholly right of the view (x > w) and is dropped; triangle 1 has its first
   // corner at z = -0.5, so the corner cut off by z = 0 is not drawn and the rest, drawn as a fan
   // of clipped triangles, must still read colour 1 (the flat triangle number survives clipping).
   const Rgb8 dropped{255, 255, 255}, kept{12, 34, 56};
   DrawMesh mesh;
-  mesh.positions = {glm::vec3(1.5f, 0, 0.5f),       glm::vec3(2, 0, 0.5f),
-                    glm::vec3(2, 0.5f, 0.5f),       glm::vec3(-0.75f, -0.75f, -0.5f),
-                    glm::vec3(0.75f, -0.75f, 0.5f), glm::vec3(-0.75f, 0.75f, 0.5f)};
+  mesh.positions = {glm::vec3(1.5f, 0, 0.5f),         glm::vec3(2, 0, 0.5f),          glm::vec3(2, 0.5f, 0.5f),
+                    glm::vec3(-0.75f, -0.75f, -0.5f), glm::vec3(0.75f, -0.75f, 0.5f), glm::vec3(-0.75f, 0.75f, 0.5f)};
   mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
   mesh.colours = {dropped, kept};
   GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(16, 16, {mesh}, {DrawCall{0, glm::mat4(1.0f)}}));
   // In window pixels the triangle is (2,2), (14,2), (2,14); z = 0 runs from (8,2) to (2,8).
-  const std::vector<WindowTriangle> visible = {{{8, 2}, {14, 2}, {2, 14}, kept},
-                                               {{8, 2}, {2, 14}, {2, 8}, kept}};
+  const std::vector<WindowTriangle> visible = {{{8, 2}, {14, 2}, {2, 14}, kept}, {{8, 2}, {2, 14}, {2, 8}, kept}};
   const PixelCheck check = CheckPixels(image, kBackground, visible);
   INFO(check.first_mismatch);
   CHECK(check.mismatches == 0);
@@ -250,8 +232,7 @@ TEST_CASE("The vertex shader sums F's columns in the documented order", "[gpu][p
   F[3] = glm::vec4(0, 0, 0.5f, 1);  // depth 0.5, w = 1
   // Clip (x, y) = (-0.75, -0.75), (0.75, -0.75), (-0.75, 0.5): window (1,1), (7,1), (1,6).
   DrawMesh mesh;
-  mesh.positions = {glm::vec3(-0.75f, -0.75f, -0.75f), glm::vec3(-0.75f, -0.75f, 0.75f),
-                    glm::vec3(0.5f, 0.5f, -0.75f)};
+  mesh.positions = {glm::vec3(-0.75f, -0.75f, -0.75f), glm::vec3(-0.75f, -0.75f, 0.75f), glm::vec3(0.5f, 0.5f, -0.75f)};
   mesh.triangles = {{0, 1, 2}};
   const Rgb8 colour{200, 100, 50};
   mesh.colours = {colour};

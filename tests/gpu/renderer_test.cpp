@@ -2,7 +2,6 @@
 // moves, timings, determinism and LP_NUM_THREADS.
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
-
 #include "support/catch.hpp"
 
 #include <algorithm>
@@ -44,8 +43,7 @@ double Median(std::vector<double> values) {
 
 TEST_CASE("Without options the renderer picks lavapipe, and a name picks a device", "[gpu]") {
   CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
-  CHECK_THAT(GpuRenderer(GpuOptions{.device = "LLVMPIPE"}).DeviceName(),
-             HasSubstring("llvmpipe"));
+  CHECK_THAT(GpuRenderer(GpuOptions{.device = "LLVMPIPE"}).DeviceName(), HasSubstring("llvmpipe"));
   CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "no such device"}), GpuUnavailable);
   CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "no such device"}),
                     HasSubstring("no such device") && HasSubstring("llvmpipe"));
@@ -78,8 +76,8 @@ TEST_CASE("Render takes any size from 1x1 to 16384 a side, and refuses others", 
     REQUIRE(image.rgba.size() == std::size_t{width} * height * 4);
     CHECK(AllPixels(image, kColour));
   }
-  for (const auto& [width, height] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
-           {0, 1}, {1, 0}, {16385, 1}, {1, 16385}}) {
+  for (const auto& [width, height] :
+       std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, 1}, {1, 0}, {16385, 1}, {1, 16385}}) {
     INFO(width << "x" << height);
     CHECK_THROWS_AS(gpu.Render(Covering(width, height)), std::invalid_argument);
   }
@@ -161,9 +159,9 @@ TEST_CASE("The chapter's two cubes at 600x600: deterministic, timed", "[gpu][tim
     readback.push_back(timings.readback_ms);
     total.push_back(timings.setup_ms + timings.draw_ms + timings.readback_ms);
   }
-  std::cout << "GPU (" << gpu.DeviceName() << ") 600x600 two cubes, median of 20: setup "
-            << Median(setup) << " ms, draw " << Median(draw) << " ms, readback " << Median(readback)
-            << " ms, total " << Median(total) << " ms\n";
+  std::cout << "GPU (" << gpu.DeviceName() << ") 600x600 two cubes, median of 20: setup " << Median(setup)
+            << " ms, draw " << Median(draw) << " ms, readback " << Median(readback) << " ms, total " << Median(total)
+            << " ms\n";
   // What the chapter shows: both cubes' near faces (blue), the left cube's right face (green),
   // the right cube's bottom (cyan) and left (yellow) faces. Depth hides the far faces (red)
   // and the tops (purple).
@@ -172,7 +170,7 @@ TEST_CASE("The chapter's two cubes at 600x600: deterministic, timed", "[gpu][tim
   CHECK(CountColour(first, {0, 255, 255}) > 1000);
   CHECK(CountColour(first, {255, 255, 0}) > 500);
   CHECK(CountColour(first, {255, 0, 0}) == 0);
-  CHECK(CountColour(first, {255, 0, 255}) == 0);  // the tops: the camera is not above either
+  CHECK(CountColour(first, {255, 0, 255}) == 0);               // the tops: the camera is not above either
   CHECK(CountColour(first, {255, 255, 255}) > 600 * 600 / 2);  // the canvas's white background
 }
 

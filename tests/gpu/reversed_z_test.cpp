@@ -3,7 +3,6 @@
 // between the two conventions, and the validation layer.
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
-
 #include "support/catch.hpp"
 
 using namespace twinraster;
@@ -12,8 +11,8 @@ using namespace twinraster::gpu_test;
 namespace {
 
 const Rgb8 kBackground{10, 20, 30};
-const Rgb8 kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0},
-    kPurple{255, 0, 255}, kCyan{0, 255, 255};
+const Rgb8 kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0}, kPurple{255, 0, 255},
+    kCyan{0, 255, 255};
 
 // A square of two triangles (one of each winding) over window pixels [2, 6)^2 of an 8x8 image.
 std::vector<WindowTriangle> Square(Rgb8 colour) {
@@ -24,9 +23,8 @@ DrawMesh SquareAt(Rgb8 colour, float z) { return MeshOf(Square(colour), 8, 8, z)
 
 // Squares over the same pixels at different depths. Indices name them in the draw lists below.
 enum SquareMesh : std::uint32_t { kAt075, kAt025, kAlsoAt025, kAt0, kAt1 };
-const std::vector<DrawMesh> kSquares = {SquareAt(kRed, 0.75f), SquareAt(kGreen, 0.25f),
-                                        SquareAt(kBlue, 0.25f), SquareAt(kPurple, 0.0f),
-                                        SquareAt(kYellow, 1.0f)};
+const std::vector<DrawMesh> kSquares = {SquareAt(kRed, 0.75f), SquareAt(kGreen, 0.25f), SquareAt(kBlue, 0.25f),
+                                        SquareAt(kPurple, 0.0f), SquareAt(kYellow, 1.0f)};
 
 DrawList SquaresList(std::vector<std::uint32_t> order, bool reversed_z) {
   DrawList list;
@@ -41,8 +39,7 @@ DrawList SquaresList(std::vector<std::uint32_t> order, bool reversed_z) {
 
 // The image shows the square in colour `visible` (or no square) over the background.
 void CheckSquare(const Image& image, std::optional<Rgb8> visible) {
-  const PixelCheck check =
-      CheckPixels(image, kBackground, visible ? Square(*visible) : std::vector<WindowTriangle>{});
+  const PixelCheck check = CheckPixels(image, kBackground, visible ? Square(*visible) : std::vector<WindowTriangle>{});
   INFO(check.first_mismatch);
   CHECK(check.mismatches == 0);
   CHECK(check.triangle_pixels + check.uncertain == (visible ? 16u : 0u));
@@ -64,12 +61,9 @@ void RequireSilence(const GpuRenderer& gpu, const char* after) {
 
 }  // namespace
 
-TEST_CASE("With reversed Z the larger depth is nearer, whatever the draw order",
-          "[gpu][pixels][depth][reversed_z]") {
+TEST_CASE("With reversed Z the larger depth is nearer, whatever the draw order", "[gpu][pixels][depth][reversed_z]") {
   GpuRenderer gpu;
-  const auto render = [&](std::vector<std::uint32_t> order) {
-    return gpu.Render(SquaresList(std::move(order), true));
-  };
+  const auto render = [&](std::vector<std::uint32_t> order) { return gpu.Render(SquaresList(std::move(order), true)); };
   SECTION("near after far") { CheckSquare(render({kAt025, kAt075}), kRed); }
   SECTION("near before far") { CheckSquare(render({kAt075, kAt025}), kRed); }
   // GREATER is strict: an equally deep fragment does not replace the one already there.
@@ -137,8 +131,7 @@ TEST_CASE("The chapter's cubes look the same with reversed Z", "[gpu][depth][rev
   CHECK(CountColour(wrong, kBlue) == 0);
 }
 
-TEST_CASE("Validation stays silent with reversed Z and when switching conventions",
-          "[gpu][validation][reversed_z]") {
+TEST_CASE("Validation stays silent with reversed Z and when switching conventions", "[gpu][validation][reversed_z]") {
   GpuRenderer gpu(GpuOptions{.device = "", .validation = true});
   RequireSilence(gpu, "construction");
 

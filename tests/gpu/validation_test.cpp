@@ -2,7 +2,6 @@
 // Vulkan draws no complaint, and the messenger demonstrably records complaints when there are some.
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
-
 #include "support/catch.hpp"
 
 using namespace twinraster;
@@ -62,15 +61,13 @@ TEST_CASE("Validation stays silent through construction and several renders", "[
   RequireSilence(gpu, "a mesh without triangles");
 }
 
-TEST_CASE("The messenger records what the layer reports (silence is not deafness)",
-          "[gpu][validation]") {
+TEST_CASE("The messenger records what the layer reports (silence is not deafness)", "[gpu][validation]") {
   // Best-practices checks, switched on through the layer's environment variable, warn about
   // legal but questionable use (tiny allocations, old API version, ...). Seeing those warnings
   // in ValidationMessages() shows that the messenger would catch real errors too.
   std::vector<std::string> messages;
   {
-    const ScopedEnv best_practices("VK_LAYER_ENABLES",
-                                   "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT");
+    const ScopedEnv best_practices("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT");
     GpuRenderer gpu(GpuOptions{.device = "", .validation = true});
     gpu.Render(OneTriangle(8, 8));
     messages = gpu.ValidationMessages();

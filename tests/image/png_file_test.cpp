@@ -2,9 +2,9 @@
 // decoder) to the same pixels, and higher levels give smaller files. Text notes round trip, and
 // reading them survives corrupt, cut-off and hostile files.
 #include "image/png_file.hpp"
-#include "support/test_support.hpp"
 
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <cstring>
 #include <random>
@@ -32,7 +32,8 @@ Image TestImage(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
   return image;
 }
 
-const PngNotes kNotes = {{"twinraster:subPixelPrecisionBits", "8"}, {"Device name", "llvmpipe (LLVM 15.0.6, 256 bits)"}};
+const PngNotes kNotes = {{"twinraster:subPixelPrecisionBits", "8"},
+                         {"Device name", "llvmpipe (LLVM 15.0.6, 256 bits)"}};
 
 // Where the first chunk of `type` starts (its length field) in the bytes of a PNG.
 std::size_t ChunkAt(const std::string& png, const std::string& type) {
@@ -119,7 +120,8 @@ TEST_CASE("PNG notes: a tEXt chunk with a wrong CRC is skipped, and the image re
   test::WriteFile(dir / "crc.png", png);
   REQUIRE(ReadPngNotes(dir / "crc.png") == PngNotes{kNotes[1]});
   // The image reader takes the file as corrupt: no verdict on it (png_reader_test.cpp).
-  REQUIRE_THROWS_WITH(ReadPng(dir / "crc.png"), HasSubstring("crc.png: cannot read as PNG: corrupt: invalid chunk checksum"));
+  REQUIRE_THROWS_WITH(ReadPng(dir / "crc.png"),
+                      HasSubstring("crc.png: cannot read as PNG: corrupt: invalid chunk checksum"));
 }
 
 TEST_CASE("PNG notes: a cut-off file or an absurd chunk length ends the walk, keeping what came before", "[png]") {
@@ -170,9 +172,9 @@ TEST_CASE("PNG notes: at most 64 are read, each value at most 1024 bytes", "[png
 
 TEST_CASE("PNG notes: an invalid key or a NUL in a value is refused", "[png]") {
   const Image image = TestImage(2, 2, 8);
-  for (const std::string& key : {std::string(), std::string(80, 'k'), std::string(" lead"), std::string("trail "),
-                                std::string("double  space"), std::string("new\nline"), std::string("del\x7f"),
-                                std::string("nul\0", 4), std::string("c1 \x85")}) {
+  for (const std::string& key :
+       {std::string(), std::string(80, 'k'), std::string(" lead"), std::string("trail "), std::string("double  space"),
+        std::string("new\nline"), std::string("del\x7f"), std::string("nul\0", 4), std::string("c1 \x85")}) {
     INFO("key \"" << key << "\"");
     REQUIRE_THROWS_AS(EncodePng(image, kPngFastest, {{key, "v"}}), std::invalid_argument);
   }

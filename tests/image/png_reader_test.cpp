@@ -2,9 +2,8 @@
 // valid encoding reads as the same pixels, every malformed file is refused with the file's name and
 // a reason, and nothing from the file reaches the message as a control character.
 #include "image/png_file.hpp"
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <algorithm>
 #include <array>
@@ -31,7 +30,8 @@ std::string Refusal(const std::filesystem::path& file, const PngSizeCheck& check
 }
 
 bool HasControlCharacter(const std::string& text) {
-  return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+  return std::any_of(text.begin(), text.end(),
+                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
 // Which reference each valid file must equal: the same picture, in its colour type's own terms.

@@ -62,18 +62,19 @@ TEST_CASE("Href: file names become links that point at themselves", "[report]") 
   CHECK(Href("x-y_z.~1/2.png") == "x-y_z.~1/2.png");
 }
 
-TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort first with the batch's order kept within", "[report]") {
+TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort first with the batch's order kept within",
+          "[report]") {
   const run::RunRecord error = run::ErrorRecord("broken.json", "broken.json: line 1, column 2: bad");
   run::RunRecord crashed = Drawn("crashed", 0, std::nullopt);
-  crashed.backends[0].status = run::BackendStatus::kCrashed, crashed.backends[0].problem = "SIGSEGV in the Vulkan driver";
+  crashed.backends[0].status = run::BackendStatus::kCrashed,
+  crashed.backends[0].problem = "SIGSEGV in the Vulkan driver";
   crashed.comparison.reset();
   run::RunRecord promised = Drawn("promised", 5, true);
   promised.twin = cpu::TwinRules{};
   promised.twin->exact = true;
-  const std::vector<run::RunRecord> records = {Drawn("same", 0, std::nullopt),  Drawn("allowed", 7, true),
-                                               Drawn("wrong", 7, false),        error,
-                                               Decided(crashed),                Drawn("same2", 0, std::nullopt),
-                                               Decided(promised)};
+  const std::vector<run::RunRecord> records = {
+      Drawn("same", 0, std::nullopt),  Drawn("allowed", 7, true), Drawn("wrong", 7, false), error, Decided(crashed),
+      Drawn("same2", 0, std::nullopt), Decided(promised)};
   CHECK(records[0].verdict == run::Verdict::kIdentical);
   CHECK(records[1].verdict == run::Verdict::kVerified);
   CHECK(records[2].verdict == run::Verdict::kDiffering);
@@ -103,7 +104,8 @@ TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort firs
   CHECK(xml.find("time=\"1.500000\"") != std::string::npos);
 }
 
-TEST_CASE("Batch page: a row per scene, links relative to the page, thumbnails only where an image exists", "[report]") {
+TEST_CASE("Batch page: a row per scene, links relative to the page, thumbnails only where an image exists",
+          "[report]") {
   const std::vector<run::RunRecord> records = {Drawn("same", 0, std::nullopt), Drawn("allowed", 7, true)};
   std::vector<run::RunRecord> with_diff = records;
   with_diff[1].diff = "out/allowed-diff.png";
@@ -156,7 +158,8 @@ TEST_CASE("PlotSvg: a linear axis ticks round numbers and starts at 0 for positi
 
 TEST_CASE("Thumbnail: pictures are averaged, one marked pixel of a diff survives", "[report]") {
   Image diff(600, 400);
-  for (std::size_t i = 0; i < diff.rgba.size(); i += 4) diff.rgba[i] = diff.rgba[i + 1] = diff.rgba[i + 2] = 220, diff.rgba[i + 3] = 255;
+  for (std::size_t i = 0; i < diff.rgba.size(); i += 4)
+    diff.rgba[i] = diff.rgba[i + 1] = diff.rgba[i + 2] = 220, diff.rgba[i + 3] = 255;
   std::uint8_t* marked = diff.pixel(301, 117);
   marked[0] = 255, marked[1] = 0, marked[2] = 0;
   const Image mean = Thumbnail(diff, 96), kept = Thumbnail(diff, 96, ThumbnailFilter::kMostSaturated);

@@ -1,6 +1,7 @@
 // RunScene in process: which backends draw, what is compared and judged, and the verdict each run
 // ends with, on the chapter's scene.
 #include "run/run_scene.hpp"
+
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
@@ -93,7 +94,8 @@ TEST_CASE("RunScene: lavapipe and the twin agree bit for bit, GPU first, with no
   CHECK(again.images[0].rgba == r.images[0].rgba);
 }
 
-TEST_CASE("RunScene: a crashed GPU process is the verdict, the twin still draws, and the problem names the scene", "[run]") {
+TEST_CASE("RunScene: a crashed GPU process is the verdict, the twin still draws, and the problem names the scene",
+          "[run]") {
   const ScopedEnv fault("TWINRASTER_TEST_GPU_FAULT", "abort");
   run::GpuSession gpu({});
   const run::RunResult r = run::RunScene(Chapter(), "scenes/x.json", Options(run::Backends::kBoth, true), gpu);

@@ -1,9 +1,8 @@
 // Grids of instances: an instance with "grid" stands for nx·ny·nz copies, centred on its own
 // translation, i fastest, each keeping the instance's scale and rotation.
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <string>
 
@@ -15,7 +14,8 @@ std::string GridScene(const std::string& instances) {
   return R"({"canvas": {"width": 64, "height": 48}, "viewport": {"width": 1, "height": 1, "distance": 1},
              "camera": {"position": [0, 0, 0]},
              "models": {"tri": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2, "red"]]}},
-             "instances": )" + instances + "}";
+             "instances": )" +
+         instances + "}";
 }
 
 }  // namespace
@@ -59,6 +59,8 @@ TEST_CASE("The grid scenes: Catlike's 10^3 grid and the chapter's million cubes"
   REQUIRE(million.instances.size() == 1'000'000);
   REQUIRE(million.grids.size() == 1);
   REQUIRE(million.models[0].triangles.size() * million.instances.size() == 12'000'000);
-  REQUIRE(million.instances[1].transform.translation - million.instances[0].transform.translation == glm::dvec3(1, 0, 0));
-  REQUIRE(million.instances[100].transform.translation - million.instances[0].transform.translation == glm::dvec3(0, 1, 0));
+  REQUIRE(million.instances[1].transform.translation - million.instances[0].transform.translation ==
+          glm::dvec3(1, 0, 0));
+  REQUIRE(million.instances[100].transform.translation - million.instances[0].transform.translation ==
+          glm::dvec3(0, 1, 0));
 }

@@ -1,10 +1,10 @@
 // OBJ files as twinraster reads them: every face format, negative indices, fans in file order,
 // usemtl groups; and every bad file one SceneError naming the file, the line and the problem.
 #include "scene/obj_file.hpp"
-#include "scene/scene_error.hpp"
-#include "support/test_support.hpp"
 
+#include "scene/scene_error.hpp"
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -105,7 +105,8 @@ TEST_CASE("OBJ usemtl groups: materials in order of first use, faces before any 
   REQUIRE(mesh.triangle_materials == std::vector<std::uint32_t>{kNoMaterial, 0, 0, 1, 0});
 }
 
-TEST_CASE("OBJ lines: CRLF, CR and LF endings, blank and comment lines, statements twinraster ignores", "[scene][obj]") {
+TEST_CASE("OBJ lines: CRLF, CR and LF endings, blank and comment lines, statements twinraster ignores",
+          "[scene][obj]") {
   const ObjMesh mesh = ParseObj(
       "# a comment\r\n"
       "o thing\r"
@@ -119,7 +120,7 @@ TEST_CASE("OBJ lines: CRLF, CR and LF endings, blank and comment lines, statemen
       "vp 0.5\n"
       "l 1 2\n"
       "f 1 2 4\n"  // a positive index may name a vertex written further on
-      "v 9 9 9",  // no final line break
+      "v 9 9 9",   // no final line break
       "mesh.obj");
   REQUIRE(mesh.vertices.size() == 4);
   REQUIRE(mesh.vertices[0] == glm::dvec3(0.1, -2, 1000));  // in double: 0.1 is the double nearest 0.1
@@ -147,7 +148,8 @@ TEST_CASE("Bad OBJ files: one SceneError naming the file, the line and the probl
       {"texture coordinate index without vt", kThreeVertices + "f 1/5 2/5 3/5\n", "line 4",
        "texture coordinate index 5 is out of range: the file has no texture coordinates (vt lines)"},
       {"index 0", kThreeVertices + "f 0 1 2\n", "line 4", "vertex index 0: indices count from 1 (or back from -1)"},
-      {"normal index 0", kThreeVertices + "vn 0 0 1\nf 1//0 2//1 3//1\n", "line 5", "normal index 0: indices count from 1"},
+      {"normal index 0", kThreeVertices + "vn 0 0 1\nf 1//0 2//1 3//1\n", "line 5",
+       "normal index 0: indices count from 1"},
       {"index beyond any integer", kThreeVertices + "f 1 2 99999999999999999999999\n", "line 4",
        "vertex index 99999999999999999999999 is out of range"},
       {"malformed number", "v 0 0 0\nv 1 2.5x 3\n", "line 2", "v: \"2.5x\" is not a number"},
@@ -157,21 +159,27 @@ TEST_CASE("Bad OBJ files: one SceneError naming the file, the line and the probl
       {"not a finite number", "v nan 0 0\n", "line 1", "v: \"nan\" is not a finite number"},
       {"number beyond double", "v 1e999 0 0\n", "line 1", "v: number 1e999 is out of range for a double"},
       {"absurd number", "v 0 0 0\n\nv 0 -2e12 0\n", "line 3", "v: number -2e12 is absurd (magnitude above 1e+12)"},
-      {"too few coordinates", "v 1 2\n", "line 1", "v: expected x y z (optionally followed by w, or by r g b), found 2 numbers"},
+      {"too few coordinates", "v 1 2\n", "line 1",
+       "v: expected x y z (optionally followed by w, or by r g b), found 2 numbers"},
       {"v alone", "v\n", "line 1", "found none"},
       {"five numbers", "v 1 2 3 4 5\n", "line 1", "found 5 numbers"},
       {"normal with two numbers", "vn 0 1\n", "line 1", "vn: expected x y z, found 2 numbers"},
-      {"a comment after a statement", "v 1 2 3 # top\n", "line 1", "\"#\" is not a number (a comment must be on a line of its own)"},
+      {"a comment after a statement", "v 1 2 3 # top\n", "line 1",
+       "\"#\" is not a number (a comment must be on a line of its own)"},
       {"face with two corners", kThreeVertices + "f 1 2\n", "line 4", "f: a face needs at least 3 corners, found 2"},
       {"face with no corners", kThreeVertices + "f\n", "line 4", "found none"},
-      {"corner with four parts", kThreeVertices + "f 1/1/1/1 2 3\n", "line 4", "f: corner 1 \"1/1/1/1\" is not v, v/vt, v//vn or v/vt/vn"},
-      {"corner with an empty vt", kThreeVertices + "f 1/ 2 3\n", "line 4", "corner 1 \"1/\" is not v, v/vt, v//vn or v/vt/vn"},
+      {"corner with four parts", kThreeVertices + "f 1/1/1/1 2 3\n", "line 4",
+       "f: corner 1 \"1/1/1/1\" is not v, v/vt, v//vn or v/vt/vn"},
+      {"corner with an empty vt", kThreeVertices + "f 1/ 2 3\n", "line 4",
+       "corner 1 \"1/\" is not v, v/vt, v//vn or v/vt/vn"},
       {"corner without a vertex", kThreeVertices + "f /1 2 3\n", "line 4", "corner 1 \"/1\" is not v"},
-      {"corner that is not a number", kThreeVertices + "f 1 2 three\n", "line 4", "f: corner 3 \"three\": \"three\" is not an index (an integer)"},
+      {"corner that is not a number", kThreeVertices + "f 1 2 three\n", "line 4",
+       "f: corner 3 \"three\": \"three\" is not an index (an integer)"},
       {"fractional index", kThreeVertices + "f 1 2 3.0\n", "line 4", "\"3.0\" is not an index"},
       {"no faces", kThreeVertices + "# nothing else\n", "(file)", "no faces (f lines): nothing to draw"},
       {"empty file", "", "(file)", "no faces"},
-      {"a NUL byte", kThreeVertices + std::string("f 1 2 3\0", 8) + "\n", "line 4", "not an OBJ text file: binary data (a NUL byte)"},
+      {"a NUL byte", kThreeVertices + std::string("f 1 2 3\0", 8) + "\n", "line 4",
+       "not an OBJ text file: binary data (a NUL byte)"},
       {"line numbers across CRLF and a lone CR", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\r\n\r\nf 1 2 9\r\n", "line 5",
        "vertex index 9 is out of range"},
   };
@@ -301,8 +309,9 @@ RandomObj MakeRandomObj(std::mt19937& rng) {
   if (!any_normal) obj.triangle_normals.clear();
   if (pick(2)) {
     // One line replaced by something likely wrong (or, now and then, harmless).
-    const char* const junk[] = {"v 1 2", "v 1 2 x", "f 1 2", "f 0 1 2", "f 1/2/3/4 1 1", "vn 1 1", "f 1 2 999",
-                                "f -999 1 2", "v 1e999 0 0", "vt", "f 1//7 1 1", "f a b c", "v 1 2 3 # c", "o fine"};
+    const char* const junk[] = {"v 1 2",      "v 1 2 x",   "f 1 2",       "f 0 1 2",     "f 1/2/3/4 1 1",
+                                "vn 1 1",     "f 1 2 999", "f -999 1 2",  "v 1e999 0 0", "vt",
+                                "f 1//7 1 1", "f a b c",   "v 1 2 3 # c", "o fine"};
     lines[pick(lines.size())] = junk[pick(std::size(junk))];
     obj.broken = true;
   }
@@ -323,7 +332,8 @@ TEST_CASE("Random OBJ text: the mesh the file describes, or a SceneError, never 
       ++read;
       if (obj.broken) continue;  // a harmless replacement: only the invariants below hold
       REQUIRE(mesh.vertices.size() == obj.vertices.size());
-      for (std::size_t v = 0; v < mesh.vertices.size(); ++v) REQUIRE(glm::length(mesh.vertices[v] - obj.vertices[v]) < 1e-12);
+      for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+        REQUIRE(glm::length(mesh.vertices[v] - obj.vertices[v]) < 1e-12);
       REQUIRE(mesh.triangles == obj.triangles);
       REQUIRE(mesh.triangle_normals == obj.triangle_normals);
     } catch (const SceneError& e) {

@@ -1,16 +1,16 @@
 // Scenes with OBJ models and lighting: paths relative to the scene, colours and materials, the
 // shading rules, every new error; and an OBJ file on its own framed by SceneForObj.
-#include "scene/obj_file.hpp"
 #include "scene/obj_scene.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
 
+#include "scene/obj_file.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
-#include <nlohmann/json.hpp>
+#include "support/test_support.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,8 @@ const std::string kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 const std::string kQuadWithNormalsObj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n";
 
 // A scene around `models` (a JSON object) and `instances`; `lighting` is added when not null.
-std::string SceneText(const nlohmann::json& models, const nlohmann::json& instances, const nlohmann::json& lighting = nullptr) {
+std::string SceneText(const nlohmann::json& models, const nlohmann::json& instances,
+                      const nlohmann::json& lighting = nullptr) {
   nlohmann::json scene = {
       {"canvas", {{"width", 64}, {"height", 64}}},
       {"viewport", {{"width", 1}, {"height", 1}, {"distance", 1}}},
@@ -39,7 +40,8 @@ std::string SceneText(const nlohmann::json& models, const nlohmann::json& instan
   return scene.dump(2);
 }
 
-const nlohmann::json kHeadlight = {{"ambient", 0.1}, {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"intensity", 0.9}}}}};
+const nlohmann::json kHeadlight = {
+    {"ambient", 0.1}, {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"intensity", 0.9}}}}};
 
 nlohmann::json OneInstance(const char* model = "mesh") { return nlohmann::json::array({{{"model", model}}}); }
 
@@ -88,9 +90,11 @@ class CurrentDirectory {
 
 }  // namespace
 
-TEST_CASE("An OBJ model: its path relative to the scene file, the default colour, unlit without lighting", "[scene][obj]") {
+TEST_CASE("An OBJ model: its path relative to the scene file, the default colour, unlit without lighting",
+          "[scene][obj]") {
   const test::TempDir dir;
-  const auto file = WriteScene(dir, SceneText({{"mesh", {{"obj", "meshes/tri.obj"}}}}, OneInstance()), {{"meshes/tri.obj", kTriangleObj}});
+  const auto file = WriteScene(dir, SceneText({{"mesh", {{"obj", "meshes/tri.obj"}}}}, OneInstance()),
+                               {{"meshes/tri.obj", kTriangleObj}});
   // The tests run elsewhere: the path must be found from the scene's directory, not this one.
   REQUIRE(std::filesystem::current_path() != dir.path());
   const Scene scene = LoadScene(file);
@@ -109,7 +113,8 @@ TEST_CASE("An OBJ model: its path relative to the scene file, the default colour
 TEST_CASE("An OBJ model's colour, and materials colouring usemtl groups", "[scene][obj]") {
   const test::TempDir dir;
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nusemtl skin\nf 1 2 3\nusemtl eyes\nf 1 2 3\n";
-  const nlohmann::json models = {{"mesh", {{"obj", "m.obj"}, {"colour", "blue"}, {"materials", {{"skin", {200, 150, 120}}}}}}};
+  const nlohmann::json models = {
+      {"mesh", {{"obj", "m.obj"}, {"colour", "blue"}, {"materials", {{"skin", {200, 150, 120}}}}}}};
   const Scene scene = LoadScene(WriteScene(dir, SceneText(models, OneInstance()), {{"m.obj", obj}}));
   const auto& t = scene.models[0].triangles;
   REQUIRE(t.size() == 3);
@@ -133,7 +138,8 @@ TEST_CASE("A material the OBJ file never uses is an error naming it", "[scene][o
   REQUIRE(no_usemtl.problem() == "the OBJ file never uses material \"skin\": it has no usemtl lines");
 }
 
-TEST_CASE("Shading defaults: with lighting gouraud if the OBJ has normals, else flat, and without it unlit", "[scene][obj][lighting]") {
+TEST_CASE("Shading defaults: with lighting gouraud if the OBJ has normals, else flat, and without it unlit",
+          "[scene][obj][lighting]") {
   const test::TempDir dir;
   const nlohmann::json models = {
       {"smooth", {{"obj", "quad.obj"}}},
@@ -141,10 +147,12 @@ TEST_CASE("Shading defaults: with lighting gouraud if the OBJ has normals, else 
       {"kept", {{"obj", "quad.obj"}, {"shading", "unlit"}}},
       {"forced", {{"obj", "tri.obj"}, {"shading", "gouraud"}}},
       {"written", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}}},
-      {"written_unlit", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}, {"shading", "unlit"}}},
+      {"written_unlit",
+       {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}, {"shading", "unlit"}}},
   };
   const nlohmann::json instances = nlohmann::json::array({{{"model", "smooth"}}});
-  const std::vector<std::pair<std::string, std::string>> objs = {{"quad.obj", kQuadWithNormalsObj}, {"tri.obj", kTriangleObj}};
+  const std::vector<std::pair<std::string, std::string>> objs = {{"quad.obj", kQuadWithNormalsObj},
+                                                                 {"tri.obj", kTriangleObj}};
   const auto shading_of = [](const Scene& scene, const std::string& name) {
     for (const Model& m : scene.models) {
       if (m.name == name) return m.shading;
@@ -160,9 +168,9 @@ TEST_CASE("Shading defaults: with lighting gouraud if the OBJ has normals, else 
   REQUIRE(shading_of(lit, "written") == Shading::kFlat);
   REQUIRE(shading_of(lit, "written_unlit") == Shading::kUnlit);
   // The OBJ's normals and which corner names which, as the file wrote them.
-  const Model& smooth = lit.models[static_cast<std::size_t>(std::find_if(lit.models.begin(), lit.models.end(), [](const Model& m) {
-                                                              return m.name == "smooth";
-                                                            }) - lit.models.begin())];
+  const Model& smooth = lit.models[static_cast<std::size_t>(
+      std::find_if(lit.models.begin(), lit.models.end(), [](const Model& m) { return m.name == "smooth"; }) -
+      lit.models.begin())];
   REQUIRE(smooth.normals == std::vector<glm::dvec3>{{0, 0, 1}});
   REQUIRE(smooth.triangle_normals == std::vector<std::array<std::uint32_t, 3>>{{0, 0, 0}, {0, 0, 0}});
 
@@ -176,18 +184,21 @@ TEST_CASE("Shading defaults: with lighting gouraud if the OBJ has normals, else 
 }
 
 TEST_CASE("A shading other than unlit without the scene's lighting is an error", "[scene][obj][lighting][bad-input]") {
-  const nlohmann::json flat = {{"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"shading", "flat"}}}};
+  const nlohmann::json flat = {
+      {"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"shading", "flat"}}}};
   const SceneError e = ParseError(SceneText(flat, OneInstance()));
   REQUIRE(e.where() == "models.mesh.shading");
   REQUIRE(e.problem() == "\"flat\" shading needs the scene's \"lighting\"; without it every model is unlit");
-  const nlohmann::json unknown = {{"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"shading", "gouraurd"}}}};
+  const nlohmann::json unknown = {
+      {"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"shading", "gouraurd"}}}};
   const SceneError u = ParseError(SceneText(unknown, OneInstance(), kHeadlight));
   REQUIRE(u.where() == "models.mesh.shading");
   REQUIRE(u.problem() == "expected \"unlit\", \"flat\" or \"gouraud\", found \"gouraurd\" (did you mean \"gouraud\"?)");
 }
 
 TEST_CASE("Lighting: an ambient term, directional and point lights", "[scene][lighting]") {
-  const nlohmann::json models = {{"mesh", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}}}};
+  const nlohmann::json models = {
+      {"mesh", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}}}};
   const nlohmann::json lighting = {{"ambient", 0.2},
                                    {"lights",
                                     {{{"type", "directional"}, {"direction", {1, 4, -3}}, {"intensity", 0.6}},
@@ -210,7 +221,8 @@ TEST_CASE("Lighting: an ambient term, directional and point lights", "[scene][li
 }
 
 TEST_CASE("Bad lighting: each problem named at its JSON path", "[scene][lighting][bad-input]") {
-  const nlohmann::json models = {{"mesh", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}}}};
+  const nlohmann::json models = {
+      {"mesh", {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {"triangles", {{0, 1, 2, "red"}}}}}};
   const auto light = [](nlohmann::json l) { return nlohmann::json{{"ambient", 0.1}, {"lights", {std::move(l)}}}; };
   struct Case {
     const char* what;
@@ -218,24 +230,34 @@ TEST_CASE("Bad lighting: each problem named at its JSON path", "[scene][lighting
     std::string where, problem;
   };
   const std::vector<Case> cases = {
-      {"negative ambient", {{"ambient", -0.1}, {"lights", nlohmann::json::array()}}, "lighting.ambient", "must be 0 or more, found -0.1"},
+      {"negative ambient",
+       {{"ambient", -0.1}, {"lights", nlohmann::json::array()}},
+       "lighting.ambient",
+       "must be 0 or more, found -0.1"},
       {"missing lights", {{"ambient", 0.1}}, "lighting", "missing required key \"lights\""},
-      {"misspelt key", {{"ambiant", 0.1}, {"lights", nlohmann::json::array()}}, "lighting", "unknown key \"ambiant\" (did you mean \"ambient\"?)"},
+      {"misspelt key",
+       {{"ambiant", 0.1}, {"lights", nlohmann::json::array()}},
+       "lighting",
+       "unknown key \"ambiant\" (did you mean \"ambient\"?)"},
       {"lights not a list", {{"lights", 1}}, "lighting.lights", "expected an array, found a number"},
-      {"negative intensity", light({{"type", "point"}, {"position", {0, 0, 0}}, {"intensity", -1}}), "lighting.lights[0].intensity",
-       "must be 0 or more, found -1"},
-      {"missing intensity", light({{"type", "point"}, {"position", {0, 0, 0}}}), "lighting.lights[0]", "missing required key \"intensity\""},
-      {"zero direction", light({{"type", "directional"}, {"direction", {0, 0, 0}}, {"intensity", 1}}), "lighting.lights[0].direction",
-       "a directional light's direction must not be the zero vector"},
+      {"negative intensity", light({{"type", "point"}, {"position", {0, 0, 0}}, {"intensity", -1}}),
+       "lighting.lights[0].intensity", "must be 0 or more, found -1"},
+      {"missing intensity", light({{"type", "point"}, {"position", {0, 0, 0}}}), "lighting.lights[0]",
+       "missing required key \"intensity\""},
+      {"zero direction", light({{"type", "directional"}, {"direction", {0, 0, 0}}, {"intensity", 1}}),
+       "lighting.lights[0].direction", "a directional light's direction must not be the zero vector"},
       {"direction too short", light({{"type", "directional"}, {"direction", {1e-12, 0, 0}}, {"intensity", 1}}),
        "lighting.lights[0].direction", "absurdly short"},
-      {"unknown type", light({{"type", "spot"}, {"intensity", 1}}), "lighting.lights[0].type", "expected \"directional\" or \"point\", found \"spot\""},
-      {"misspelt type", light({{"type", "directonal"}, {"intensity", 1}}), "lighting.lights[0].type", "(did you mean \"directional\"?)"},
+      {"unknown type", light({{"type", "spot"}, {"intensity", 1}}), "lighting.lights[0].type",
+       "expected \"directional\" or \"point\", found \"spot\""},
+      {"misspelt type", light({{"type", "directonal"}, {"intensity", 1}}), "lighting.lights[0].type",
+       "(did you mean \"directional\"?)"},
       {"missing type", light({{"intensity", 1}}), "lighting.lights[0]", "missing required key \"type\""},
-      {"a point light's key on a directional light", light({{"type", "directional"}, {"position", {0, 0, 0}}, {"intensity", 1}}),
-       "lighting.lights[0]", "unknown key \"position\"; valid keys here: type, direction, intensity"},
-      {"direction not a vector", light({{"type", "directional"}, {"direction", "down"}, {"intensity", 1}}), "lighting.lights[0].direction",
-       "expected [x, y, z], found a string"},
+      {"a point light's key on a directional light",
+       light({{"type", "directional"}, {"position", {0, 0, 0}}, {"intensity", 1}}), "lighting.lights[0]",
+       "unknown key \"position\"; valid keys here: type, direction, intensity"},
+      {"direction not a vector", light({{"type", "directional"}, {"direction", "down"}, {"intensity", 1}}),
+       "lighting.lights[0].direction", "expected [x, y, z], found a string"},
       {"lighting not an object", true, "lighting", "expected an object, found a boolean"},
   };
   for (const Case& c : cases) {
@@ -247,7 +269,8 @@ TEST_CASE("Bad lighting: each problem named at its JSON path", "[scene][lighting
     REQUIRE(e.problem().find(c.problem) != std::string::npos);
   }
   // A number beyond double, located by the JSON parser's own error path.
-  const std::string text = SceneText(models, OneInstance(), light({{"type", "point"}, {"position", {0, 0, 0}}, {"intensity", 12345}}));
+  const std::string text =
+      SceneText(models, OneInstance(), light({{"type", "point"}, {"position", {0, 0, 0}}, {"intensity", 12345}}));
   const std::string huge = std::string(text).replace(text.find("12345"), 5, "1e999");
   const SceneError e = ParseError(huge);
   REQUIRE(e.where() == "lighting.lights[0].intensity");
@@ -259,7 +282,8 @@ TEST_CASE("A model is either obj or vertices, and colour and materials belong to
   const SceneError e = ParseError(SceneText(both, OneInstance()));
   REQUIRE(e.where() == "models.mesh.vertices");
   REQUIRE(e.problem() == "a model is read from \"obj\" or written as \"vertices\" and \"triangles\", not both");
-  const nlohmann::json coloured = {{"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"colour", "red"}}}};
+  const nlohmann::json coloured = {
+      {"mesh", {{"vertices", {{0, 0, 0}}}, {"triangles", {{0, 0, 0, "red"}}}, {"colour", "red"}}}};
   const SceneError c = ParseError(SceneText(coloured, OneInstance()));
   REQUIRE(c.where() == "models.mesh.colour");
   REQUIRE(c.problem().find("only for a model read from an OBJ file (\"obj\")") != std::string::npos);
@@ -272,13 +296,15 @@ TEST_CASE("A model is either obj or vertices, and colour and materials belong to
   REQUIRE(empty.problem() == "expected the path of an OBJ file, found \"\"");
 }
 
-TEST_CASE("A missing OBJ file: the path as the scene wrote it, where it was looked for, and the scene", "[scene][obj][bad-input]") {
+TEST_CASE("A missing OBJ file: the path as the scene wrote it, where it was looked for, and the scene",
+          "[scene][obj][bad-input]") {
   const test::TempDir dir;
   const auto file = WriteScene(dir, SceneText({{"mesh", {{"obj", "meshes/none.obj"}}}}, OneInstance()), {});
   const SceneError e = LoadError(file);
   REQUIRE(e.file() == file.string());
   REQUIRE(e.where() == "models.mesh.obj");
-  REQUIRE(e.problem() == "OBJ file \"meshes/none.obj\" (looked for " + (dir / "meshes/none.obj").string() + "): no such file");
+  REQUIRE(e.problem() ==
+          "OBJ file \"meshes/none.obj\" (looked for " + (dir / "meshes/none.obj").string() + "): no such file");
   // Through the command line: one line, exit code 2.
   const test::CliResult r = test::RunCli({"explain", file.string()});
   REQUIRE(r.exit_code == 2);
@@ -290,7 +316,8 @@ TEST_CASE("A missing OBJ file: the path as the scene wrote it, where it was look
   REQUIRE(LoadError(directory).problem().find("): is a directory, not an OBJ file") != std::string::npos);
 }
 
-TEST_CASE("A bad OBJ file a scene names: one line naming the OBJ file and its line, exit code 2", "[scene][obj][bad-input]") {
+TEST_CASE("A bad OBJ file a scene names: one line naming the OBJ file and its line, exit code 2",
+          "[scene][obj][bad-input]") {
   const test::TempDir dir;
   const auto file = WriteScene(dir, SceneText({{"mesh", {{"obj", "meshes/bad.obj"}}}}, OneInstance()),
                                {{"meshes/bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n"}});
@@ -329,7 +356,9 @@ TEST_CASE("A zero scale is an error only for an instance of a lit model", "[scen
   const std::vector<Case> cases = {
       {"a zero scale", {{"scale", 0}}, "instances[1].transform.scale"},
       {"one zero factor", {{"scale", {1, -0.0, 2}}, {"translation", {0, 0, 5}}}, "instances[1].transform.scale[1]"},
-      {"a zero scale step", {{{"translation", {0, 0, 5}}}, {{"scale", {2, 2, 0}}}}, "instances[1].transform[1].scale[2]"},
+      {"a zero scale step",
+       {{{"translation", {0, 0, 5}}}, {{"scale", {2, 2, 0}}}},
+       "instances[1].transform[1].scale[2]"},
   };
   for (const Case& c : cases) {
     INFO(c.what);
@@ -339,7 +368,8 @@ TEST_CASE("A zero scale is an error only for an instance of a lit model", "[scen
             "a lit model (\"lit\", flat shading) cannot be scaled by 0: the normal matrix, the inverse transpose of "
             "M_Model, does not exist for a zero scale (use a non-zero scale, or \"shading\": \"unlit\")");
     // An unlit model, or any model in a scene without lighting, may be flattened.
-    REQUIRE(ParseScene(SceneText(models, instance("plain", c.transform), kHeadlight), "lit.json").instances.size() == 2);
+    REQUIRE(ParseScene(SceneText(models, instance("plain", c.transform), kHeadlight), "lit.json").instances.size() ==
+            2);
     REQUIRE(ParseScene(SceneText(models, instance("lit", c.transform)), "unlit.json").instances.size() == 2);
   }
   // A grid's copies share the instance's transform: one error, at the instance.
@@ -366,7 +396,8 @@ TEST_CASE("Scenes without lighting load as before: no lighting, every model unli
   CHECK(unlit == 44 - 8);  // of the 44 shipped scenes, 8 are lit
 }
 
-TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, front on, lit by a headlight", "[scene][obj]") {
+TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, front on, lit by a headlight",
+          "[scene][obj]") {
   const test::TempDir dir;
   // A box from (2, -1, 5) to (4, 3, 6), off the origin and longer in y; a stray vertex far away
   // that no face names must not move the camera.
@@ -390,11 +421,14 @@ TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, 
   // Model space to canvas pixels, by the chapter's chain done by hand.
   const Transform& transform = scene.instances[0].transform;
   const auto world = [&](glm::dvec3 p) { return transform.rotation * (p * transform.scale) + transform.translation; };
-  const auto camera = [&](glm::dvec3 p) { return glm::transpose(scene.camera.rotation) * (world(p) - scene.camera.position); };
+  const auto camera = [&](glm::dvec3 p) {
+    return glm::transpose(scene.camera.rotation) * (world(p) - scene.camera.position);
+  };
   const auto pixel = [&](glm::dvec3 p) {
     const glm::dvec3 c = camera(p);
-    return glm::dvec2(scene.canvas.width / 2.0 + c.x * scene.viewport.distance / c.z * scene.canvas.width / scene.viewport.width,
-                      scene.canvas.height / 2.0 - c.y * scene.viewport.distance / c.z * scene.canvas.height / scene.viewport.height);
+    return glm::dvec2(
+        scene.canvas.width / 2.0 + c.x * scene.viewport.distance / c.z * scene.canvas.width / scene.viewport.width,
+        scene.canvas.height / 2.0 - c.y * scene.viewport.distance / c.z * scene.canvas.height / scene.viewport.height);
   };
   double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9;
   for (const double x : {2.0, 4.0}) {
@@ -405,7 +439,8 @@ TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, 
         REQUIRE(depth > scene.depth.near);
         REQUIRE(depth < scene.depth.far);
         const glm::dvec2 p = pixel(corner);
-        left = std::min(left, p.x), right = std::max(right, p.x), top = std::min(top, p.y), bottom = std::max(bottom, p.y);
+        left = std::min(left, p.x), right = std::max(right, p.x), top = std::min(top, p.y),
+        bottom = std::max(bottom, p.y);
       }
     }
   }
@@ -429,10 +464,12 @@ TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, 
   const glm::dvec3 from_centre = glm::normalize(eye_in_model - glm::dvec3(3, 1, 5.5));
   REQUIRE(glm::length(from_centre - glm::normalize(glm::dvec3(1, 1, 3))) < 1e-12);
   // The headlight shines from the camera: l, toward the light, points at the eye.
-  REQUIRE(glm::length(glm::normalize(scene.lighting->lights[0].vector) - glm::normalize(scene.camera.position - world({3, 1, 5.5}))) < 1e-12);
+  REQUIRE(glm::length(glm::normalize(scene.lighting->lights[0].vector) -
+                      glm::normalize(scene.camera.position - world({3, 1, 5.5}))) < 1e-12);
 }
 
-TEST_CASE("SceneForObj: Gouraud shading when the OBJ has normals, and LoadSceneOrObj loads other files as scenes", "[scene][obj]") {
+TEST_CASE("SceneForObj: Gouraud shading when the OBJ has normals, and LoadSceneOrObj loads other files as scenes",
+          "[scene][obj]") {
   const test::TempDir dir;
   test::WriteFile(dir / "quad.obj", kQuadWithNormalsObj);
   const Scene scene = SceneForObj(dir / "quad.obj");

@@ -1,8 +1,7 @@
 // Every shipped scene loads, and the chapter's demos carry the demo code's exact numbers.
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 using namespace twinraster;
 

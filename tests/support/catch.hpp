@@ -38,9 +38,9 @@ inline auto HasSubstring(const std::string& text) {
 namespace twinraster::test {
 inline constexpr int kSkippedExitCode = 77;
 }
-#define TWINRASTER_SKIP(reason)                                          \
-  do {                                                                   \
-    std::printf("SKIPPED: %s\n", std::string(reason).c_str());           \
-    std::fflush(stdout);                                                 \
-    std::_Exit(twinraster::test::kSkippedExitCode);                      \
+#define TWINRASTER_SKIP(reason)                                \
+  do {                                                         \
+    std::printf("SKIPPED: %s\n", std::string(reason).c_str()); \
+    std::fflush(stdout);                                       \
+    std::_Exit(twinraster::test::kSkippedExitCode);            \
   } while (false)

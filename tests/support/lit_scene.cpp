@@ -76,14 +76,17 @@ Scene RandomLitScene(std::uint32_t seed) {
   scene.canvas = Canvas{.width = static_cast<std::uint32_t>(dice.Int(16, 200)),
                         .height = static_cast<std::uint32_t>(dice.Int(16, 200)),
                         .background = dice.Colour()};
-  scene.viewport = Viewport{.width = 1, .height = scene.canvas.height / static_cast<double>(scene.canvas.width), .distance = 1};
+  scene.viewport =
+      Viewport{.width = 1, .height = scene.canvas.height / static_cast<double>(scene.canvas.width), .distance = 1};
   scene.depth = Depth{.near = dice.Chance(0.5) ? 0.1 : 0.01, .far = 50, .reversed = dice.Chance(0.3)};
   if (dice.Chance(0.15)) scene.viewport.projection = Projection::kOrthographic;
 
   const int models = dice.Int(1, 3);
   for (int m = 0; m < models; ++m) {
     const int pick = dice.Int(0, 2);
-    const Shading shading = pick == 0 ? Shading::kFlat : pick == 1 ? Shading::kGouraud : (dice.Chance(0.5) ? Shading::kUnlit : Shading::kGouraud);
+    const Shading shading = pick == 0   ? Shading::kFlat
+                            : pick == 1 ? Shading::kGouraud
+                                        : (dice.Chance(0.5) ? Shading::kUnlit : Shading::kGouraud);
     scene.models.push_back(LumpySphere(seed * 31u + static_cast<std::uint32_t>(m), dice.Int(3, 12), dice.Int(3, 16),
                                        dice.Chance(0.5), shading));
   }
@@ -96,7 +99,8 @@ Scene RandomLitScene(std::uint32_t seed) {
       if (dice.Chance(0.2)) scale[k] = -scale[k];  // mirrors: the normal matrix flips with them
     }
     instance.transform.scale = scale;
-    instance.transform.rotation = Rotation(glm::normalize(dice.Vec3(-1, 1) + glm::dvec3(0, 0, 1e-3)), dice.Uniform(0, 360));
+    instance.transform.rotation =
+        Rotation(glm::normalize(dice.Vec3(-1, 1) + glm::dvec3(0, 0, 1e-3)), dice.Uniform(0, 360));
     instance.transform.translation = dice.Vec3(-3, 3) + glm::dvec3(0, 0, 6);
     scene.instances.push_back(instance);
   }

@@ -46,7 +46,7 @@ void RunEndOfRunWork();  // main() calls it once
 std::string ReadFile(const std::filesystem::path& file);
 void WriteFile(const std::filesystem::path& file, const std::string& text);
 std::filesystem::path SourcePath(const std::string& relative);  // inside the source tree
-std::vector<std::filesystem::path> ShippedScenes();       // scenes/**/*.json but the large ones, sorted
-std::vector<std::filesystem::path> LargeShippedScenes();  // the million-instance scenes, sorted
+std::vector<std::filesystem::path> ShippedScenes();             // scenes/**/*.json but the large ones, sorted
+std::vector<std::filesystem::path> LargeShippedScenes();        // the million-instance scenes, sorted
 
 }  // namespace twinraster::test

@@ -1,8 +1,7 @@
 // Homogeneous clipping in double: triangles straddling the near plane z = 0, by hand.
+#include "support/catch.hpp"
 #include "truth/truth_clipping.hpp"
 #include "truth_test_support.hpp"
-
-#include "support/catch.hpp"
 
 using namespace twinraster;
 using namespace twinraster::truthtest;
@@ -24,16 +23,17 @@ TEST_CASE("Truth clipping: the near plane cuts a triangle straddling z = 0", "[t
 
   // Left: window x = 8 (no centres on it). Top: y = 2. Hypotenuse x + y = 16 through centres with
   // px + py = 15, a right edge, so not taken.
-  const PixelSet expected =
-      PixelsWhere(0, 15, 0, 15, [](int x, int y) { return x >= 8 && y >= 2 && x + y <= 14; });
+  const PixelSet expected = PixelsWhere(0, 15, 0, 15, [](int x, int y) { return x >= 8 && y >= 2 && x + y <= 14; });
   REQUIRE(expected.size() == 15);
   CHECK(CoveredBy(16, 16, {{a, b, c}}) == expected);
 
   // All of it behind the near plane, or beyond the far plane (z > w): nothing.
-  CHECK(CoveredBy(16, 16, {{FromWindow(2, 2, -0.5, 16, 16), FromWindow(14, 2, -0.1, 16, 16),
-                            FromWindow(2, 14, -0.5, 16, 16)}}).empty());
-  CHECK(CoveredBy(16, 16, {{FromWindow(2, 2, 1.5, 16, 16), FromWindow(14, 2, 1.01, 16, 16),
-                            FromWindow(2, 14, 1.5, 16, 16)}}).empty());
+  CHECK(CoveredBy(16, 16,
+                  {{FromWindow(2, 2, -0.5, 16, 16), FromWindow(14, 2, -0.1, 16, 16), FromWindow(2, 14, -0.5, 16, 16)}})
+            .empty());
+  CHECK(CoveredBy(16, 16,
+                  {{FromWindow(2, 2, 1.5, 16, 16), FromWindow(14, 2, 1.01, 16, 16), FromWindow(2, 14, 1.5, 16, 16)}})
+            .empty());
 }
 
 TEST_CASE("Truth clipping: a vertex behind the eye (w < 0)", "[truth][clipping]") {

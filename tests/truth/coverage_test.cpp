@@ -1,8 +1,7 @@
 // Coverage at pixel centres, by hand: which centres a triangle covers, and the top-left rule on
 // exact ties, with every centre of a tiled region covered exactly once.
-#include "truth_test_support.hpp"
-
 #include "support/catch.hpp"
+#include "truth_test_support.hpp"
 
 #include <algorithm>
 
@@ -42,8 +41,7 @@ TEST_CASE("Truth coverage: ties at centres follow the top-left rule", "[truth][c
   // Vertices on centres: (1.5, 1.5), (5.5, 1.5), (1.5, 5.5). Its top edge (y = 1.5) and left edge
   // (x = 1.5) take their centres; the hypotenuse (x + y = 7), a right edge, does not.
   const ClipTriangle upper = Window(8, {1.5, 1.5}, {5.5, 1.5}, {1.5, 5.5});
-  const PixelSet upper_expected =
-      PixelsWhere(0, 7, 0, 7, [](int x, int y) { return x >= 1 && y >= 1 && x + y <= 5; });
+  const PixelSet upper_expected = PixelsWhere(0, 7, 0, 7, [](int x, int y) { return x >= 1 && y >= 1 && x + y <= 5; });
   REQUIRE(upper_expected.size() == 10);
   CHECK(CoveredBy(8, 8, upper) == upper_expected);
   CHECK(CoveredBy(8, 8, Reversed(upper)) == upper_expected);
@@ -51,8 +49,7 @@ TEST_CASE("Truth coverage: ties at centres follow the top-left rule", "[truth][c
   // Its mirror completes the square: the shared hypotenuse is its left edge, so it takes those
   // centres; its bottom (y = 5.5) and right (x = 5.5) edges do not.
   const ClipTriangle lower = Window(8, {5.5, 5.5}, {1.5, 5.5}, {5.5, 1.5});
-  const PixelSet lower_expected =
-      PixelsWhere(0, 7, 0, 7, [](int x, int y) { return x <= 4 && y <= 4 && x + y >= 6; });
+  const PixelSet lower_expected = PixelsWhere(0, 7, 0, 7, [](int x, int y) { return x <= 4 && y <= 4 && x + y >= 6; });
   REQUIRE(lower_expected.size() == 6);
   CHECK(CoveredBy(8, 8, lower) == lower_expected);
   CHECK(CoveredBy(8, 8, Reversed(lower)) == lower_expected);
@@ -104,7 +101,8 @@ TEST_CASE("Truth coverage: zero area draws nothing, and coverage stops at the fr
 
   // A triangle far larger than the canvas (clipped to the view volume first) covers every pixel.
   const PixelSet all = PixelsWhere(0, 7, 0, 3, [](int, int) { return true; });
-  const ClipTriangle huge{{FromWindow(-8, -8, 0.5, 8, 4), FromWindow(40, -8, 0.5, 8, 4), FromWindow(-8, 40, 0.5, 8, 4)}};
+  const ClipTriangle huge{
+      {FromWindow(-8, -8, 0.5, 8, 4), FromWindow(40, -8, 0.5, 8, 4), FromWindow(-8, 40, 0.5, 8, 4)}};
   CHECK(CoveredPixels(Render(MakeInput(8, 4, {huge}))) == all);
 
   // Half off the left side: only the centres on the canvas, x > 0 side of the edge x + y = 4.

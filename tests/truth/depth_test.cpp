@@ -1,7 +1,6 @@
 // Depth: clears, LESS and GREATER, equal depths, and z interpolated in window space.
-#include "truth_test_support.hpp"
-
 #include "support/catch.hpp"
+#include "truth_test_support.hpp"
 
 using namespace twinraster;
 using namespace twinraster::truthtest;

@@ -14,9 +14,9 @@ TEST_CASE("Edge function: simple values and the twin's sign convention", "[truth
   CHECK(EvaluateEdge({0, 0}, {0, 4}, {4, 0}).sign == 1);
   CHECK(EvaluateEdge({0, 0}, {0, 4}, {4, 0}).value == 16.0);
   CHECK(EvaluateEdge({0, 0}, {4, 0}, {0, 4}).sign == -1);
-  CHECK(EvaluateEdge({0, 0}, {0, 4}, {0, 2}).sign == 0);   // on the edge
-  CHECK(EvaluateEdge({0, 0}, {0, 4}, {0, 9}).sign == 0);   // on the edge's line
-  CHECK(EvaluateEdge({1, 1}, {1, 1}, {3, 7}).sign == 0);   // degenerate edge
+  CHECK(EvaluateEdge({0, 0}, {0, 4}, {0, 2}).sign == 0);  // on the edge
+  CHECK(EvaluateEdge({0, 0}, {0, 4}, {0, 9}).sign == 0);  // on the edge's line
+  CHECK(EvaluateEdge({1, 1}, {1, 1}, {3, 7}).sign == 0);  // degenerate edge
 }
 
 TEST_CASE("Edge function: exact sign near a line where plain double arithmetic fails", "[truth][exact]") {

@@ -1,9 +1,8 @@
 // ExactFramebuffer and ExactClipSpace against hand-computed values.
 #include "chain/draw_list.hpp"
 #include "chain/matrices.hpp"
-#include "truth/truth_renderer.hpp"
-
 #include "support/catch.hpp"
+#include "truth/truth_renderer.hpp"
 
 using namespace twinraster;
 

@@ -6,10 +6,9 @@
 #include "chain/matrices.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/rotation.hpp"
+#include "support/catch.hpp"
 #include "support/lit_scene.hpp"
 #include "truth/truth_renderer.hpp"
-
-#include "support/catch.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -47,8 +46,12 @@ Image Truth(const Scene& scene) {
 
 int Red(const Image& image, int x, int y) { return image.rgba[4 * (std::size_t(y) * image.width + std::size_t(x))]; }
 
-Light Directional(glm::dvec3 l, double intensity) { return Light{.kind = Light::Kind::kDirectional, .vector = l, .intensity = intensity}; }
-Light Point(glm::dvec3 p, double intensity) { return Light{.kind = Light::Kind::kPoint, .vector = p, .intensity = intensity}; }
+Light Directional(glm::dvec3 l, double intensity) {
+  return Light{.kind = Light::Kind::kDirectional, .vector = l, .intensity = intensity};
+}
+Light Point(glm::dvec3 p, double intensity) {
+  return Light{.kind = Light::Kind::kPoint, .vector = p, .intensity = intensity};
+}
 
 // The book's I at world point `p` with unit world normal `n`, written out here rather than taken
 // from the chain, so that the truth is checked against the formula itself.
@@ -82,7 +85,8 @@ std::array<glm::dvec3, 3> HandCornerColours(const Scene& scene, std::size_t t, N
 // Weights λ (summing to 1) of the point Σ λ_i clip_i that lands on the pixel centre (px, py):
 // Σ λ_i (x_i - xn w_i) = 0, Σ λ_i (y_i - yn w_i) = 0. Colour linear in clip space is Σ λ_i c_i,
 // whatever clipping did on the way. glm's dmat3 is column-major: a[column][row].
-glm::dvec3 ClipWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width, std::uint32_t height) {
+glm::dvec3 ClipWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width,
+                       std::uint32_t height) {
   const double xn = 2.0 * (px + 0.5) / width - 1.0, yn = 2.0 * (py + 0.5) / height - 1.0;
   glm::dmat3 a;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -92,7 +96,8 @@ glm::dvec3 ClipWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, st
 }
 
 // The same weights for colours interpolated linearly on the screen (not perspective-correct).
-glm::dvec3 ScreenWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width, std::uint32_t height) {
+glm::dvec3 ScreenWeights(const std::array<glm::dvec4, 3>& clip, int px, int py, std::uint32_t width,
+                         std::uint32_t height) {
   std::array<glm::dvec4, 3> projected;
   for (std::size_t i = 0; i < 3; ++i) projected[i] = glm::dvec4(clip[i].x / clip[i].w, clip[i].y / clip[i].w, 0.0, 1.0);
   return ClipWeights(projected, px, py, width, height);
@@ -104,7 +109,7 @@ const std::uint8_t* Pixel(const Image& image, std::size_t p) { return &image.rgb
 bool RoundsTo(double c, int b) { return std::abs(std::clamp(c, 0.0, 1.0) * 255.0 - b) <= 0.5 + 1e-7; }
 
 struct GouraudCheck {
-  std::uint64_t pixels = 0;  // covered pixels checked against the clip-space-linear colour
+  std::uint64_t pixels = 0;        // covered pixels checked against the clip-space-linear colour
   double worst_screen_linear = 0;  // how far (of 255) colours linear on the screen would be
 };
 
@@ -148,19 +153,24 @@ GouraudCheck CheckGouraudPixels(const Scene& scene, Normal normal_of) {
 
 TEST_CASE("Truth light: ambient plus a directional light facing the square, and the cap at 1", "[truth][lighting]") {
   // I = 0.2 + 0.6 · 1 = 0.8: 255 · 0.8 = 204.
-  CHECK(Red(Truth(FacingSquare({.ambient = 0.2, .lights = {Directional({0, 0, -1}, 0.6)}}, Shading::kFlat)), 32, 32) == 204);
+  CHECK(Red(Truth(FacingSquare({.ambient = 0.2, .lights = {Directional({0, 0, -1}, 0.6)}}, Shading::kFlat)), 32, 32) ==
+        204);
   // Ambient alone: 255 · 0.4 = 102; a light from behind adds nothing.
-  CHECK(Red(Truth(FacingSquare({.ambient = 0.4, .lights = {Directional({0, 0, 1}, 0.9)}}, Shading::kGouraud)), 32, 32) == 102);
+  CHECK(Red(Truth(FacingSquare({.ambient = 0.4, .lights = {Directional({0, 0, 1}, 0.9)}}, Shading::kGouraud)), 32,
+            32) == 102);
   // A light at 60 degrees: n·l/|l| = cos 60° = 0.5 whatever |l|; I = 0.5 · 0.8 = 0.4, 102.
   const glm::dvec3 sixty(0, std::sin(std::acos(0.5)) * 7, -0.5 * 7);
   CHECK(Red(Truth(FacingSquare({.ambient = 0, .lights = {Directional(sixty, 0.8)}}, Shading::kFlat)), 32, 32) == 102);
   // I = 0.5 + 0.8 = 1.3 is capped at 1: white, not brighter.
-  CHECK(Red(Truth(FacingSquare({.ambient = 0.5, .lights = {Directional({0, 0, -1}, 0.8)}}, Shading::kFlat)), 32, 32) == 255);
+  CHECK(Red(Truth(FacingSquare({.ambient = 0.5, .lights = {Directional({0, 0, -1}, 0.8)}}, Shading::kFlat)), 32, 32) ==
+        255);
 }
 
-TEST_CASE("Truth light: flat shading lights the triangle at its first vertex, Gouraud at every corner", "[truth][lighting]") {
+TEST_CASE("Truth light: flat shading lights the triangle at its first vertex, Gouraud at every corner",
+          "[truth][lighting]") {
   // A point light straight in front of corner 0 of both triangles, (-1, -1, 5) in world space.
-  const Lighting point{.ambient = 0, .lights = {Light{.kind = Light::Kind::kPoint, .vector = {-1, -1, 3}, .intensity = 1}}};
+  const Lighting point{.ambient = 0,
+                       .lights = {Light{.kind = Light::Kind::kPoint, .vector = {-1, -1, 3}, .intensity = 1}}};
   const Image flat = Truth(FacingSquare(point, Shading::kFlat));
   // Lit at corner 0 only, where l = (0, 0, -2) is along the normal: I = 1 over the whole triangle.
   CHECK(Red(flat, 32, 40) == 255);
@@ -200,7 +210,8 @@ TEST_CASE("Truth light: a lit list without the light is refused, an unlit list n
   CHECK(Red(RenderTruth(BuildDrawList(unlit), ExactClipSpace(unlit)), 32, 32) == 255);  // its own white
 }
 
-TEST_CASE("Truth light: a flat triangle takes its first corner's light from a point light, not its centroid's", "[truth][lighting]") {
+TEST_CASE("Truth light: a flat triangle takes its first corner's light from a point light, not its centroid's",
+          "[truth][lighting]") {
   // Two triangles whose first corners are opposite corners of the square, (-1, -1, 5) and (1, 1, 5),
   // both facing the camera; a point light off-centre in front; a colour that is not grey.
   Scene scene = FacingSquare({.ambient = 0.1, .lights = {Point({0.3, -0.4, 3}, 0.7)}}, Shading::kFlat);

@@ -25,8 +25,7 @@ struct ClipTriangle {
 
 // Clip position of window position (x, y) at depth z, scaled by w > 0 (w changes nothing on
 // screen). Exact for power-of-two sizes and window coordinates with few fraction bits.
-inline glm::dvec4 FromWindow(double x, double y, double z, std::uint32_t width, std::uint32_t height,
-                             double w = 1.0) {
+inline glm::dvec4 FromWindow(double x, double y, double z, std::uint32_t width, std::uint32_t height, double w = 1.0) {
   return {w * (2.0 * x / width - 1.0), w * (2.0 * y / height - 1.0), w * z, w};
 }
 

@@ -2,13 +2,12 @@
 // snapping to 1/256 px move edges by a few thousandths of a pixel, so only the rare pixel centre
 // that close to an edge may differ. (The harder scenes under scenes/ differ on purpose, e.g. float
 // depth fighting, and are the benchmark's business, not this guard's.)
-#include "cpu/cpu_renderer.hpp"
 #include "chain/draw_list.hpp"
+#include "cpu/cpu_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "truth/truth_renderer.hpp"
-
-#include "support/catch.hpp"
 
 #include <cstring>
 

@@ -5,10 +5,9 @@
 // as the bench draws it).
 #include "chain/draw_list.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/image_hashes.hpp"
 #include "truth/truth_renderer.hpp"
-
-#include "support/catch.hpp"
 
 #include <map>
 #include <string>
@@ -54,8 +53,8 @@ TEST_CASE("Truth: unlit scenes render byte for byte as before the truth learnt l
       {"hard/zero-negative-scale", 0xf8396ca81a4f80f3ull},
       {"lookat", 0x228471f6469ca600ull},
   };
-  const std::size_t checked =
-      test::ForEachRecordedScene(before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
+  const std::size_t checked = test::ForEachRecordedScene(
+      before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
         INFO(name);
         Scene scene = LoadScene(file);
         REQUIRE_FALSE(scene.lighting.has_value());

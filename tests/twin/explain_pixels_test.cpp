@@ -2,10 +2,10 @@
 // centroid of a visible triangle, traced by `explain --json`, has that triangle's colour.
 #include "chain/draw_list.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
 
-#include "support/catch.hpp"
 #include <nlohmann/json.hpp>
 
 using namespace twinraster;

@@ -4,10 +4,9 @@
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
+#include "support/catch.hpp"
 #include "support/chapter_cube.hpp"
 #include "twin_support.hpp"
-
-#include "support/catch.hpp"
 
 #include <algorithm>
 
@@ -76,8 +75,8 @@ TEST_CASE("Equal depths: instanced draws keep instance order, then triangle orde
 TEST_CASE("Instanced and per-draw F give identical pixels, with ties and split buffers", "[twin][instancing]") {
   const DrawList list = CoincidentCubes();
   const Image cpu = RenderOnCpu(list, test::TwinOptions());
-  GpuRenderer split(GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways,
-                               .instances_per_buffer = 7});
+  GpuRenderer split(
+      GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways, .instances_per_buffer = 7});
   GpuTimings timings;
   const Image gpu_split = split.Render(list, &timings);
   INFO(CompareImages(gpu_split, cpu).differing_pixels << " pixels differ with buffers of 7");

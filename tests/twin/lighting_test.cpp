@@ -7,12 +7,11 @@
 #include "cpu/cpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/image_counts.hpp"
-#include "support/test_support.hpp"
-#include "support/lit_scene.hpp"
-#include "twin_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/image_counts.hpp"
+#include "support/lit_scene.hpp"
+#include "support/test_support.hpp"
+#include "twin_support.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -46,9 +45,10 @@ TEST_CASE("Lit spheres, flat and Gouraud: GPU image == CPU image", "[twin][light
       instance.transform.scale = glm::dvec3(1.5, 0.8, 1.0);
       instance.transform.translation = glm::dvec3(0, 0, 4);
       scene.instances.push_back(instance);
-      scene.lighting = Lighting{.ambient = 0.1,
-                                .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {1, 1, -1}, .intensity = 0.6},
-                                           Light{.kind = Light::Kind::kPoint, .vector = {-2, 1, 1}, .intensity = 0.5}}};
+      scene.lighting =
+          Lighting{.ambient = 0.1,
+                   .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {1, 1, -1}, .intensity = 0.6},
+                              Light{.kind = Light::Kind::kPoint, .vector = {-2, 1, 1}, .intensity = 0.5}}};
       const DrawList list = BuildDrawList(scene);
       REQUIRE(list.lighting.has_value());
       const test::TwinResult r = test::RenderTwins(list);
@@ -99,15 +99,19 @@ Scene StretchedSquare() {
   instance.transform.scale = glm::dvec3(2, 1, 1);
   instance.transform.translation = glm::dvec3(0, 0, 6);
   scene.instances.push_back(instance);
-  scene.lighting = Lighting{.ambient = 0, .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {0, 0, -1}, .intensity = 1}}};
+  scene.lighting = Lighting{.ambient = 0,
+                            .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {0, 0, -1}, .intensity = 1}}};
   return scene;
 }
 
-std::uint8_t RedAt(const Image& image, std::uint32_t x, std::uint32_t y) { return image.rgba[4 * (std::size_t{y} * image.width + x)]; }
+std::uint8_t RedAt(const Image& image, std::uint32_t x, std::uint32_t y) {
+  return image.rgba[4 * (std::size_t{y} * image.width + x)];
+}
 
 }  // namespace
 
-TEST_CASE("The normal matrix lights a stretched surface right where M_Model itself is visibly wrong", "[twin][lighting][normals]") {
+TEST_CASE("The normal matrix lights a stretched surface right where M_Model itself is visibly wrong",
+          "[twin][lighting][normals]") {
   const Scene scene = StretchedSquare();
   DrawList right = BuildDrawList(scene);
   REQUIRE(right.lighting.has_value());
@@ -124,9 +128,10 @@ TEST_CASE("The normal matrix lights a stretched surface right where M_Model itse
   CHECK(int{RedAt(wrong_image, 32, 32)} == 114);
 
   // explain's trace says the same, in double.
-  const LightTrace trace = TraceLight(*scene.lighting, ModelMatrix(scene.instances[0].transform),
-                                      *NormalMatrix(ModelMatrix(scene.instances[0].transform)),
-                                      scene.models[0].vertices[0], glm::normalize(glm::dvec3(1, 0, -1)), Rgb8{255, 255, 255});
+  const LightTrace trace =
+      TraceLight(*scene.lighting, ModelMatrix(scene.instances[0].transform),
+                 *NormalMatrix(ModelMatrix(scene.instances[0].transform)), scene.models[0].vertices[0],
+                 glm::normalize(glm::dvec3(1, 0, -1)), Rgb8{255, 255, 255});
   CHECK(trace.intensity == Approx(2 / std::sqrt(5.0)).margin(1e-12));
   CHECK(trace.wrong_normal.x == Approx(2 / std::sqrt(5.0)).margin(1e-12));
   CHECK(trace.unit_normal.x == Approx(1 / std::sqrt(5.0)).margin(1e-12));
@@ -169,7 +174,8 @@ TEST_CASE("Scenes without lighting build exactly the draw list they did before",
   CHECK(unlit == 44 - 8);  // of the 44 shipped scenes, 8 are lit
 }
 
-TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by range, still == the twin", "[twin][lighting][large]") {
+TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by range, still == the twin",
+          "[twin][lighting][large]") {
   // 1,050,000 lit cubes: more than gpu::kLitInstancesPerRange (2^20), so both the per-draw and the
   // instanced path cross a range's end in the middle of a run of instances.
   Scene scene = LoadScene(test::SourcePath("scenes/one-million-cubes.json"));
@@ -187,7 +193,8 @@ TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by ra
   scene.canvas.width = 480;
   scene.canvas.height = 270;
   scene.models[0].shading = Shading::kFlat;
-  scene.lighting = Lighting{.ambient = 0.2, .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {1, 2, -3}, .intensity = 0.8}}};
+  scene.lighting = Lighting{
+      .ambient = 0.2, .lights = {Light{.kind = Light::Kind::kDirectional, .vector = {1, 2, -3}, .intensity = 0.8}}};
   const DrawList list = BuildDrawList(scene);
   REQUIRE(list.draws.size() > (std::size_t{1} << 20));
   const test::TwinResult r = test::RenderTwins(list);

@@ -4,10 +4,9 @@
 #include "cpu/cpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
-
-#include "support/catch.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -61,7 +60,8 @@ NamedPath PathThisRunNames() {
   } else if (caps == "sse4.1") {
     path = {"sse4.1", Arithmetic::kSeparate, 128};
   } else if (caps.empty() || caps == "avx") {
-    path = {caps.empty() ? "this CPU's own" : "avx", avx && fma ? Arithmetic::kFused : Arithmetic::kSeparate, avx ? 256 : 128};
+    path = {caps.empty() ? "this CPU's own" : "avx", avx && fma ? Arithmetic::kFused : Arithmetic::kSeparate,
+            avx ? 256 : 128};
   } else {
     FAIL("no expected path written for GALLIUM_OVERRIDE_CPU_CAPS=" << caps);
   }

@@ -29,7 +29,8 @@ json Cube(Dice& dice) {
   const int faces[12][3] = {{0, 1, 2}, {0, 2, 3}, {4, 0, 3}, {4, 3, 7}, {5, 4, 7}, {5, 7, 6},
                             {1, 5, 6}, {1, 6, 2}, {4, 5, 1}, {4, 1, 0}, {2, 6, 7}, {2, 7, 3}};
   for (const auto& f : faces) triangles.push_back({f[0], f[1], f[2], dice.Colour()});
-  return {{"vertices", {{1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, -1}, {1, -1, -1}}},
+  return {{"vertices",
+           {{1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, -1}, {1, -1, -1}}},
           {"triangles", triangles}};
 }
 
@@ -39,7 +40,8 @@ json Blob(Dice& dice, double extent) {
   const int n = dice.Int(3, 16);
   for (int i = 0; i < n; ++i) vertices.push_back(dice.Vec3(-extent, extent));
   const int t = dice.Int(1, 24);
-  for (int i = 0; i < t; ++i) triangles.push_back({dice.Int(0, n - 1), dice.Int(0, n - 1), dice.Int(0, n - 1), dice.Colour()});
+  for (int i = 0; i < t; ++i)
+    triangles.push_back({dice.Int(0, n - 1), dice.Int(0, n - 1), dice.Int(0, n - 1), dice.Colour()});
   return {{"vertices", vertices}, {"triangles", triangles}};
 }
 
@@ -99,8 +101,11 @@ json RandomSceneJson(std::uint32_t seed) {
   const double far = dice.Chance(0.8) ? dice.LogUniform(40, 1e4) : near * dice.LogUniform(10, 1e3);
   scene["depth"] = {{"near", near}, {"far", far}};
 
-  scene["models"] = {{"cube", Cube(dice)},   {"blob", Blob(dice, 1.5)},     {"slivers", Slivers(dice)},
-                     {"tiny", Sized(dice, 0.004)}, {"huge", Sized(dice, 60)}};
+  scene["models"] = {{"cube", Cube(dice)},
+                     {"blob", Blob(dice, 1.5)},
+                     {"slivers", Slivers(dice)},
+                     {"tiny", Sized(dice, 0.004)},
+                     {"huge", Sized(dice, 60)}};
   const char* names[] = {"cube", "blob", "slivers", "tiny", "huge"};
   const double weights[] = {3, 3, 2, 2, 1};
   std::discrete_distribution<int> pick(std::begin(weights), std::end(weights));
@@ -108,11 +113,12 @@ json RandomSceneJson(std::uint32_t seed) {
   json instances = json::array();
   const int count = dice.Int(2, 10);
   for (int i = 0; i < count; ++i) {
-    instances.push_back({{"model", names[pick(picker)]},
-                         {"transform",
-                          {{"scale", Scale(dice)},
-                           {"rotation", Rotation(dice)},
-                           {"translation", json::array({dice.Uniform(-4, 4), dice.Uniform(-4, 4), dice.Uniform(2, 12)})}}}});
+    instances.push_back(
+        {{"model", names[pick(picker)]},
+         {"transform",
+          {{"scale", Scale(dice)},
+           {"rotation", Rotation(dice)},
+           {"translation", json::array({dice.Uniform(-4, 4), dice.Uniform(-4, 4), dice.Uniform(2, 12)})}}}});
   }
   scene["instances"] = instances;
 

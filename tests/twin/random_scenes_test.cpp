@@ -2,13 +2,12 @@
 // CPU twin's image equals lavapipe's, 0 differing pixels. A failing scene is written out so it can
 // be replayed with `twinraster render`.
 #include "chain/draw_list.hpp"
+#include "random_scene.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
-#include "random_scene.hpp"
-
-#include "support/catch.hpp"
 
 #include <filesystem>
 
@@ -58,9 +57,7 @@ void RequireRandomScenesEqual(bool wireframe) {
 
 }  // namespace
 
-TEST_CASE("Random scenes: GPU image == CPU image in every one", "[twin][random]") {
-  RequireRandomScenesEqual(false);
-}
+TEST_CASE("Random scenes: GPU image == CPU image in every one", "[twin][random]") { RequireRandomScenesEqual(false); }
 
 TEST_CASE("Random scenes in wireframe: GPU image == CPU image in every one", "[twin][random][wireframe]") {
   // The same scenes drawn as triangle edges (polygonMode LINE): clipped polygons, edges along

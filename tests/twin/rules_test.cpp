@@ -4,12 +4,11 @@
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "image/image_compare.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
 #include "named_path.hpp"
-#include "twin_support.hpp"
-
+#include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
+#include "twin_support.hpp"
 
 #include <string>
 
@@ -69,7 +68,8 @@ TEST_CASE("Each rule the twin follows changes pixels of a shipped scene", "[twin
     const cpu::RasterRules mesa22{};
     cpu::RasterRules flipped = mesa22;
     flipped.*r.rule = !(flipped.*r.rule);
-    CHECK(CompareImages(RenderScene(r.scene, r.wireframe, mesa22), RenderScene(r.scene, r.wireframe, flipped)).differing_pixels > 0);
+    CHECK(CompareImages(RenderScene(r.scene, r.wireframe, mesa22), RenderScene(r.scene, r.wireframe, flipped))
+              .differing_pixels > 0);
     ++shown;
   }
   CHECK(shown == 4);

@@ -4,11 +4,10 @@
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 #include "twin_support.hpp"
-
-#include "support/catch.hpp"
 
 using namespace twinraster;
 

@@ -1,9 +1,8 @@
 #include "twin_support.hpp"
 
 #include "cpu/cpu_renderer.hpp"
-#include "support/test_support.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
 
 #include <memory>
 #include <sstream>
@@ -70,8 +69,8 @@ void DescribeDifference(std::ostringstream& s, const char* name, const Image& gp
     for (std::uint32_t x = 0; x < gpu.width && shown < 8; ++x) {
       const std::uint8_t *g = gpu.pixel(x, y), *c = cpu.pixel(x, y);
       if (g[0] == c[0] && g[1] == c[1] && g[2] == c[2] && g[3] == c[3]) continue;
-      s << "\n  pixel (" << x << ", " << y << "): gpu " << int(g[0]) << "," << int(g[1]) << "," << int(g[2])
-        << "  cpu " << int(c[0]) << "," << int(c[1]) << "," << int(c[2]);
+      s << "\n  pixel (" << x << ", " << y << "): gpu " << int(g[0]) << "," << int(g[1]) << "," << int(g[2]) << "  cpu "
+        << int(c[0]) << "," << int(c[1]) << "," << int(c[2]);
       ++shown;
     }
   s << "\n";

@@ -5,9 +5,8 @@
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/image_hashes.hpp"
-
 #include "support/catch.hpp"
+#include "support/image_hashes.hpp"
 
 #include <map>
 #include <string>
@@ -53,8 +52,8 @@ TEST_CASE("Unlit scenes render byte for byte as they did before lighting existed
       {"hard/zero-negative-scale", 0xfaac7a5f12e15661ull},
       {"lookat", 0x228471f6469ca600ull},
   };
-  const std::size_t checked =
-      test::ForEachRecordedScene(before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
+  const std::size_t checked = test::ForEachRecordedScene(
+      before, [](const std::filesystem::path& file, const std::string& name, std::uint64_t hash) {
         INFO(name);
         const Scene scene = LoadScene(file);
         REQUIRE_FALSE(scene.lighting.has_value());

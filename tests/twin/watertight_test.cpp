@@ -1,12 +1,11 @@
 // Watertightness on both backends: triangles that share edges cover every pixel exactly once.
 // Each triangle is drawn alone and the covered pixels are counted, so a pixel claimed by two
 // neighbours (or by none) shows up as a count of 2 (or 0).
-#include "cpu/cpu_renderer.hpp"
 #include "chain/draw_list.hpp"
 #include "chain/matrices.hpp"
-#include "twin_support.hpp"
-
+#include "cpu/cpu_renderer.hpp"
 #include "support/catch.hpp"
+#include "twin_support.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -26,8 +25,7 @@ struct Coverage {
 // Draws each triangle of `mesh` by itself with matrix `f`, on both backends, counting coverage.
 // `count_it` picks which triangles count (all of them, or the front faces only, ...).
 template <typename Predicate>
-Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, const glm::mat4& f,
-                       Predicate count_it) {
+Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, const glm::mat4& f, Predicate count_it) {
   Coverage c{w, h, std::vector<int>(std::size_t{w} * h), std::vector<int>(std::size_t{w} * h)};
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!count_it(t)) continue;
@@ -90,9 +88,7 @@ TEST_CASE("Watertight: a triangle fan covers each pixel inside its outline exact
     }
     // Framebuffer pixels to NDC with w = 1, so the identity matrix draws them where they are.
     DrawMesh fan;
-    const auto ndc = [&](glm::dvec2 p) {
-      return glm::vec3(float(p.x / w * 2 - 1), float(p.y / h * 2 - 1), 0.5f);
-    };
+    const auto ndc = [&](glm::dvec2 p) { return glm::vec3(float(p.x / w * 2 - 1), float(p.y / h * 2 - 1), 0.5f); };
     fan.positions.push_back(ndc(centre));
     for (const glm::dvec2& p : outline) fan.positions.push_back(ndc(p));
     for (int i = 0; i < spokes; ++i) {
@@ -128,7 +124,8 @@ TEST_CASE("Watertight: a triangle fan covers each pixel inside its outline exact
   test::RequireNoValidationMessages();
 }
 
-TEST_CASE("Watertight: a closed convex mesh covers each pixel once with front faces and once with back faces", "[twin][watertight]") {
+TEST_CASE("Watertight: a closed convex mesh covers each pixel once with front faces and once with back faces",
+          "[twin][watertight]") {
   // A UV sphere in perspective, turned at random: every pixel inside the silhouette lies under
   // exactly one front face and exactly one back face, and nothing lies under two of either.
   DrawMesh sphere;

@@ -4,9 +4,8 @@
 // depths, where the twin must give lavapipe's image exactly.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "twin_support.hpp"
-
 #include "support/catch.hpp"
+#include "twin_support.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -101,10 +100,10 @@ TEST_CASE("Wireframe: thousands of random edges, on centres, on subpixel ties, a
   const auto coordinate = [&] {
     const int k = pixel(rng);
     switch (kind(rng)) {
-      case 0: return k + 0.5;                          // a pixel centre
-      case 1: return k + 0.0;                          // a pixel corner
+      case 0: return k + 0.5;                           // a pixel centre
+      case 1: return k + 0.0;                           // a pixel corner
       case 2: return k + 0.5 + (sub(rng) + 0.5) / 256;  // a half-subpixel tie for snapping
-      case 3: return k + sub(rng) / 256.0;             // on the subpixel grid
+      case 3: return k + sub(rng) / 256.0;              // on the subpixel grid
       default: return anywhere(rng);
     }
   };
@@ -116,7 +115,8 @@ TEST_CASE("Wireframe: thousands of random edges, on centres, on subpixel ties, a
       for (glm::vec3& p : tri) p = At(coordinate(), coordinate(), depth(rng));
       if (t % 5 == 0) tri[2] = tri[1];  // a single line (and a zero-length one)
       if (t % 7 == 0) {                 // a short one: a few subpixels to a pixel or two
-        tri[1] = tri[0] + glm::vec3(static_cast<float>(sub(rng) - 128) / 4096.0f, static_cast<float>(sub(rng) - 128) / 8192.0f, 0.0f);
+        tri[1] = tri[0] + glm::vec3(static_cast<float>(sub(rng) - 128) / 4096.0f,
+                                    static_cast<float>(sub(rng) - 128) / 8192.0f, 0.0f);
       }
       triangles.push_back(tri);
     }

@@ -1,16 +1,14 @@
 // The verdict as a whole: passed, failed or inconclusive; an empty image never passes; lines judged
 // by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
-#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
-
 #include "verify_scenes.hpp"
-
-#include "support/catch.hpp"
 
 using namespace twinraster;
 
@@ -32,7 +30,8 @@ std::string TriangleScene(double z) {
   return R"({"canvas": {"width": 64, "height": 48, "background": [255, 255, 255]},
     "viewport": {"width": 1.3333333333333333, "height": 1, "distance": 1}, "depth": {"near": 0.5, "far": 50},
     "camera": {"position": [0, 0, 0]},
-    "models": {"t": {"vertices": [[0, -1, )" + std::to_string(z) + R"(], [-1, 0.5, 3], [1, 0.5, 3]], "triangles": [[0, 1, 2, "red"]]}},
+    "models": {"t": {"vertices": [[0, -1, )" +
+         std::to_string(z) + R"(], [-1, 0.5, 3], [1, 0.5, 3]], "triangles": [[0, 1, 2, "red"]]}},
     "instances": [{"model": "t"}], "wireframe": true})";
 }
 
@@ -78,7 +77,8 @@ TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, n
     "viewport": {"width": 1, "height": 1, "distance": 1}, "depth": {"near": 1e-6, "far": 1e9},
     "camera": {"position": [0, 0, 0]},
     "models": {"t": {"vertices": [[-1e8, -1e8, 1e-5], [1e8, -1e8, 1e-5], [0, 1e8, 1e8]], "triangles": [[0, 1, 2, "red"]]}},
-    "instances": [{"model": "t"}]})", "huge.json");
+    "instances": [{"model": "t"}]})",
+                                 "huge.json");
   const DrawList list = BuildDrawList(scene);
   const verify::Verification drawn = verify::VerifyImage(scene, list, RenderOnCpu(list), {8, true});
   const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
@@ -132,7 +132,8 @@ TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyon
     "viewport": {"width": 64, "height": 1, "distance": 1, "projection": "orthographic"},
     "camera": {"position": [0, 0, 0]},
     "models": {"t": {"vertices": [[-40, 0.52, 2], [200, 0.44, 2], [-40, -0.4, 2]], "triangles": [[0, 1, 2, "blue"]]}},
-    "instances": [{"model": "t"}], "wireframe": true})", "graze.json");
+    "instances": [{"model": "t"}], "wireframe": true})",
+                                 "graze.json");
   const DrawList list = BuildDrawList(scene);
   const Image twin = RenderOnCpu(list);
   CpuOptions guard;

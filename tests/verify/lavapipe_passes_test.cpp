@@ -1,18 +1,16 @@
 // Lavapipe passes the verifier: 0 violations on every shipped scene, filled and in wireframe, lit
 // or not, on lavapipe itself and (since the twin is bit-exact with each, docs/lavapipe-paths.md)
 // under every release's and CPU path's rules on 500 random scenes.
-#include "report/verify_report.hpp"
+#include "../twin/named_path.hpp"
+#include "../twin/twin_support.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/twin_rules.hpp"
+#include "report/verify_report.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
-
-#include "../twin/named_path.hpp"
-#include "../twin/twin_support.hpp"
 #include "verify_scenes.hpp"
-
-#include "support/catch.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -36,7 +34,8 @@ struct NamedRules {
 std::vector<NamedRules> LavapipeRules() {
   std::vector<NamedRules> distinct;
   for (const cpu::KnownLavapipe& known : cpu::KnownLavapipes()) {
-    const bool seen = std::any_of(distinct.begin(), distinct.end(), [&](const NamedRules& r) { return r.rules == known.rules; });
+    const bool seen =
+        std::any_of(distinct.begin(), distinct.end(), [&](const NamedRules& r) { return r.rules == known.rules; });
     if (!seen) {
       distinct.push_back({"Mesa " + std::string(known.mesa) + ", " + std::string(known.instruction_set) + " " +
                               std::to_string(known.vector_bits) + "-bit",
@@ -80,7 +79,8 @@ TEST_CASE("500 random scenes drawn by lavapipe pass, filled and in wireframe", "
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {
       const test::Drawn d = test::RandomScene(seed, wireframe);
-      RequirePasses(d.scene, d.list, gpu.Render(d.list), bits, "seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
+      RequirePasses(d.scene, d.list, gpu.Render(d.list), bits,
+                    "seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
     }
   }
   test::RequireNoValidationMessages();

@@ -1,17 +1,15 @@
 // SwiftShader, the second Vulkan (Debian's chromium package), judged by the verifier at the rules it
 // reports (4 subpixel bits, strictLines): no violation on any shipped or random scene, except the
 // wireframe edges it drops where a triangle runs behind the eye (docs/verify.md, "SwiftShader").
-#include "report/verify_report.hpp"
 #include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
+#include "report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
-
 #include "verify_scenes.hpp"
-
-#include "support/catch.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -54,13 +52,16 @@ void Judge(const GpuRenderer& gpu, const Scene& scene, const DrawList& list, con
            const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
   INFO(what << ": " << report::VerificationText(v));
-  if (drops) CHECK(v.violations > 0);
-  else CHECK(v.NoViolations());
+  if (drops)
+    CHECK(v.violations > 0);
+  else
+    CHECK(v.NoViolations());
 }
 
 }  // namespace
 
-TEST_CASE("SwiftShader is found by name with no environment variable, and reports its rules", "[verify][gpu][swiftshader]") {
+TEST_CASE("SwiftShader is found by name with no environment variable, and reports its rules",
+          "[verify][gpu][swiftshader]") {
   const DeviceIdentity& d = SwiftShader().Device();
   INFO(d.name << ", " << d.driver_name);
   CHECK(d.driver_id == kGoogleSwiftShader);

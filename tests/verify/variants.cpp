@@ -65,14 +65,17 @@ Image Rotated180(const Image& image) {
 
 Image FlippedRows(const Image& image) {
   Image out(image.width, image.height);
-  for (std::uint32_t y = 0; y < image.height; ++y) std::copy_n(image.pixel(0, y), image.width * 4, out.pixel(0, image.height - 1 - y));
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    std::copy_n(image.pixel(0, y), image.width * 4, out.pixel(0, image.height - 1 - y));
   return out;
 }
 
 // Every drawn pixel (not the background) also paints its right and lower neighbours where they
 // show the background: lines two pixels wide, triangles a pixel too big.
 Image Grown(const Image& image, Rgb8 background) {
-  const auto is_background = [&](const std::uint8_t* p) { return p[0] == background.r && p[1] == background.g && p[2] == background.b; };
+  const auto is_background = [&](const std::uint8_t* p) {
+    return p[0] == background.r && p[1] == background.g && p[2] == background.b;
+  };
   Image out = image;
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
@@ -101,14 +104,21 @@ Image DrawTwin(const DrawList& list) { return RenderOnCpu(list); }
 
 std::vector<TwinVariant> ConformantVariants() {
   std::vector<TwinVariant> v;
-  v.push_back({"4 subpixel bits", true, 4, false, [](const Scene&, const DrawList& list) {
+  v.push_back({"4 subpixel bits",
+               true,
+               4,
+               false,
+               [](const Scene&, const DrawList& list) {
                  // Snapped to the 1/16 grid first: the twin's own 1/256 snapping then keeps it.
-                 return Rasterize(list, InWindow(list, [](glm::dvec2 p) {
-                                    return glm::round((p - 0.5) * 16.0) / 16.0 + 0.5;
-                                  }));
+                 return Rasterize(
+                     list, InWindow(list, [](glm::dvec2 p) { return glm::round((p - 0.5) * 16.0) / 16.0 + 0.5; }));
                },
                {}});
-  v.push_back({"the other tie rule (bottom-right)", true, 8, false, [](const Scene&, const DrawList& list) {
+  v.push_back({"the other tie rule (bottom-right)",
+               true,
+               8,
+               false,
+               [](const Scene&, const DrawList& list) {
                  // Drawn turned by 180 degrees and turned back: top-left ties become bottom-right.
                  ClipPositions clip = VertexStage(list);
                  for (auto& draw : clip) {
@@ -117,7 +127,10 @@ std::vector<TwinVariant> ConformantVariants() {
                  return Rotated180(Rasterize(list, clip));
                },
                {}});
-  v.push_back({"coverage, depth and colour in double (the truth's rasterizer)", true, 8, true,
+  v.push_back({"coverage, depth and colour in double (the truth's rasterizer)",
+               true,
+               8,
+               true,
                [](const Scene& scene, const DrawList& list) {
                  ExactClipPositions clip;
                  for (const DrawCall& draw : list.draws) {
@@ -130,16 +143,26 @@ std::vector<TwinVariant> ConformantVariants() {
                  return RenderTruth(list, clip, &light);
                },
                {}});
-  v.push_back({"no FMA (lavapipe's sse4.1 arithmetic)", true, 8, false, [](const Scene&, const DrawList& list) {
+  v.push_back({"no FMA (lavapipe's sse4.1 arithmetic)",
+               true,
+               8,
+               false,
+               [](const Scene&, const DrawList& list) {
                  return RenderWith(list, cpu::RasterRules{.fused_multiply_add = false});
                },
                {}});
-  v.push_back({"lines snapped half to even, clipped at the guard band (Mesa 25)", true, 8, false,
+  v.push_back({"lines snapped half to even, clipped at the guard band (Mesa 25)",
+               true,
+               8,
+               false,
                [](const Scene&, const DrawList& list) {
                  return RenderWith(list, cpu::RasterRules{.lines_round_half_even = true, .wireframe_guard_band = true});
                },
                {}});
-  v.push_back({"the edges clipping makes drawn too (Polygon Mode read strictly)", true, 8, false,
+  v.push_back({"the edges clipping makes drawn too (Polygon Mode read strictly)",
+               true,
+               8,
+               false,
                [](const Scene&, const DrawList& list) {
                  return RenderWith(list, cpu::RasterRules{.wireframe_clip_edges = true});
                },
@@ -149,17 +172,28 @@ std::vector<TwinVariant> ConformantVariants() {
 
 std::vector<TwinVariant> DefectVariants() {
   std::vector<TwinVariant> v;
-  v.push_back({"F transposed", false, 8, false, [](const Scene&, DrawList list) {
+  v.push_back({"F transposed",
+               false,
+               8,
+               false,
+               [](const Scene&, DrawList list) {
                  for (DrawCall& d : list.draws) d.F = glm::transpose(d.F);
                  return DrawTwin(list);
                },
                {}});
-  v.push_back({"y not flipped", false, 8, false, [](const Scene&, const DrawList& list) { return FlippedRows(DrawTwin(list)); },
+  v.push_back({"y not flipped",
+               false,
+               8,
+               false,
+               [](const Scene&, const DrawList& list) { return FlippedRows(DrawTwin(list)); },
                {}});
-  const auto unmoved = [](const DrawList& list) { return Rasterize(list, InWindow(list, [](glm::dvec2 p) { return p; })); };
+  const auto unmoved = [](const DrawList& list) {
+    return Rasterize(list, InWindow(list, [](glm::dvec2 p) { return p; }));
+  };
   v.push_back({"sampling at pixel corners", false, 8, false,
                [](const Scene&, const DrawList& list) {
-                 // Sampling at (x, y) instead of (x + 0.5, y + 0.5) is drawing the scene moved by half a pixel both ways.
+                 // Sampling at (x, y) instead of (x + 0.5, y + 0.5) is drawing the scene moved by half a pixel both
+                 // ways.
                  return Rasterize(list, InWindow(list, [](glm::dvec2 p) { return p + glm::dvec2(0.5, 0.5); }));
                },
                unmoved});
@@ -168,12 +202,20 @@ std::vector<TwinVariant> DefectVariants() {
                  return Rasterize(list, InWindow(list, [](glm::dvec2 p) { return p + glm::dvec2(0.5, 0.0); }));
                },
                unmoved});
-  v.push_back({"the depth test reversed", false, 8, false, [](const Scene&, DrawList list) {
+  v.push_back({"the depth test reversed",
+               false,
+               8,
+               false,
+               [](const Scene&, DrawList list) {
                  list.reversed_z = !list.reversed_z;
                  return DrawTwin(list);
                },
                {}});
-  v.push_back({"one triangle dropped", false, 8, false, [](const Scene&, DrawList list) {
+  v.push_back({"one triangle dropped",
+               false,
+               8,
+               false,
+               [](const Scene&, DrawList list) {
                  // The first triangle of every mesh (so of every instance).
                  for (DrawMesh& mesh : list.meshes) {
                    if (mesh.triangles.empty()) continue;
@@ -184,7 +226,11 @@ std::vector<TwinVariant> DefectVariants() {
                  return DrawTwin(list);
                },
                {}});
-  v.push_back({"front and back faces swapped", false, 8, false, [](const Scene&, DrawList list) {
+  v.push_back({"front and back faces swapped",
+               false,
+               8,
+               false,
+               [](const Scene&, DrawList list) {
                  for (DrawMesh& mesh : list.meshes) {
                    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
                    for (auto& n : mesh.normals) std::swap(n[1], n[2]);
@@ -192,13 +238,21 @@ std::vector<TwinVariant> DefectVariants() {
                  return DrawTwin(list);
                },
                {}});
-  v.push_back({"R and B swapped", false, 8, false, [](const Scene&, const DrawList& list) {
+  v.push_back({"R and B swapped",
+               false,
+               8,
+               false,
+               [](const Scene&, const DrawList& list) {
                  Image image = DrawTwin(list);
                  for (std::size_t i = 0; i < image.rgba.size(); i += 4) std::swap(image.rgba[i], image.rgba[i + 2]);
                  return image;
                },
                {}});
-  v.push_back({"the flat colour from the wrong vertex", false, 8, false, [](const Scene&, const DrawList& list) {
+  v.push_back({"the flat colour from the wrong vertex",
+               false,
+               8,
+               false,
+               [](const Scene&, const DrawList& list) {
                  // Lit flat triangles take their light at corner 1 instead of the provoking corner 0.
                  return DrawTwin(CornersRotated(list));
                },
@@ -215,10 +269,17 @@ std::vector<TwinVariant> DefectVariants() {
                  return Rasterize(list, clip);
                },
                [](const DrawList& list) { return Rasterize(list, VertexStage(list)); }});
-  v.push_back({"every drawn pixel grown to its right and lower neighbours (lines 2 px wide)", false, 8, false,
+  v.push_back({"every drawn pixel grown to its right and lower neighbours (lines 2 px wide)",
+               false,
+               8,
+               false,
                [](const Scene&, const DrawList& list) { return Grown(DrawTwin(list), list.background); },
                {}});
-  v.push_back({"normals transformed by M_Model instead of N", false, 8, false, [](const Scene&, DrawList list) {
+  v.push_back({"normals transformed by M_Model instead of N",
+               false,
+               8,
+               false,
+               [](const Scene&, DrawList list) {
                  if (list.lighting) {
                    for (LitInstance& i : list.lighting->instances) i.normal = glm::mat3(i.model);
                  }

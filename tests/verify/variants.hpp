@@ -14,9 +14,9 @@ namespace twinraster::test {
 
 struct TwinVariant {
   std::string name;
-  bool conformant = false;  // a conformant implementation may draw this image
-  int subpixel_bits = 8;    // what the variant snaps to, for the verifier
-  bool filled_only = false; // it draws no wireframes
+  bool conformant = false;   // a conformant implementation may draw this image
+  int subpixel_bits = 8;     // what the variant snaps to, for the verifier
+  bool filled_only = false;  // it draws no wireframes
   std::function<Image(const Scene&, const DrawList&)> draw;
   // A defect's image without the defect, drawn the same way (the same vertex stage): what the bug
   // changes. Empty: the twin's own image.

@@ -1,16 +1,16 @@
 // The verifier proven both ways on the shipped scenes: conformant rasterizers that differ from
 // lavapipe pass, twins with a real bug fail wherever the bug changes the picture. The table of
 // docs/verify.md is written to <build>/verify-variants.md by these tests.
-#include "report/verify_report.hpp"
+#include "variants.hpp"
+
 #include "chain/draw_list.hpp"
 #include "image/image_compare.hpp"
+#include "report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
-#include "support/test_support.hpp"
-#include "variants.hpp"
-#include "verify_scenes.hpp"
-#include "verify/verifier.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
+#include "verify/verifier.hpp"
+#include "verify_scenes.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -73,14 +73,14 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
       ++t.scenes_changed;
       if (v.violations > 0) {
         ++t.scenes_caught;
-      } else if (ChangedOnlyWhereUncertain(
-                     lavapipe, image, verify::VerifyImage(scene, list, lavapipe, rules))) {
+      } else if (ChangedOnlyWhereUncertain(lavapipe, image, verify::VerifyImage(scene, list, lavapipe, rules))) {
         ++t.scenes_within_freedom;
       } else {
         t.missed.push_back(JobName(job) + " (" + std::to_string(c.differing_pixels) + " px)");
       }
     }
-    if (variant.conformant && !v.NoViolations()) UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << report::VerificationText(v));
+    if (variant.conformant && !v.NoViolations())
+      UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << report::VerificationText(v));
   }
   return t;
 }
@@ -88,13 +88,14 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
 void AppendRow(const std::string& table, const test::TwinVariant& v, const Tally& t, std::size_t jobs) {
   const std::filesystem::path file = std::filesystem::path(TWINRASTER_BINARY_DIR) / table;
   std::ofstream out(file, std::ios::app);
-  out << "| " << v.name << " | " << v.subpixel_bits << " | " << t.scenes_changed << " of " << jobs << " | " << t.differing
-      << " | " << t.violating << " | " << t.scenes_caught << " | " << t.scenes_within_freedom << " |\n";
+  out << "| " << v.name << " | " << v.subpixel_bits << " | " << t.scenes_changed << " of " << jobs << " | "
+      << t.differing << " | " << t.violating << " | " << t.scenes_caught << " | " << t.scenes_within_freedom << " |\n";
 }
 
 }  // namespace
 
-TEST_CASE("Conformant rasterizers that differ from lavapipe give 0 violations on every shipped scene", "[verify][variants]") {
+TEST_CASE("Conformant rasterizers that differ from lavapipe give 0 violations on every shipped scene",
+          "[verify][variants]") {
   const std::vector<Job> jobs = Jobs(true);
   std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-conformant.md");
   for (const test::TwinVariant& v : test::ConformantVariants()) {
@@ -118,12 +119,15 @@ TEST_CASE("Twins with a real bug give violations on every shipped scene where th
     AppendRow("verify-defects.md", v, t, jobs.size());
     std::ostringstream missed;
     for (const std::string& m : t.missed) missed << "\n  " << m;
-    INFO(v.name << ": changed " << t.scenes_changed << " scenes, caught in " << t.scenes_caught << "; missed:" << missed.str());
+    INFO(v.name << ": changed " << t.scenes_changed << " scenes, caught in " << t.scenes_caught
+                << "; missed:" << missed.str());
     CHECK(t.missed.empty());
     // twinraster culls nothing and lights the normals it is given, so which face is the front
     // decides nothing: swapped, the picture is the same, and that is what the test shows.
-    if (v.name == "front and back faces swapped") CHECK(t.differing == 0);
-    else CHECK(t.violating > 0);
+    if (v.name == "front and back faces swapped")
+      CHECK(t.differing == 0);
+    else
+      CHECK(t.violating > 0);
   }
 }
 
@@ -143,7 +147,8 @@ TEST_CASE("Twins with a real bug give violations on every shipped wireframe wher
     AppendRow("verify-defects-wireframe.md", v, t, jobs.size());
     std::ostringstream missed;
     for (const std::string& m : t.missed) missed << "\n  " << m;
-    INFO(v.name << ": changed " << t.scenes_changed << " wireframes, caught in " << t.scenes_caught << "; missed:" << missed.str());
+    INFO(v.name << ": changed " << t.scenes_changed << " wireframes, caught in " << t.scenes_caught
+                << "; missed:" << missed.str());
     CHECK(t.missed.empty());
     caught += t.violating > 0;
     ++judged;

@@ -1,13 +1,13 @@
 // The verifier on hand-made cases: what is certain, uncertain and a violation, and bad input.
-#include "report/verify_report.hpp"
+#include "verify/verifier.hpp"
+
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "report/verify_report.hpp"
 #include "scene/scene_loader.hpp"
-#include "support/test_support.hpp"
-#include "verify/verifier.hpp"
-#include "verify/verify_map.hpp"
-
 #include "support/catch.hpp"
+#include "support/test_support.hpp"
+#include "verify/verify_map.hpp"
 
 using namespace twinraster;
 
@@ -57,8 +57,9 @@ TEST_CASE("verify: the twin's image of a square passes, its inside and outside c
   CHECK(v.pixels[std::size_t(24) * 64 + 32] == verify::PixelClass::kCertain);
 }
 
-TEST_CASE("verify: a wrong colour inside the square, or a grey pixel outside it, is a violation named with what is allowed",
-          "[verify]") {
+TEST_CASE(
+    "verify: a wrong colour inside the square, or a grey pixel outside it, is a violation named with what is allowed",
+    "[verify]") {
   Case c = Square();
   Paint(c.image, 30, 20, {0, 0, 255});
   Paint(c.image, 5, 5, {240, 240, 240});

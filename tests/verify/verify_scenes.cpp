@@ -1,10 +1,9 @@
 #include "verify_scenes.hpp"
 
+#include "../twin/random_scene.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_support.hpp"
-
-#include "../twin/random_scene.hpp"
 
 #include <filesystem>
 #include <stdexcept>
