@@ -49,7 +49,11 @@ std::string CubesJson(std::size_t count, std::uint32_t width, std::uint32_t heig
     << static_cast<double>(width) / height << R"(, "height": 1, "distance": 1}, "depth": {"near": 0.5, "far": )"
     << 4 * size << R"(},)"
     << R"("camera": {"eye": [)" << 0.9 * size << ", " << 0.7 * size << ", " << -1.6 * size
-    << R"(], "center": [0, 0, 0], "up": [0, 1, 0]}, "models": {"cube": {"vertices": [[1, 1, 1], [-1, 1, 1], [-1, -1, 1], [1, -1, 1], [1, 1, -1], [-1, 1, -1], [-1, -1, -1], [1, -1, -1]], "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"], [4, 0, 3, "green"], [4, 3, 7, "green"], [5, 4, 7, "blue"], [5, 7, 6, "blue"], [1, 5, 6, "yellow"], [1, 6, 2, "yellow"], [4, 5, 1, "purple"], [4, 1, 0, "purple"], [2, 6, 7, "cyan"], [2, 7, 3, "cyan"]]}}, "instances": [)";
+    << R"(], "center": [0, 0, 0], "up": [0, 1, 0]}, "models": {"cube": {"vertices": [)"
+    << R"([1, 1, 1], [-1, 1, 1], [-1, -1, 1], [1, -1, 1], [1, 1, -1], [-1, 1, -1], [-1, -1, -1], [1, -1, -1]])"
+    << R"(, "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"], [4, 0, 3, "green"], [4, 3, 7, "green"], )"
+    << R"([5, 4, 7, "blue"], [5, 7, 6, "blue"], [1, 5, 6, "yellow"], [1, 6, 2, "yellow"], )"
+    << R"([4, 5, 1, "purple"], [4, 1, 0, "purple"], [2, 6, 7, "cyan"], [2, 7, 3, "cyan"]]}}, "instances": [)";
   bool first = true;
   for (std::size_t k = 0; k < nz; ++k)
     for (std::size_t j = 0; j < ny; ++j)
