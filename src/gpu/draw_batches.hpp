@@ -17,7 +17,7 @@ namespace twinraster::gpu {
 enum class Instancing { kAuto, kAlways, kNever };
 
 // Below this many consecutive draws of one mesh, per-draw push constants cost no more than
-// filling an instance buffer (see the README's bench section for the crossover).
+// filling an instance buffer (docs/million-cubes.md measures the crossover).
 inline constexpr std::uint32_t kInstancingThreshold = 8;
 // F matrices per instance buffer: 64 MiB each, far inside any device's allocation limit, so a
 // scene with millions of instances is split across buffers instead of failing.
