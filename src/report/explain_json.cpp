@@ -1,5 +1,7 @@
 #include "report/explain_json.hpp"
 
+#include "scene/model_reader.hpp"
+
 #include <nlohmann/json.hpp>
 
 namespace twinraster::report {
@@ -34,15 +36,6 @@ const char* StepKind(TransformStep::Kind kind) {
     case TransformStep::Kind::kTranslation: return "translation";
   }
   return "?";
-}
-
-const char* ShadingName(Shading shading) {
-  switch (shading) {
-    case Shading::kFlat: return "flat";
-    case Shading::kGouraud: return "gouraud";
-    case Shading::kUnlit: break;
-  }
-  return "unlit";
 }
 
 Json FrustumJson(const Frustum& f) {

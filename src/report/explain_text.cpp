@@ -1,5 +1,7 @@
 #include "report/explain_text.hpp"
 
+#include "scene/model_reader.hpp"
+
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -46,15 +48,6 @@ std::string StepName(TransformStep::Kind kind) {
     case TransformStep::Kind::kTranslation: return "I_T";
   }
   return "?";
-}
-
-const char* ShadingName(Shading shading) {
-  switch (shading) {
-    case Shading::kFlat: return "flat";
-    case Shading::kGouraud: return "gouraud";
-    case Shading::kUnlit: break;
-  }
-  return "unlit";
 }
 
 bool Orthographic(const Scene& scene) { return scene.viewport.projection == Projection::kOrthographic; }
