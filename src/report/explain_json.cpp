@@ -119,7 +119,7 @@ Json InstanceJson(const InstanceExplanation& x) {
     }
   }
   entry["model_matrix"] = Rows(x.model_matrix);
-  entry["mvp"] = Rows(x.f);  // F, under the name the tools expect
+  entry["mvp"] = Rows(x.f);  // F, under the key the explain schema names (docs/schemas/explain.schema.json)
   entry["shading"] = x.lit ? ShadingName(x.model->shading) : "unlit";
   entry["normal_matrix"] = x.normal_matrix ? Rows(*x.normal_matrix) : Json(nullptr);
   entry["vertices"] = Json::array();
