@@ -122,7 +122,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       clock.Lap();
       const std::string bytes = EncodePng(twin_image);
       png.push_back(clock.Lap());
-      judge.push_back(run::JudgeImage(scene, twin_image, twin.drawn_by.rasterizes, false).verify_ms);
+      judge.push_back(run::JudgeImage(scene, list, twin_image, twin.drawn_by.rasterizes, false).verify_ms);
       row.instances = list.draws.size();
       row.triangles = list.draws.size() * list.meshes.front().triangles.size();
       row.threads = twin.record.threads;

@@ -8,6 +8,16 @@
 
 namespace twinraster::run {
 
+namespace {
+
+// The twin and the book report themselves as the twin does: lavapipe's subpixel bits, strict lines.
+verify::DrawnBy TwinDrawnBy() {
+  const TwinLimits limits = TwinDeviceLimits();
+  return {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
+}
+
+}  // namespace
+
 IsolatedGpuResult GpuSession::Render(const DrawList& list) {
   if (!process_) process_.emplace(options_);
   return process_->Render(list);
@@ -48,8 +58,7 @@ BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsig
   options.rules = rules;
   CpuTimings t;
   run.image = RenderOnCpu(list, options, &t);
-  const TwinLimits limits = TwinDeviceLimits();
-  run.drawn_by = {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
+  run.drawn_by = TwinDrawnBy();
   run.record.threads = t.threads;
   run.record.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
   run.record.setup_ms = t.setup_ms, run.record.draw_ms = t.draw_ms, run.record.readback_ms = t.readback_ms;
@@ -63,8 +72,7 @@ BackendRun DrawByTheBook(const Scene& scene) {
   Stopwatch clock;
   run.image = book::RenderScene(scene);
   run.record.draw_ms = clock.Milliseconds();  // the demos draw straight into the image: all of it is drawing
-  const TwinLimits limits = TwinDeviceLimits();
-  run.drawn_by = {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
+  run.drawn_by = TwinDrawnBy();
   return run;
 }
 

@@ -8,17 +8,17 @@
 namespace twinraster::run {
 
 ImageJudgement JudgeImage(const Scene& scene, const Image& image, const verify::VerifyOptions& rules, bool map) {
-  const DrawList list = BuildDrawList(scene);
+  return JudgeImage(scene, BuildDrawList(scene), image, rules, map);
+}
+
+ImageJudgement JudgeImage(const Scene& scene, const DrawList& list, const Image& image,
+                          const verify::VerifyOptions& rules, bool map) {
   ImageJudgement j;
   Stopwatch clock;
   j.verification = verify::VerifyImage(scene, list, image, rules);
   j.verify_ms = clock.Milliseconds();
   if (map) j.map = verify::VerificationMap(image, j.verification);
-  switch (j.verification.Verdict()) {
-    case verify::Judgement::kPassed: j.verdict = Verdict::kVerified; break;
-    case verify::Judgement::kInconclusive: j.verdict = Verdict::kInconclusive; break;
-    case verify::Judgement::kFailed: j.verdict = Verdict::kDiffering; break;
-  }
+  j.verdict = VerdictOf(j.verification.Verdict());
   return j;
 }
 

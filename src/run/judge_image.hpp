@@ -3,6 +3,7 @@
 // and the rules from the image's notes or the options) and writes nothing.
 #pragma once
 
+#include "chain/draw_list.hpp"
 #include "image/image.hpp"
 #include "run/verdict.hpp"
 #include "scene/scene.hpp"
@@ -20,5 +21,8 @@ struct ImageJudgement {
 };
 
 ImageJudgement JudgeImage(const Scene& scene, const Image& image, const verify::VerifyOptions& rules, bool map);
+// The same, for a caller that already has the scene's draw list (a run, the bench).
+ImageJudgement JudgeImage(const Scene& scene, const DrawList& list, const Image& image,
+                          const verify::VerifyOptions& rules, bool map);
 
 }  // namespace twinraster::run

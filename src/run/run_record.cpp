@@ -35,12 +35,10 @@ Verdict VerdictOf(const RunRecord& r) {
   }
   if (r.verification && !r.verification->NoViolations()) return Verdict::kDiffering;
   if (r.Differ() && r.TwinPromised()) return Verdict::kDiffering;
-  const auto judged = [&] {
-    return r.verification->Verdict() == verify::Judgement::kPassed ? Verdict::kVerified : Verdict::kInconclusive;
-  };
-  if (r.Differ()) return r.verification ? judged() : Verdict::kDiffering;
+  // With no violation left, a judgement is verified or inconclusive.
+  if (r.Differ()) return r.verification ? VerdictOf(r.verification->Verdict()) : Verdict::kDiffering;
   if (r.comparison) return Verdict::kIdentical;
-  return r.verification ? judged() : Verdict::kRendered;
+  return r.verification ? VerdictOf(r.verification->Verdict()) : Verdict::kRendered;
 }
 
 RunRecord ErrorRecord(const std::string& scene, const std::string& message) {

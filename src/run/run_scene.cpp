@@ -1,10 +1,8 @@
 #include "run/run_scene.hpp"
 
-#include "base/stopwatch.hpp"
 #include "cpu/lavapipe_path.hpp"
 #include "cpu/twin_rules.hpp"
-#include "verify/verifier.hpp"
-#include "verify/verify_map.hpp"
+#include "run/judge_image.hpp"
 
 namespace twinraster::run {
 
@@ -63,11 +61,11 @@ const BackendRun* Judged(const std::vector<BackendRun>& runs, const RunOptions& 
 void Judge(const Scene& scene, const DrawList& list, const BackendRun& run, const RunOptions& options,
            RunResult& result) {
   RunRecord& record = result.record;
-  Stopwatch clock;
-  record.verification = verify::VerifyImage(scene, list, run.image, run.drawn_by.rasterizes);
-  record.verify_ms = clock.Milliseconds();
+  ImageJudgement j = JudgeImage(scene, list, run.image, run.drawn_by.rasterizes, options.map);
+  record.verification = std::move(j.verification);
+  record.verify_ms = j.verify_ms;
   record.judged = run.record.backend;
-  if (options.map) result.map = verify::VerificationMap(run.image, *record.verification);
+  result.map = std::move(j.map);
   record.verification->pixels = {};  // the map holds them
 }
 

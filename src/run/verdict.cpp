@@ -15,6 +15,15 @@ const char* VerdictName(Verdict verdict) {
   return "?";
 }
 
+Verdict VerdictOf(verify::Judgement judgement) {
+  switch (judgement) {
+    case verify::Judgement::kPassed: return Verdict::kVerified;
+    case verify::Judgement::kInconclusive: return Verdict::kInconclusive;
+    case verify::Judgement::kFailed: break;
+  }
+  return Verdict::kDiffering;
+}
+
 bool IsFailure(Verdict verdict) {
   return verdict == Verdict::kError || verdict == Verdict::kCrashed || verdict == Verdict::kDiffering;
 }

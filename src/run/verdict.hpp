@@ -3,6 +3,8 @@
 // VerdictOf; saying why is report/'s.
 #pragma once
 
+#include "verify/verification.hpp"
+
 namespace twinraster::run {
 
 // In the batch page's order: failures first.
@@ -15,6 +17,9 @@ enum class Verdict {
   kIdentical,     // gpu and cpu agree bit for bit
   kRendered,      // one backend drew, nothing was compared or judged
 };
+
+// The verdict a judgement alone gives: passed is verified, failed is differing.
+Verdict VerdictOf(verify::Judgement judgement);
 
 const char* VerdictName(Verdict verdict);  // "error", "crashed", ...
 bool IsFailure(Verdict verdict);           // error, crashed, differing

@@ -62,6 +62,9 @@ TEST_CASE("Verdicts: failures, inconclusive and success are three kinds, and eac
   CHECK_FALSE(run::IsSuccess(Verdict::kInconclusive));
   CHECK_FALSE(run::IsFailure(Verdict::kInconclusive));
   for (Verdict v : {Verdict::kVerified, Verdict::kIdentical, Verdict::kRendered}) CHECK(run::IsSuccess(v));
+  CHECK(run::VerdictOf(verify::Judgement::kPassed) == Verdict::kVerified);
+  CHECK(run::VerdictOf(verify::Judgement::kInconclusive) == Verdict::kInconclusive);
+  CHECK(run::VerdictOf(verify::Judgement::kFailed) == Verdict::kDiffering);
   CHECK(std::string(run::VerdictName(Verdict::kInconclusive)) == "inconclusive");
   CHECK(std::string(run::StatusName(run::BackendStatus::kTimedOut)) == "timed out");
   CHECK(std::string(run::BackendName(run::Backend::kGpu)) == "gpu");
