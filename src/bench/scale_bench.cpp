@@ -10,6 +10,7 @@
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 #include "run/backend_draws.hpp"
+#include "run/backend_draws.hpp"
 #include "run/judge_image.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -93,7 +94,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   // The twin copies the lavapipe that draws here, as `render` chooses it.
   const cpu::RasterRules twin_rules =
-      cpu::ChooseTwinRules(gpu.DeviceName(), gpu.Device().driver_info, cpu::DetectCpuPath()).rules;
+      cpu::ChooseTwinRules(run::FactsOf(gpu.Device()), cpu::DetectCpuPath()).rules;
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;

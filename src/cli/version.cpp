@@ -5,6 +5,7 @@
 #include "cpu/twin_rules.hpp"
 #include "gpu/device_list.hpp"
 #include "gpu/driver_files.hpp"
+#include "run/backend_draws.hpp"
 
 namespace twinraster {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 std::string DeviceLine(const DeviceIdentity& d, const cpu::CpuPath& path) {
   std::string driver = d.driver_name;
   if (!d.driver_info.empty()) driver += (driver.empty() ? "" : ", ") + d.driver_info;
-  const cpu::TwinRules twin = cpu::ChooseTwinRules(d.name, d.driver_info, path);
+  const cpu::TwinRules twin = cpu::ChooseTwinRules(run::FactsOf(d), path);
   return "  " + d.name + ": " + (driver.empty() ? "driver not named" : driver) + ", Vulkan " +
          gpu::VulkanVersionText(d.api_version) + ", " + std::to_string(d.subpixel_bits) +
          " subpixel bits, strictLines " + (d.strict_lines ? "true" : "false") + "; twin: " +

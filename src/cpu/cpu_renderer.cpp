@@ -1,6 +1,7 @@
 #include "cpu/cpu_renderer.hpp"
 
 #include "base/stopwatch.hpp"
+#include "cpu/denormals.hpp"
 #include "cpu/depth_tiles.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/geometry.hpp"
@@ -28,10 +29,10 @@ struct BandTarget {
   cpu::DepthTiles& tiles;
 };
 
-// Each part rasterizes its own bands, each band's triangles (or lines) in list order; hidden[part]
-// counts what the depth tiles skipped. The band loop is kept as one lambda: it is the hot one, and
-// GCC compiles it to fewer instructions than when it is split into functions.
-void DrawChunk(const BandTarget& target, bool wireframe, unsigned threads, unsigned bands,
+// Each part rasterizes its own bands, each band's primitives in list order; hidden[part] counts
+// what the depth tiles skipped. The band loop is kept as one lambda: it is the hot one, and GCC
+// compiles it to fewer instructions than when it is split into functions.
+void DrawChunk(const BandTarget& target, const cpu::RasterRules& rules, unsigned threads, unsigned bands,
                std::vector<std::uint64_t>& hidden) {
   using namespace cpu;
   const GeometryScratch& scratch = target.scratch;
@@ -40,9 +41,10 @@ void DrawChunk(const BandTarget& target, bool wireframe, unsigned threads, unsig
   Framebuffer& fb = target.fb;
   DepthTiles& tiles = target.tiles;
   ParallelParts(threads, [&](unsigned part) {
+    const DenormalsAsZero denormals(rules.flush_denormals);
     std::uint64_t skipped = 0;  // counted here: a shared array written per triangle would ping-pong
     // The primitives of the chunk's bins for one band, drawn in order: parts[p][i] for each i in
-    // bins[p][band], p = 0, 1, ...; rows(primitive, row_begin, row_end, on_span) rasterizes one.
+    // bins[p][band], p = 0, 1, ...; rows(p, primitive, row_begin, row_end, on_span) rasterizes one.
     const auto draw_band = [&](unsigned band, const auto& parts, auto&& rows) {
       const int band_begin = static_cast<int>(band) * kBandRows;
       const int band_end = std::min(height, band_begin + kBandRows);
@@ -54,10 +56,17 @@ void DrawChunk(const BandTarget& target, bool wireframe, unsigned threads, unsig
             ++skipped;
             continue;
           }
-          rows(t, row_begin, row_end, [&](int py, Span span) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(t)>, TriangleSetup>) {
+          rows(p, t, row_begin, row_end, [&](int py, Span span) {
+            using Primitive = std::decay_t<decltype(t)>;
+            if constexpr (std::is_same_v<Primitive, TriangleSetup>) {
               if (t.smooth) {
                 ShadeSmoothSpan(fb, py, span, t.depth, scratch.colour_planes[p][t.colour]);
+                tiles.MarkDrawn(py, span);
+                return;
+              }
+            } else if constexpr (std::is_same_v<Primitive, OutlineSetup>) {
+              if (t.smooth) {
+                ShadeSmoothSpan(fb, py, span, t.depth, scratch.outline_planes[p][t.colour]);
                 tiles.MarkDrawn(py, span);
                 return;
               }
@@ -70,17 +79,32 @@ void DrawChunk(const BandTarget& target, bool wireframe, unsigned threads, unsig
       if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
     };
     for (unsigned band = part; band < bands; band += threads) {
-      if (wireframe) {
-        draw_band(band, scratch.lines, [](const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
-          for (int py = row_begin; py < row_end; ++py) {
-            const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
-            if (span.begin < span.end) on_span(py, span);
-          }
-        });
-      } else {
-        draw_band(band, scratch.triangles, [](const TriangleSetup& t, int row_begin, int row_end, auto&& on_span) {
-          RasterizeRows(t, row_begin, row_end, [&](const TriangleSetup&, int py, Span span) { on_span(py, span); });
-        });
+      switch (scratch.kind) {
+        case PrimitiveKind::kLines:
+          draw_band(band, scratch.lines, [](std::size_t, const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
+            for (int py = row_begin; py < row_end; ++py) {
+              const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
+              if (span.begin < span.end) on_span(py, span);
+            }
+          });
+          break;
+        case PrimitiveKind::kTriangles:
+          draw_band(band, scratch.triangles,
+                    [](std::size_t, const TriangleSetup& t, int row_begin, int row_end, auto&& on_span) {
+                      RasterizeRows(t, row_begin, row_end,
+                                    [&](const TriangleSetup&, int py, Span span) { on_span(py, span); });
+                    });
+          break;
+        case PrimitiveKind::kOutlines:
+          draw_band(band, scratch.outlines,
+                    [&](std::size_t p, const OutlineSetup& o, int row_begin, int row_end, auto&& on_span) {
+                      const SnappedPoint* points = scratch.outline_points[p].data() + o.first;
+                      for (int py = row_begin; py < row_end; ++py) {
+                        const Span span = OutlineSpan(points, o.count, o.d, static_cast<int>(fb.width()), py);
+                        if (span.begin < span.end) on_span(py, span);
+                      }
+                    });
+          break;
       }
     }
     hidden[part] += skipped;
@@ -129,7 +153,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
     // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
     ProcessGeometry(list, chunk, threads, options.rules, scratch, clip, bands);
     setup_ms += clock.Lap();
-    DrawChunk(target, list.wireframe, threads, bands, hidden);
+    DrawChunk(target, options.rules, threads, bands, hidden);
     draw_ms += clock.Lap();
   }
 
@@ -148,7 +172,9 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
 }  // namespace
 
-TwinLimits TwinDeviceLimits() { return {.subpixel_bits = cpu::kSubpixelBits, .strict_lines = true}; }
+TwinLimits TwinDeviceLimits(const cpu::RasterRules& rules) {
+  return {.subpixel_bits = cpu::SubpixelBitsOf(rules), .strict_lines = true};
+}
 
 Image RenderOnCpu(const DrawList& list, const CpuOptions& options, CpuTimings* timings) {
   ValidateDrawList(list);

@@ -1,5 +1,5 @@
-// The CPU twin: renders a DrawList on the CPU following lavapipe's rasterization rules, so that the
-// image equals the Vulkan/lavapipe image bit for bit.
+// The CPU twin: renders a DrawList on the CPU following one Vulkan's rasterization rules (lavapipe's
+// or SwiftShader's, cpu/twin_rules.hpp), so that the image equals that device's bit for bit.
 #pragma once
 
 #include "chain/draw_list.hpp"
@@ -22,17 +22,18 @@ struct CpuOptions {
   // Skip triangles hidden in a 16x16 tile by what is already drawn (cpu/depth_tiles.hpp). Exact,
   // so the image is the same without; off only to measure what it saves and to test that.
   bool depth_tiles = true;
-  // Which lavapipe's arithmetic to copy (cpu/twin_rules.hpp chooses it for a device and CPU path).
+  // Which device's arithmetic to copy (cpu/twin_rules.hpp chooses it for a device and CPU path).
   cpu::RasterRules rules{};
 };
 
-// The twin as a device reports itself: lavapipe's subPixelPrecisionBits, and lines drawn strictly
-// (strictLines), which is how the verifier judges the twin's own images.
+// The twin as a device reports itself: the subPixelPrecisionBits of the device its rules copy (8
+// for lavapipe, 4 for SwiftShader), and lines drawn strictly (strictLines), which is how the
+// verifier judges the twin's own images.
 struct TwinLimits {
   int subpixel_bits = 0;
   bool strict_lines = true;
 };
-TwinLimits TwinDeviceLimits();
+TwinLimits TwinDeviceLimits(const cpu::RasterRules& rules = {});
 
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,
 // readback = building the Image.

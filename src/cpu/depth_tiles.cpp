@@ -50,7 +50,28 @@ DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare o
       farthest_(stride_ * ((height + kTileSize - 1) / kTileSize), ClearDepth(op)),
       dirty_(farthest_.size(), 0) {}
 
-bool DepthTiles::Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin, int row_end) const {
+double NearestDepth(const AnchoredPlane& plane, const PixelRect& box, DepthCompare op) {
+  const double a = plane.a, b = plane.b, c = plane.c;
+  // xf = px - x0 and yf = py - y0 are exact in float (x0, y0 are sixteenths), and so in double.
+  const double x0 = box.x0 - double{plane.x0}, x1 = box.x1 - double{plane.x0};
+  const double y0 = box.y0 - double{plane.y0}, y1 = box.y1 - double{plane.y0};
+  const double lowest = c + std::min(a * x0, a * x1) + std::min(b * y0, b * y1);
+  const double highest = c + std::max(a * x0, a * x1) + std::max(b * y0, b * y1);
+  // Four roundings of at most 2^-24 of `scale`, and four flushes of a denormal to 0 at most.
+  const double scale = std::fabs(c) + std::fabs(a) * std::max(std::fabs(x0), std::fabs(x1)) +
+                       std::fabs(b) * std::max(std::fabs(y0), std::fabs(y1));
+  const double slack = scale * 0x1p-21 + 0x1p-122;
+  // A NaN plane value is clamped to 0 (ClampDepthMaxFirst): 0 and 1 are the bounds that stay true.
+  if (op == DepthCompare::kLess) {
+    const double z = lowest - slack;
+    return z > 0 ? std::min(z, 1.0) : 0.0;
+  }
+  const double z = highest + slack;
+  return z < 1 ? std::max(z, 0.0) : 1.0;
+}
+
+template <class Plane>
+bool DepthTiles::Hidden(const PixelRect& bounds, const Plane& depth, int band, int row_begin, int row_end) const {
   const float* tiles = farthest_.data() + static_cast<std::size_t>(band) * stride_;
   const int first = bounds.x0 / kTileSize, last = bounds.x1 / kTileSize;
   float farthest = tiles[first];
@@ -66,6 +87,9 @@ bool DepthTiles::Hidden(const PixelRect& bounds, const DepthPlane& depth, int ba
   // in these tiles: the strict test fails everywhere.
   return op_ == DepthCompare::kLess ? nearest >= farthest : nearest <= farthest;
 }
+
+template bool DepthTiles::Hidden(const PixelRect&, const DepthPlane&, int, int, int) const;
+template bool DepthTiles::Hidden(const PixelRect&, const AnchoredPlane&, int, int, int) const;
 
 void DepthTiles::Refresh(const Framebuffer& fb, int band) {
   const int width = static_cast<int>(fb.width()), height = static_cast<int>(fb.height());

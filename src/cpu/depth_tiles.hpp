@@ -7,6 +7,7 @@
 // between they are stale, which stays safe because stored depths only ever move nearer.
 #pragma once
 
+#include "cpu/anchored_plane.hpp"
 #include "cpu/fragment_ops.hpp"
 #include "cpu/rasterize.hpp"
 
@@ -23,6 +24,8 @@ constexpr int kTileSize = kBandRows;
 // kGreater, no larger). Evaluated in double at the box's corners, widened by the float rounding of
 // the two fused multiply-adds, then clamped to [0, 1] as the fragments are.
 double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare op);
+// The same for SwiftShader's plane: four roundings, from its anchor, clamped max before min.
+double NearestDepth(const AnchoredPlane& plane, const PixelRect& box, DepthCompare op);
 
 class DepthTiles {
  public:
@@ -30,7 +33,8 @@ class DepthTiles {
 
   // True when a primitive (a triangle or a line) with this box and depth plane certainly passes
   // the depth test nowhere in rows [row_begin, row_end) of band.
-  bool Hidden(const PixelRect& bounds, const DepthPlane& depth, int band, int row_begin, int row_end) const;
+  template <class Plane>
+  bool Hidden(const PixelRect& bounds, const Plane& depth, int band, int row_begin, int row_end) const;
 
   // The tiles a span of row py covers may now hold nearer depths.
   void MarkDrawn(int py, Span span) {

@@ -78,16 +78,36 @@ void ShadeRowSeparate(float* depth, std::uint8_t* rgba, int begin, int end, floa
   ShadeRowBody<false>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
 }
 
+// SwiftShader's row: its plane (never fused) and its clamp, max before min.
+void ShadeAnchoredRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const AnchoredPlane& plane,
+                      bool greater, std::uint32_t fill) {
+  for (int px = begin; px < end; ++px) {
+    const float z = ClampDepthMaxFirst(PlaneDepth(plane, static_cast<float>(px), py));
+    const float stored = depth[px];
+    const bool pass = greater ? z > stored : z < stored;  // DepthTest
+    depth[px] = pass ? z : stored;
+    std::uint32_t old;
+    std::memcpy(&old, rgba + 4 * px, 4);
+    const std::uint32_t written = pass ? fill : old;
+    std::memcpy(rgba + 4 * px, &written, 4);
+  }
+}
+
+// Each device's depth clamp, for the smooth rows.
+inline float Clamped(const DepthPlane& plane, float x, float py) { return ClampDepth(PlaneDepth(plane, x, py)); }
+inline float Clamped(const AnchoredPlane& plane, float x, float py) {
+  return ClampDepthMaxFirst(PlaneDepth(plane, x, py));
+}
+
 // ShadeRow for a Gouraud triangle: every pixel's colour is computed (ColourAt, then PackUnorm) and
 // written where the depth test passes, without branches, so that the compiler vectorizes it.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("fma", "default")))
-#endif
-void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const DepthPlane& plane,
-                    const ColourPlanes& colour, bool greater) {
+template <class Plane>
+[[gnu::always_inline]] inline void ShadeSmoothRowBody(float* depth, std::uint8_t* rgba, int begin, int end, float py,
+                                                      const Plane& plane, const ColourPlanesOf<Plane>& colour,
+                                                      bool greater) {
   for (int px = begin; px < end; ++px) {
     const float x = static_cast<float>(px);
-    const float z = ClampDepth(PlaneDepth(plane, x, py));
+    const float z = Clamped(plane, x, py);
     const float stored = depth[px];
     const bool pass = greater ? z > stored : z < stored;  // DepthTest
     depth[px] = pass ? z : stored;
@@ -97,6 +117,20 @@ void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float 
     const std::uint32_t written = pass ? word : old;
     std::memcpy(rgba + 4 * px, &written, 4);
   }
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("fma", "default")))
+#endif
+void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const DepthPlane& plane,
+                    const ColourPlanes& colour, bool greater) {
+  ShadeSmoothRowBody(depth, rgba, begin, end, py, plane, colour, greater);
+}
+
+// SwiftShader's never fuses: one copy.
+void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const AnchoredPlane& plane,
+                    const AnchoredColourPlanes& colour, bool greater) {
+  ShadeSmoothRowBody(depth, rgba, begin, end, py, plane, colour, greater);
 }
 
 }  // namespace
@@ -130,7 +164,20 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
   }
 }
 
+void ShadeSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane, std::uint32_t colour) {
+  const std::size_t row = fb.index(0, py);
+  ShadeAnchoredRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
+                   static_cast<float>(py), plane, fb.compare == DepthCompare::kGreater, colour);
+}
+
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {
+  const std::size_t row = fb.index(0, py);
+  ShadeSmoothRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+                 plane, colour, fb.compare == DepthCompare::kGreater);
+}
+
+void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane,
+                     const AnchoredColourPlanes& colour) {
   const std::size_t row = fb.index(0, py);
   ShadeSmoothRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                  plane, colour, fb.compare == DepthCompare::kGreater);

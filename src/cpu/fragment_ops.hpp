@@ -1,4 +1,5 @@
-// Stages 6 and 7 per fragment: depth from the triangle's plane, the depth test against a
+// Stages 6 and 7 per fragment: depth from the primitive's plane (lavapipe's DepthPlane or
+// SwiftShader's AnchoredPlane), the depth test against a
 // D32_SFLOAT buffer (VK_COMPARE_OP_LESS and cleared to 1.0, or with reversed Z
 // VK_COMPARE_OP_GREATER and cleared to 0.0), the depth write, and the colour write of the
 // triangle's flat colour, or its interpolated Gouraud colour, as RGBA8 (no blending). The colour attachment is the
@@ -76,8 +77,12 @@ bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std
 
 // All fragments of a covered span (the same result as ShadeFragment on each, faster).
 void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std::uint32_t colour);
+// The same with SwiftShader's plane and depth clamp.
+void ShadeSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane, std::uint32_t colour);
 
 // The same for a Gouraud triangle: each fragment that passes writes its interpolated colour.
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour);
+void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane,
+                     const AnchoredColourPlanes& colour);
 
 }  // namespace twinraster::cpu

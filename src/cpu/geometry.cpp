@@ -1,5 +1,6 @@
 #include "cpu/geometry.hpp"
 
+#include "cpu/denormals.hpp"
 #include "cpu/lighting.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
@@ -128,6 +129,10 @@ std::size_t GeometryScratch::bytes() const {
   for (const auto& part : triangles) total += part.capacity() * sizeof(TriangleSetup);
   for (const auto& part : colour_planes) total += part.capacity() * sizeof(ColourPlanes);
   for (const auto& part : lines) total += part.capacity() * sizeof(LineSetup);
+  total += snapped.capacity() * sizeof(SnappedVertex);
+  for (const auto& part : outlines) total += part.capacity() * sizeof(OutlineSetup);
+  for (const auto& part : outline_points) total += part.capacity() * sizeof(SnappedPoint);
+  for (const auto& part : outline_planes) total += part.capacity() * sizeof(AnchoredColourPlanes);
   for (const auto& part : bins)
     for (const auto& bin : part) total += bin.capacity() * sizeof(std::uint32_t);
   return total;
@@ -204,19 +209,65 @@ struct ChunkDraws {
   std::size_t first_triangle = chunk.slice ? chunk.triangle_begin : 0;  // the first's index in its mesh
 };
 
-// Vertex stage (and the shader-side viewport transform and outcodes) for every draw's vertices,
-// into scratch.vertices from scratch.vertex_start[i] for draw i.
-void ShadeVertices(const ChunkDraws& draws, const ViewportState& vp, const std::vector<std::vector<glm::vec4>>* clip,
-                   unsigned threads, GeometryScratch& scratch) {
+// Lavapipe's primitive assembly and set-up (the Assemble functions above), as the shared loop
+// calls it: per vertex a window position, per triangle a fan of TriangleSetups or three lines.
+struct LavapipeAssembly {
+  using Vertex = ShadedVertex;
+  ViewportState vp;
+  PixelRect region;
+  GeometryScratch& scratch;
+
+  static std::vector<Vertex>& Vertices(GeometryScratch& s) { return s.vertices; }
+  Vertex Shade(const glm::vec4& clip) const { return ShadeClipVertex(clip, vp); }
+  void Flat(const std::array<const Vertex*, 3>& v, std::uint32_t colour, unsigned part) const {
+    AssembleTriangle(v, colour, vp, region, scratch.triangles[part]);
+  }
+  void Smooth(const std::array<const Vertex*, 3>& v, const std::array<glm::vec3, 3>& colours, unsigned part) const {
+    AssembleSmoothTriangle(v, colours, vp, region, scratch.triangles[part], scratch.colour_planes[part]);
+  }
+  void Wireframe(const std::array<const Vertex*, 3>& v, std::uint32_t colour, unsigned part) const {
+    AssembleWireframe(v, colour, vp, region, scratch.lines[part]);
+  }
+};
+
+// SwiftShader's (outline_assembly.hpp): per vertex a snapped position, per triangle one polygon,
+// or three lines, each an OutlineSetup.
+struct SwiftShaderAssembly {
+  using Vertex = SnappedVertex;
+  SnapViewport vp;
+  GeometryScratch& scratch;
+
+  static std::vector<Vertex>& Vertices(GeometryScratch& s) { return s.snapped; }
+  Vertex Shade(const glm::vec4& clip) const { return SnapShaderVertex(clip, vp); }
+  OutlineOutput Out(unsigned part) const {
+    return {scratch.outlines[part], scratch.outline_points[part], scratch.outline_planes[part]};
+  }
+  void Flat(const OutlineTriangle& v, std::uint32_t colour, unsigned part) const {
+    AssembleOutlineTriangle(v, colour, vp, Out(part));
+  }
+  void Smooth(const OutlineTriangle& v, const std::array<glm::vec3, 3>& colours, unsigned part) const {
+    AssembleOutlineSmooth(v, colours, vp, Out(part));
+  }
+  void Wireframe(const OutlineTriangle& v, std::uint32_t colour, unsigned part) const {
+    AssembleOutlineWireframe(v, colour, vp, Out(part));
+  }
+};
+
+// Vertex stage (and the device's viewport transform and outcodes) for every draw's vertices, into
+// the assembly's vertices from scratch.vertex_start[i] for draw i.
+template <class Assembly>
+void ShadeVertices(const ChunkDraws& draws, const Assembly& assembly, const std::vector<std::vector<glm::vec4>>* clip,
+                   unsigned threads, bool flush_denormals, GeometryScratch& scratch) {
   const DrawList& list = draws.list;
   const std::size_t draw_begin = draws.chunk.draw_begin;
-  std::vector<ShadedVertex>& vertices = scratch.vertices;
+  auto& vertices = Assembly::Vertices(scratch);
   std::vector<std::size_t>& vertex_start = scratch.vertex_start;
   vertex_start.assign(draws.count + 1, 0);
   for (std::size_t i = 0; i < draws.count; ++i) vertex_start[i + 1] = vertex_start[i] + draws.mesh(i).positions.size();
   vertices.resize(vertex_start[draws.count]);
   ParallelFor(PartsFor(threads, vertices.size(), 8192), vertices.size(),
               [&](std::size_t begin, std::size_t end, unsigned) {
+                const DenormalsAsZero denormals(flush_denormals);
                 for (std::size_t g = begin; g < end;) {
                   const std::size_t i = DrawOf(vertex_start, g);
                   const std::size_t d = draw_begin + i;
@@ -224,8 +275,7 @@ void ShadeVertices(const ChunkDraws& draws, const ViewportState& vp, const std::
                   const std::size_t stop = std::min(end, vertex_start[i + 1]);
                   for (; g < stop; ++g) {
                     const std::size_t v = g - vertex_start[i];
-                    vertices[g] =
-                        clip ? ShadeClipVertex((*clip)[d][v], vp) : ShadeVertex(list.draws[d].F, mesh.positions[v], vp);
+                    vertices[g] = assembly.Shade(clip ? (*clip)[d][v] : VertexStage(list.draws[d].F, mesh.positions[v]));
                   }
                 }
               });
@@ -234,23 +284,31 @@ void ShadeVertices(const ChunkDraws& draws, const ViewportState& vp, const std::
 // Empties each part's output and bins and reserves its share. Here, in the calling thread: a
 // worker's fresh memory would cost a page fault per 4 KiB on every render; with a reused scratch
 // there is usually nothing to allocate.
-void ReserveParts(std::size_t triangle_count, unsigned parts, unsigned band_count, bool wireframe,
+void ReserveParts(std::size_t triangle_count, unsigned parts, unsigned band_count, PrimitiveKind kind,
                   GeometryScratch& scratch) {
-  scratch.triangles.resize(wireframe ? 0 : parts);
-  scratch.colour_planes.resize(wireframe ? 0 : parts);
-  scratch.lines.resize(wireframe ? parts : 0);
+  const auto fit = [&](auto& per_part, bool used) {
+    per_part.resize(used ? parts : 0);
+    for (auto& part : per_part) part.clear();
+  };
+  scratch.kind = kind;
+  fit(scratch.triangles, kind == PrimitiveKind::kTriangles);
+  fit(scratch.colour_planes, kind == PrimitiveKind::kTriangles);
+  fit(scratch.lines, kind == PrimitiveKind::kLines);
+  fit(scratch.outlines, kind == PrimitiveKind::kOutlines);
+  fit(scratch.outline_points, kind == PrimitiveKind::kOutlines);
+  fit(scratch.outline_planes, kind == PrimitiveKind::kOutlines);
   scratch.bins.resize(parts);
   for (unsigned part = 0; part < parts; ++part) {
     scratch.bins[part].resize(band_count);
     for (auto& bin : scratch.bins[part]) bin.clear();
     const std::size_t share = triangle_count * (part + 1) / parts - triangle_count * part / parts;
-    if (wireframe) {
-      scratch.lines[part].clear();
-      scratch.lines[part].reserve(3 * share + 16);
-    } else {
-      scratch.triangles[part].clear();
-      scratch.triangles[part].reserve(share + share / 4 + 16);  // clipping fans may add a few
-      scratch.colour_planes[part].clear();
+    switch (kind) {
+      case PrimitiveKind::kTriangles: scratch.triangles[part].reserve(share + share / 4 + 16); break;  // fans add a few
+      case PrimitiveKind::kLines: scratch.lines[part].reserve(3 * share + 16); break;
+      case PrimitiveKind::kOutlines:
+        scratch.outlines[part].reserve(share + 16);
+        scratch.outline_points[part].reserve(3 * share + 16);
+        break;
     }
   }
 }
@@ -265,67 +323,84 @@ void Bin(const Primitives& primitives, std::vector<std::vector<std::uint32_t>>& 
   }
 }
 
-}  // namespace
+void BinPart(GeometryScratch& scratch, unsigned part) {
+  switch (scratch.kind) {
+    case PrimitiveKind::kTriangles: Bin(scratch.triangles[part], scratch.bins[part]); break;
+    case PrimitiveKind::kLines: Bin(scratch.lines[part], scratch.bins[part]); break;
+    case PrimitiveKind::kOutlines: Bin(scratch.outlines[part], scratch.bins[part]); break;
+  }
+}
 
-// A later slice of one draw reuses the vertices its first slice shaded. Each part of the triangles
-// keeps its slice in order. The per-triangle loop is kept whole here: it is the hot one, and GCC
-// compiles it to fewer instructions than when it is split into functions.
-void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
-                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip, unsigned band_count) {
-  const ViewportState vp = MakeViewport(list.width, list.height, rules);
-  const PixelRect region = DrawRegion(vp, list.width, list.height);
-  const ChunkDraws draws(list, chunk);
-  if (chunk.shade_vertices) ShadeVertices(draws, vp, clip, threads, scratch);
+// The shared loop: a later slice of one draw reuses the vertices its first slice shaded, and each
+// part of the triangles keeps its slice in order. The per-triangle loop is kept whole here: it is
+// the hot one, and GCC compiles it to fewer instructions than when it is split into functions.
+template <class Assembly>
+void AssembleChunk(const ChunkDraws& draws, const Assembly& assembly, const std::vector<std::vector<glm::vec4>>* clip,
+                   unsigned threads, const RasterRules& rules, unsigned band_count, GeometryScratch& scratch) {
+  const DrawList& list = draws.list;
+  const GeometryChunk& chunk = draws.chunk;
+  if (chunk.shade_vertices) ShadeVertices(draws, assembly, clip, threads, rules.flush_denormals, scratch);
 
   const std::vector<std::size_t>& triangle_start = draws.triangle_start;
   const std::size_t first_triangle = draws.first_triangle;
   const std::size_t triangle_count = triangle_start[draws.count];
   const unsigned triangle_parts = PartsFor(threads, triangle_count, 2048);
   const bool wireframe = list.wireframe;
-  ReserveParts(triangle_count, triangle_parts, band_count, wireframe, scratch);
-  const std::vector<ShadedVertex>& vertices = scratch.vertices;
+  const bool outlines = rules.rasterizer == Rasterizer::kSwiftShader;
+  ReserveParts(triangle_count, triangle_parts, band_count,
+               outlines    ? PrimitiveKind::kOutlines
+               : wireframe ? PrimitiveKind::kLines
+                           : PrimitiveKind::kTriangles,
+               scratch);
+  const auto& vertices = Assembly::Vertices(scratch);
   const std::vector<std::size_t>& vertex_start = scratch.vertex_start;
-  TriangleChunks& parts = scratch.triangles;
-  LineChunks& line_parts = scratch.lines;
   ParallelFor(triangle_parts, triangle_count, [&](std::size_t begin, std::size_t end, unsigned part) {
+    const DenormalsAsZero denormals(rules.flush_denormals);
     for (std::size_t g = begin; g < end;) {
       const std::size_t i = DrawOf(triangle_start, g);
       const DrawMesh& mesh = draws.mesh(i);
-      const ShadedVertex* base = vertices.data() + vertex_start[i];
+      const auto* base = vertices.data() + vertex_start[i];
       const std::size_t stop = std::min(end, triangle_start[i + 1]);
       for (; g < stop; ++g) {
         const std::size_t t = first_triangle + g - triangle_start[i];
         const auto& tri = mesh.triangles[t];
         if (wireframe) {
-          AssembleWireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp, region,
-                            line_parts[part]);
+          assembly.Wireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), part);
         } else if (mesh.shading == Shading::kFlat) {
           // Lit once, at the provoking vertex (corner 0), whose flat output fills the triangle.
           const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
           const glm::vec3 colour =
               LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
-          AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), vp, region, parts[part]);
+          assembly.Flat({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), part);
         } else if (mesh.shading == Shading::kGouraud) {
           const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
           std::array<glm::vec3, 3> colours;
           for (std::size_t k = 0; k < 3; ++k) {
             colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], mesh.colours[t]);
           }
-          AssembleSmoothTriangle({base + tri[0], base + tri[1], base + tri[2]}, colours, vp, region, parts[part],
-                                 scratch.colour_planes[part]);
+          assembly.Smooth({base + tri[0], base + tri[1], base + tri[2]}, colours, part);
         } else {
-          AssembleTriangle({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), vp, region,
-                           parts[part]);
+          assembly.Flat({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), part);
         }
       }
     }
-    if (band_count == 0) return;
-    if (wireframe) {
-      Bin(line_parts[part], scratch.bins[part]);
-    } else {
-      Bin(parts[part], scratch.bins[part]);
-    }
+    if (band_count != 0) BinPart(scratch, part);
   });
+}
+
+}  // namespace
+
+void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
+                     GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip, unsigned band_count) {
+  const ChunkDraws draws(list, chunk);
+  if (rules.rasterizer == Rasterizer::kSwiftShader) {
+    const SwiftShaderAssembly assembly{MakeSnapViewport(list.width, list.height), scratch};
+    AssembleChunk(draws, assembly, clip, threads, rules, band_count, scratch);
+    return;
+  }
+  const ViewportState vp = MakeViewport(list.width, list.height, rules);
+  const LavapipeAssembly assembly{vp, DrawRegion(vp, list.width, list.height), scratch};
+  AssembleChunk(draws, assembly, clip, threads, rules, band_count, scratch);
 }
 
 }  // namespace twinraster::cpu

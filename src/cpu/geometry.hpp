@@ -1,14 +1,17 @@
 // Stages 1 to 5, vertex stage, clipping, viewport transform and triangle setup, for one chunk of
 // a draw list at a time, so that memory stays bounded however large the scene. The result lists
-// the chunk's triangles in the order lavapipe rasterizes them: draws in list order, triangles in
-// index order, a clipped triangle's fan in fan order. Parallel over vertices and over triangles;
-// the result stays in ordered parts.
+// the chunk's primitives in the order the device rasterizes them: draws in list order, triangles
+// in index order, a clipped triangle's fan in fan order (lavapipe), or its one polygon
+// (SwiftShader, outline_assembly.hpp). Parallel over vertices and over triangles; the result
+// stays in ordered parts. The loop is one for both devices: the rules choose only the assembly
+// it calls.
 #pragma once
 
 #include "chain/draw_list.hpp"
 #include "cpu/clipping.hpp"
 #include "cpu/colour_planes.hpp"
 #include "cpu/line_setup.hpp"
+#include "cpu/outline_assembly.hpp"
 #include "cpu/triangle_setup.hpp"
 #include "cpu/viewport_transform.hpp"
 
@@ -68,17 +71,27 @@ struct ChunkBudget {
 };
 std::vector<GeometryChunk> PlanChunks(const DrawList& list, const ChunkBudget& budget = {});
 
+// What a chunk was set up into: lavapipe's triangles or lines, or SwiftShader's outlines.
+enum class PrimitiveKind : std::uint8_t { kTriangles, kLines, kOutlines };
+
 // Memory kept from one chunk, and one render, to the next: fresh memory costs a page fault per
 // 4 KiB, which for small scenes is much of the work.
 struct GeometryScratch {
-  std::vector<ShadedVertex> vertices;
-  std::vector<std::size_t> vertex_start;                 // per draw of the shaded chunk, into `vertices`
+  PrimitiveKind kind = PrimitiveKind::kTriangles;
+  std::vector<ShadedVertex> vertices;                    // lavapipe's
+  std::vector<SnappedVertex> snapped;                    // SwiftShader's
+  std::vector<std::size_t> vertex_start;                 // per draw of the shaded chunk, into the vertices
   TriangleChunks triangles;                              // the result
   std::vector<std::vector<ColourPlanes>> colour_planes;  // per part: its smooth triangles' planes
   LineChunks lines;                                      // the result, for a wireframe draw list
-  // bins[p][b]: indices into triangles[p] (lines[p] for a wireframe) of those whose box touches band b (kBandRows
-  // rows), in order; binned as they are set up, while still in cache, so that each band's
-  // rasterizer reads only the triangles it draws.
+  // The result for SwiftShader's rules, filled or wireframe, per part: the set-ups, their points
+  // and the colour planes of the smooth ones.
+  std::vector<std::vector<OutlineSetup>> outlines;
+  std::vector<std::vector<SnappedPoint>> outline_points;
+  std::vector<std::vector<AnchoredColourPlanes>> outline_planes;
+  // bins[p][b]: indices into the primitives of part p (triangles[p], lines[p] or outlines[p]) of
+  // those whose box touches band b (kBandRows rows), in order; binned as they are set up, while
+  // still in cache, so that each band's rasterizer reads only the primitives it draws.
   std::vector<std::vector<std::vector<std::uint32_t>>> bins;
   std::size_t bytes() const;
 };
@@ -86,7 +99,7 @@ struct GeometryScratch {
 // Sets up one chunk into scratch.triangles, and, when band_count > 0, bins them into
 // scratch.bins. `clip`: when given, the positions another vertex stage computed (one vector per
 // draw) replace this one's F · (p, 1).
-// `rules`: the lavapipe whose arithmetic to follow.
+// `rules`: the device whose arithmetic to follow.
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip = nullptr,
                      unsigned band_count = 0);

@@ -36,6 +36,7 @@ CpuPath ReadCpuid() {
   cpu.sse3 = c & 1;
   cpu.ssse3 = (c >> 9) & 1;
   cpu.sse4_1 = (c >> 19) & 1;
+  cpu.cpuid_sse4_1 = cpu.sse4_1;
   cpu.avx = ((c >> 28) & 1) && osxsave && (xcr0 & 6) == 6;
   cpu.fma = ((c >> 12) & 1) && cpu.avx;
   if (cpu.avx && __get_cpuid_count(7, 0, &a, &b, &c, &d) != 0) {

@@ -12,6 +12,8 @@ struct CpuPath {
   // Mesa's util_cpu_caps after GALLIUM_OVERRIDE_CPU_CAPS (x86-64 only; all false elsewhere).
   bool sse = false, sse2 = false, sse3 = false, ssse3 = false, sse4_1 = false, avx = false, avx2 = false, fma = false,
        avx512f = false;
+  // SSE4.1 as CPUID reports it, before Mesa's overrides: SwiftShader's JIT reads CPUID alone.
+  bool cpuid_sse4_1 = false;
   std::string override_caps;  // GALLIUM_OVERRIDE_CPU_CAPS as set, empty when unset
   int vector_bits = 0;        // llvmpipe's native vector width, LP_NATIVE_VECTOR_WIDTH included
   bool vector_bits_overridden = false;

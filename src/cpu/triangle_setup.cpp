@@ -1,8 +1,6 @@
 #include "cpu/triangle_setup.hpp"
 
-#if defined(__SSE__) || defined(__x86_64__)
-#include <xmmintrin.h>
-#endif
+#include "cpu/round_to_int.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,17 +10,8 @@
 namespace twinraster::cpu {
 
 std::int32_t SnapToSubpixel(float window_coord) {
-  const float scaled = (window_coord - 0.5f) * static_cast<float>(kSubpixelOne);
-#if defined(__SSE__) || defined(__x86_64__)
-  // The instruction lavapipe's setup uses (cvtps2dq, one lane of it): round half to even under the
-  // default MXCSR, and the "integer indefinite" INT32_MIN for NaN and anything that does not fit.
-  return _mm_cvtss_si32(_mm_set_ss(scaled));
-#else
-  if (!(scaled >= -2147483648.0f && scaled < 2147483648.0f)) {
-    return std::numeric_limits<std::int32_t>::min();
-  }
-  return static_cast<std::int32_t>(std::lrintf(scaled));  // default rounding: half to even
-#endif
+  // The instruction lavapipe's setup uses (cvtps2dq, one lane of it).
+  return RoundHalfEvenToInt((window_coord - 0.5f) * static_cast<float>(kSubpixelOne));
 }
 
 std::int32_t SnapToSubpixelHalfAway(float window_coord) {

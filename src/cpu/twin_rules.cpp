@@ -47,6 +47,17 @@ constexpr std::array kKnown = {
     KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma, kDebian13Sse41},
 };
 
+constexpr std::uint32_t kSwiftShaderDriverId = 10;  // VK_DRIVER_ID_GOOGLE_SWIFTSHADER
+constexpr std::uint32_t kSwiftShader500 = (5u << 22);  // VK_MAKE_VERSION(5, 0, 0)
+// Subzero never fuses and never approximates a reciprocal; the threads run with denormals as zero.
+constexpr KnownSwiftShader kSwiftShader{
+    .name = "SwiftShader Device (Subzero)",
+    .driver_version = kSwiftShader500,
+    .subpixel_bits = 4,
+    .proven_on = "Debian's chromium 156.0.8078.108 (libvk_swiftshader.so), x86-64 SSE4.1",
+    .rules = {.rasterizer = Rasterizer::kSwiftShader, .flush_denormals = true, .fused_multiply_add = false},
+    .proven_by = "the SwiftShader twin tests (tests/twin/swiftshader_twin_test.cpp) on the installed chromium"};
+
 constexpr std::array kUnproven = {
     UnprovenLavapipe{"25.0.7", "19", "AVX2+FMA", 128,
                      "lavapipe corrupts its heap and crashes on up to a third of the shipped scenes "
@@ -89,7 +100,45 @@ std::optional<LavapipeRelease> ParseLavapipe(const std::string& device_name, con
   return release;
 }
 
-TwinRules ChooseTwinRules(const std::string& device_name, const std::string& driver_info, const CpuPath& path) {
+namespace {
+
+std::string VersionText(std::uint32_t v) {
+  return std::to_string(v >> 22) + "." + std::to_string((v >> 12) & 0x3ff) + "." + std::to_string(v & 0xfff);
+}
+
+bool IsSwiftShader(const DeviceFacts& device) {
+  return device.driver_id == kSwiftShaderDriverId || device.name.starts_with("SwiftShader");
+}
+
+// SwiftShader's row when the device and this CPU are the ones it was proven on; else why not.
+TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path) {
+  TwinRules twin;
+  twin.device = device.name;
+  twin.path = path;
+  const KnownSwiftShader& row = kSwiftShader;
+  const std::string seen = device.name + ", driver " + VersionText(device.driver_version) + ", " +
+                           std::to_string(device.subpixel_bits) + " subpixel bits";
+  const std::string known = "the twin copies " + std::string(row.name) + ", driver " +
+                            VersionText(row.driver_version) + ", " + std::to_string(row.subpixel_bits) +
+                            " subpixel bits, on x86-64 with SSE4.1";
+  if (device.name != row.name || device.driver_version != row.driver_version ||
+      device.subpixel_bits != row.subpixel_bits || path.arch != "x86-64" || !path.cpuid_sse4_1) {
+    twin.text = "no bit-exact rules for " + seen + " on " + path.arch + (path.cpuid_sse4_1 ? "" : " without SSE4.1") +
+                ": " + known;
+    return twin;
+  }
+  twin.exact = true;
+  twin.rules = row.rules;
+  twin.text = "SwiftShader rules, " + seen + ", proven on " + std::string(row.proven_on);
+  return twin;
+}
+
+}  // namespace
+
+TwinRules ChooseTwinRules(const DeviceFacts& facts, const CpuPath& path) {
+  const std::string& device_name = facts.name;
+  const std::string& driver_info = facts.driver_info;
+  if (IsSwiftShader(facts)) return ChooseSwiftShader(facts, path);
   TwinRules twin;
   twin.device = device_name;
   twin.path = path;
@@ -112,7 +161,7 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
   twin.release = ParseLavapipe(device_name, driver_info);
   if (!twin.release) {
     twin.text = "no bit-exact rules for " + device_name + (driver_info.empty() ? "" : " (" + driver_info + ")") +
-                ": the twin copies lavapipe only";
+                ": the twin copies lavapipe and SwiftShader only";
     return twin;
   }
   const LavapipeRelease& release = *twin.release;
@@ -128,6 +177,8 @@ TwinRules ChooseTwinRules(const std::string& device_name, const std::string& dri
   return twin;
 }
 
+const KnownSwiftShader& SwiftShaderRow() { return kSwiftShader; }
+
 std::span<const KnownLavapipe> KnownLavapipes() { return kKnown; }
 std::span<const UnprovenLavapipe> UnprovenLavapipes() { return kUnproven; }
 
@@ -140,6 +191,10 @@ std::string KnownRulesText() {
                                      : "proven in CI by " + std::string(known.proven_by)) +
             "\n";
   }
+  text += "  " + std::string(kSwiftShader.name) + ", driver " + VersionText(kSwiftShader.driver_version) + ", " +
+          std::to_string(kSwiftShader.subpixel_bits) + " subpixel bits, x86-64 SSE4.1 (proven on " +
+          std::string(kSwiftShader.proven_on.substr(0, kSwiftShader.proven_on.find(','))) +
+          "): proven in CI by " + std::string(kSwiftShader.proven_by) + "\n";
   for (const UnprovenLavapipe& unproven : kUnproven) {
     text += "  (no rules for Mesa " + std::string(unproven.mesa) + " (LLVM " + std::string(unproven.llvm_major) +
             "), " + std::string(unproven.instruction_set) + ", " + std::to_string(unproven.vector_bits) +

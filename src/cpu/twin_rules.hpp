@@ -1,12 +1,15 @@
-// The rules the twin follows for one lavapipe: the release read from the device (driverInfo and
-// the "LLVM x, N bits" in its name), the CPU path read from this machine (lavapipe_path.hpp), and
-// the twin's table of the pairs it copies bit for bit. Any other driver or path is named as such
-// ("no bit-exact rules for ..."), never compared as if it were known.
+// The rules the twin follows for one device: for lavapipe, the release read from the device
+// (driverInfo and the "LLVM x, N bits" in its name) and the CPU path read from this machine
+// (lavapipe_path.hpp); for SwiftShader, its driver version, JIT and subpixel bits. Then the twin's
+// table of what it copies bit for bit. Any other driver, release or path is named as such ("no
+// bit-exact rules for ..."), never compared as if it were known. It does not read the device: the
+// caller hands in what the device said.
 #pragma once
 
 #include "cpu/lavapipe_path.hpp"
 #include "cpu/raster_rules.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,6 +27,14 @@ struct LavapipeRelease {
 // Empty when the device is not lavapipe (or says too little to tell its release).
 std::optional<LavapipeRelease> ParseLavapipe(const std::string& device_name, const std::string& driver_info);
 
+// What a device says of itself (vkGetPhysicalDeviceProperties2 with its driver properties); all
+// empty or 0 when no device was asked.
+struct DeviceFacts {
+  std::string name;         // deviceName
+  std::string driver_info;  // driverInfo
+  std::uint32_t driver_id = 0, driver_version = 0, subpixel_bits = 0;
+};
+
 struct TwinRules {
   bool exact = false;  // the twin has bit-exact rules for this driver and path
   RasterRules rules;   // what the twin follows: the matched rules, or the defaults when not exact
@@ -35,9 +46,9 @@ struct TwinRules {
   std::string text;
 };
 
-// `device_name` and `driver_info` empty: no device was asked; the twin follows its default release
-// on this machine's path and says so.
-TwinRules ChooseTwinRules(const std::string& device_name, const std::string& driver_info, const CpuPath& path);
+// A device with no name: none was asked; the twin follows lavapipe's default release on this
+// machine's path and says so.
+TwinRules ChooseTwinRules(const DeviceFacts& device, const CpuPath& path);
 
 // One lavapipe the twin copies bit for bit: a release named exactly (another point release may
 // have changed the arithmetic, and only a run can say it has not), one CPU path, its rules, and
@@ -64,6 +75,20 @@ struct UnprovenLavapipe {
   std::string_view why;
 };
 std::span<const UnprovenLavapipe> UnprovenLavapipes();
+
+// The one SwiftShader the twin copies: the device reports no revision (its driverVersion has been
+// 5.0.0 for years), so the row is keyed on what it does report and names the package it was
+// proven on; its CI step renders every shipped scene on the installed SwiftShader, so a package
+// that changed the rasterizer fails there.
+struct KnownSwiftShader {
+  std::string_view name;  // deviceName: the JIT is in it, and "(LLVM)" rounds differently
+  std::uint32_t driver_version;
+  std::uint32_t subpixel_bits;  // 4 in Chromium's build (SWIFTSHADER_LEGACY_PRECISION), 8 upstream
+  std::string_view proven_on;
+  RasterRules rules;
+  std::string_view proven_by;
+};
+const KnownSwiftShader& SwiftShaderRow();
 
 // The releases and paths the table knows, one line each, with what proves each, then the
 // unproven ones with why, for --version.

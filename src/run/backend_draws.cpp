@@ -10,9 +10,10 @@ namespace twinraster::run {
 
 namespace {
 
-// The twin and the book report themselves as the twin does: lavapipe's subpixel bits, strict lines.
-verify::DrawnBy TwinDrawnBy() {
-  const TwinLimits limits = TwinDeviceLimits();
+// The twin and the book report themselves as the twin does: the subpixel bits of the device its
+// rules copy (the book: lavapipe's), strict lines.
+verify::DrawnBy TwinDrawnBy(const cpu::RasterRules& rules) {
+  const TwinLimits limits = TwinDeviceLimits(rules);
   return {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
 }
 
@@ -50,6 +51,14 @@ BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& s
   return run;
 }
 
+cpu::DeviceFacts FactsOf(const DeviceIdentity& device) {
+  return {.name = device.name,
+          .driver_info = device.driver_info,
+          .driver_id = device.driver_id,
+          .driver_version = device.driver_version,
+          .subpixel_bits = device.subpixel_bits};
+}
+
 BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads) {
   BackendRun run;
   run.record.backend = Backend::kCpu;
@@ -58,7 +67,7 @@ BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsig
   options.rules = rules;
   CpuTimings t;
   run.image = RenderOnCpu(list, options, &t);
-  run.drawn_by = TwinDrawnBy();
+  run.drawn_by = TwinDrawnBy(rules);
   run.record.threads = t.threads;
   run.record.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");
   run.record.setup_ms = t.setup_ms, run.record.draw_ms = t.draw_ms, run.record.readback_ms = t.readback_ms;
@@ -72,7 +81,7 @@ BackendRun DrawByTheBook(const Scene& scene) {
   Stopwatch clock;
   run.image = book::RenderScene(scene);
   run.record.draw_ms = clock.Milliseconds();  // the demos draw straight into the image: all of it is drawing
-  run.drawn_by = TwinDrawnBy();
+  run.drawn_by = TwinDrawnBy({});
   return run;
 }
 

@@ -6,6 +6,7 @@
 
 #include "chain/draw_list.hpp"
 #include "cpu/raster_rules.hpp"
+#include "cpu/twin_rules.hpp"
 #include "gpu/isolated_gpu.hpp"
 #include "image/image.hpp"
 #include "run/run_record.hpp"
@@ -39,6 +40,9 @@ class GpuSession {
 // refuses. A crash or a timeout is a result: status kCrashed or kTimedOut, the problem naming
 // `source`, no image; `device` is still known when the child got that far.
 BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device);
+
+// What the twin's choice of rules reads of a device (cpu/twin_rules.hpp).
+cpu::DeviceFacts FactsOf(const DeviceIdentity& device);
 
 // The twin, with the arithmetic of the lavapipe it copies.
 BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads);

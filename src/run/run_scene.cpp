@@ -41,7 +41,7 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
   }
   if (options.backends != Backends::kGpu) {
     Say(status, "cpu: drawing...");
-    record.twin = cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
+    record.twin = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
     runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));
   }
   return runs;

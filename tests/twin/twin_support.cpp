@@ -1,6 +1,7 @@
 #include "twin_support.hpp"
 
 #include "cpu/cpu_renderer.hpp"
+#include "run/backend_draws.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 
@@ -32,7 +33,7 @@ GpuRenderer& SharedGpu(gpu::Instancing instancing) {
 const cpu::TwinRules& SharedTwinRules() {
   static const cpu::TwinRules rules = [] {
     const DeviceIdentity& device = SharedGpu().Device();
-    return cpu::ChooseTwinRules(device.name, device.driver_info, cpu::DetectCpuPath());
+    return cpu::ChooseTwinRules(run::FactsOf(device), cpu::DetectCpuPath());
   }();
   return rules;
 }
