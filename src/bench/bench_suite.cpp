@@ -6,6 +6,7 @@
 #include "bench/vertex_methods.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "run/backend_draws.hpp"
@@ -111,6 +112,8 @@ std::vector<std::string> BenchMethodNames() {
   for (VertexMethod m : kAllMethods) names.emplace_back(MethodName(m));
   names.emplace_back("cpu-twin");
   names.emplace_back("lavapipe");
+  names.emplace_back("cpu-twin-swiftshader");
+  names.emplace_back("swiftshader");
   return names;
 }
 
@@ -153,14 +156,16 @@ SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
 }
 
 // The row's image against the truth: pixels, z-fighting and, on lit scenes, how far its colours are
-// from the truth's, triangle by triangle.
+// from the truth's, triangle by triangle (which triangle a pixel shows found with `rules`, the
+// rules of the device that drew it).
 void MeasureImage(BenchRow& row, const std::filesystem::path& file, const SceneTruth& t, const Image& image,
-                  const ClipPositions* clip, unsigned cores) {
+                  const ClipPositions* clip, unsigned cores, const cpu::RasterRules& rules = {}) {
   row.image_error_px = CompareImages(image, t.surfaces.image).differing_pixels;
   row.z_fighting_px = ZFighting(file, image, t.surfaces.image);
   if (!t.surface_list) return;
-  const Image surfaces = clip ? RasterizeClipSpace(*t.surface_list, *clip, CpuOptions{cores})
-                              : RenderOnCpu(*t.surface_list, CpuOptions{cores});
+  const CpuOptions options{.threads = cores, .rules = rules};
+  const Image surfaces =
+      clip ? RasterizeClipSpace(*t.surface_list, *clip, options) : RenderOnCpu(*t.surface_list, options);
   const ColourError error = SameSurfaceColourError(image, surfaces, t.surfaces);
   row.colour_error = error.max_channel;
   row.colour_pixels = error.pixels;
@@ -193,18 +198,24 @@ BenchRow MethodRow(VertexMethod method, const BenchRow& base, const std::filesys
   return row;
 }
 
-// A renderer as a user runs it: the twin (run/backend_draws.hpp, as `render` draws) or lavapipe
-// in this process, so that its frame time holds no child process.
-BenchRow RendererRow(bool twin, unsigned threads, std::optional<GpuRenderer>& lavapipe, const BenchRow& base,
-                     const std::filesystem::path& file, const SceneTruth& t, int runs, unsigned cores) {
+// A renderer as a user runs it: the twin with one device's rules (run/backend_draws.hpp, as
+// `render` draws), or that device in this process, so that its frame time holds no child process.
+struct Renderer {
+  const char* method;
+  cpu::RasterRules rules;         // the device's, which the twin follows
+  GpuRenderer* device = nullptr;  // null: the twin draws
+};
+
+BenchRow RendererRow(const Renderer& renderer, unsigned threads, const BenchRow& base, const std::filesystem::path& file,
+                     const SceneTruth& t, int runs, unsigned cores) {
   BenchRow row = base;
-  row.method = twin ? "cpu-twin" : "lavapipe";
+  row.method = renderer.method;
   row.threads = threads;
   Image image;
   row.frame_ms = MedianMs(runs, [&] {
-    image = twin ? run::DrawOnTwin(t.list, cpu::RasterRules{}, threads).image : lavapipe->Render(t.list);
+    image = renderer.device ? renderer.device->Render(t.list) : run::DrawOnTwin(t.list, renderer.rules, threads).image;
   });
-  MeasureImage(row, file, t, image, nullptr, cores);  // lavapipe covers what the twin covers, bit for bit
+  MeasureImage(row, file, t, image, nullptr, cores, renderer.rules);  // the device covers what its twin covers
   return row;
 }
 
@@ -220,7 +231,11 @@ BenchResult RunBench(const BenchOptions& options) {
   };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   Lavapipes lavapipes = MakeLavapipes(cores, selected("lavapipe"));
+  // SwiftShader runs on its own pool of one thread per core: its rows are at every core only.
+  std::optional<GpuRenderer> swiftshader;
+  if (selected("swiftshader")) swiftshader.emplace(GpuOptions{.device = "SwiftShader"});
   result.machine = MachineDescription(lavapipes.front().second ? lavapipes.front().second->DeviceName() : "not used");
+  if (swiftshader) result.machine += " and " + swiftshader->DeviceName();
 
   const std::vector<std::filesystem::path> files = SuiteScenes(options);
   if (files.empty())
@@ -231,6 +246,7 @@ BenchResult RunBench(const BenchOptions& options) {
   std::size_t rows_per_scene = 0;
   for (VertexMethod method : kAllMethods) rows_per_scene += selected(MethodName(method)) ? 1 : 0;
   for (const char* renderer : {"cpu-twin", "lavapipe"}) rows_per_scene += selected(renderer) ? lavapipes.size() : 0;
+  for (const char* renderer : {"cpu-twin-swiftshader", "swiftshader"}) rows_per_scene += selected(renderer) ? 1 : 0;
   const std::size_t total_rows = rows_per_scene * files.size();
   const auto add_row = [&](const BenchRow& row) {
     result.rows.push_back(row);
@@ -242,13 +258,17 @@ BenchResult RunBench(const BenchOptions& options) {
     for (VertexMethod method : kAllMethods) {
       if (selected(MethodName(method))) add_row(MethodRow(method, base, file, truth, options.runs, cores));
     }
-    // The two renderers with one thread and with every core, back to back.
+    // The twin and lavapipe with one thread and with every core, back to back; then the twin with
+    // SwiftShader's rules and SwiftShader.
     for (auto& [threads, lavapipe] : lavapipes) {
-      for (const bool twin : {true, false}) {
-        if (selected(twin ? "cpu-twin" : "lavapipe")) {
-          add_row(RendererRow(twin, threads, lavapipe, base, file, truth, options.runs, cores));
-        }
+      for (const Renderer& r : {Renderer{"cpu-twin", {}}, Renderer{"lavapipe", {}, lavapipe ? &*lavapipe : nullptr}}) {
+        if (selected(r.method)) add_row(RendererRow(r, threads, base, file, truth, options.runs, cores));
       }
+    }
+    const cpu::RasterRules swiftshader_rules = cpu::SwiftShaderRow().rules;
+    for (const Renderer& r : {Renderer{"cpu-twin-swiftshader", swiftshader_rules},
+                              Renderer{"swiftshader", swiftshader_rules, swiftshader ? &*swiftshader : nullptr}}) {
+      if (selected(r.method)) add_row(RendererRow(r, cores, base, file, truth, options.runs, cores));
     }
   }
   result.seconds = total.Milliseconds() / 1000;

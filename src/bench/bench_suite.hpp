@@ -14,7 +14,9 @@ namespace twinraster {
 
 struct BenchRow {
   std::string scene;
-  std::string method;    // a VertexMethod's name, or "cpu-twin" / "lavapipe" for whole frames
+  // A VertexMethod's name, or for whole frames "cpu-twin" / "lavapipe", "cpu-twin-swiftshader" (the
+  // twin with SwiftShader's rules) / "swiftshader".
+  std::string method;
   unsigned threads = 0;  // rasterizer threads for the frame time
   std::size_t vertices = 0, triangles = 0;
   std::uint32_t width = 0, height = 0;
@@ -33,7 +35,8 @@ struct BenchOptions {
   std::filesystem::path scenes_dir = "scenes";  // the suite: *.json, hard/*.json, bench/*.json
   int runs = 15;                                // timings are medians over this many runs
   std::optional<std::string> only;              // only scenes whose name contains this
-  // Which rows to run: the vertex methods' names and "cpu-twin", "lavapipe"; empty means all.
+  // Which rows to run: the vertex methods' names and the renderers' (BenchRow::method); empty
+  // means all.
   std::vector<std::string> methods;
   // Called as each row is measured, in the order of BenchResult::rows: row number `done` (from 1)
   // of `total`. A whole run takes seconds to minutes, so a user can watch the rows come in.

@@ -163,8 +163,8 @@ CommandRun AddBenchCommand(CLI::App& app) {
       AddSubcommand(app, "bench", "time each way of computing the chain, and its error against the truth",
                     "The suite is SCENES/*.json, SCENES/hard/*.json and SCENES/bench/*.json. On a terminal, each\n"
                     "row shows on standard error as it finishes.\n"
-                    "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe out of\n"
-                    "--methods to need none), 4 internal error.");
+                    "Exit codes: 0 done, 2 bad input or usage, 3 no usable Vulkan device (leave lavapipe and\n"
+                    "swiftshader out of --methods to need none), 4 internal error.");
   command->add_option("--out", a->out, "also write bench.csv, bench.svg, bench.html, bench.json and bench.txt into DIR")
       ->type_name("DIR");
   command

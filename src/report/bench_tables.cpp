@@ -71,13 +71,27 @@ std::vector<std::string> Scenes(const BenchResult& result) {
   return scenes;
 }
 
-std::vector<unsigned> ThreadCounts(const BenchResult& result) {
+// The thread counts `device`'s rows were measured with.
+std::vector<unsigned> ThreadCounts(const BenchResult& result, std::string_view device) {
   std::vector<unsigned> counts;
   for (const BenchRow& r : result.rows)
-    if (r.method == "lavapipe" && std::find(counts.begin(), counts.end(), r.threads) == counts.end())
+    if (r.method == device && std::find(counts.begin(), counts.end(), r.threads) == counts.end())
       counts.push_back(r.threads);
   return counts;
 }
+
+// A device and the twin with its rules, whose whole-frame times the summary divides.
+struct DevicePair {
+  const char* key;     // the JSON key's suffix, and the device's method
+  const char* device;  // BenchRow::method
+  const char* twin;
+  const char* title;
+};
+constexpr DevicePair kDevicePairs[] = {
+    {"lavapipe", "lavapipe", "cpu-twin", "CPU twin time / lavapipe time"},
+    {"swiftshader", "swiftshader", "cpu-twin-swiftshader",
+     "CPU twin with SwiftShader's rules / SwiftShader (its own pool, every core)"},
+};
 
 }  // namespace
 
@@ -106,18 +120,20 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
                                              ? std::optional(r->vertex_ms * 1e6 / double(r->vertices))
                                              : std::nullopt);
   }
-  // A list rather than an object keyed by scene and thread count, so that its keys never vary.
-  Json& ratios = j["cpu_twin_over_lavapipe"] = Json::array();
-  for (const std::string& scene : Scenes(result)) {
-    for (unsigned threads : ThreadCounts(result)) {
-      const BenchRow* twin = Find(result, scene, "cpu-twin", threads);
-      const BenchRow* gpu = Find(result, scene, "lavapipe", threads);
-      if (!twin || !gpu) continue;
-      ratios.push_back({{"scene", scene},
-                        {"threads", threads},
-                        {"cpu_twin_ms", twin->frame_ms},
-                        {"lavapipe_ms", gpu->frame_ms},
-                        {"ratio", twin->frame_ms / gpu->frame_ms}});
+  // Lists rather than objects keyed by scene and thread count, so that their keys never vary.
+  for (const DevicePair& pair : kDevicePairs) {
+    Json& ratios = j[std::string("cpu_twin_over_") + pair.key] = Json::array();
+    for (const std::string& scene : Scenes(result)) {
+      for (unsigned threads : ThreadCounts(result, pair.device)) {
+        const BenchRow* twin = Find(result, scene, pair.twin, threads);
+        const BenchRow* gpu = Find(result, scene, pair.device, threads);
+        if (!twin || !gpu) continue;
+        ratios.push_back({{"scene", scene},
+                          {"threads", threads},
+                          {"cpu_twin_ms", twin->frame_ms},
+                          {std::string(pair.key) + "_ms", gpu->frame_ms},
+                          {"ratio", twin->frame_ms / gpu->frame_ms}});
+      }
     }
   }
   return j;
@@ -147,23 +163,26 @@ std::string BenchSummary(const BenchResult& result) {
         out << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
     }
   }
-  out << "Whole frame, CPU twin time / lavapipe time:\n";
-  const std::vector<unsigned> counts = ThreadCounts(result);
-  char line[256];
-  std::snprintf(line, sizeof line, "  %-44s", "scene");
-  out << line;
-  for (unsigned t : counts) out << "  " << t << (t == 1 ? " thread " : " threads");
-  out << "\n";
-  for (const std::string& scene : Scenes(result)) {
-    std::snprintf(line, sizeof line, "  %-44s", scene.c_str());
+  for (const DevicePair& pair : kDevicePairs) {
+    const std::vector<unsigned> counts = ThreadCounts(result, pair.device);
+    if (counts.empty()) continue;
+    out << "Whole frame, " << pair.title << ":\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-44s", "scene");
     out << line;
-    for (unsigned threads : counts) {
-      const BenchRow* twin = Find(result, scene, "cpu-twin", threads);
-      const BenchRow* gpu = Find(result, scene, "lavapipe", threads);
-      std::snprintf(line, sizeof line, "  %9s", twin && gpu ? Fixed(twin->frame_ms / gpu->frame_ms, 3).c_str() : "-");
-      out << line;
-    }
+    for (unsigned t : counts) out << "  " << t << (t == 1 ? " thread " : " threads");
     out << "\n";
+    for (const std::string& scene : Scenes(result)) {
+      std::snprintf(line, sizeof line, "  %-44s", scene.c_str());
+      out << line;
+      for (unsigned threads : counts) {
+        const BenchRow* twin = Find(result, scene, pair.twin, threads);
+        const BenchRow* gpu = Find(result, scene, pair.device, threads);
+        std::snprintf(line, sizeof line, "  %9s", twin && gpu ? Fixed(twin->frame_ms / gpu->frame_ms, 3).c_str() : "-");
+        out << line;
+      }
+      out << "\n";
+    }
   }
   return out.str();
 }

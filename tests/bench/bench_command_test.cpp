@@ -56,6 +56,7 @@ TEST_CASE("bench --json keeps every summary key whatever ran: null where nothing
   REQUIRE(summary["z_fighting_onset_near_over_far"]["standard"].is_null());
   REQUIRE(summary["z_fighting_onset_near_over_far"]["reversed"].is_null());
   REQUIRE(summary["cpu_twin_over_lavapipe"] == nlohmann::json::array());
+  REQUIRE(summary["cpu_twin_over_swiftshader"] == nlohmann::json::array());
 }
 
 TEST_CASE("RunBench reports each row through on_row as it is measured, in order, numbered of the total", "[bench]") {

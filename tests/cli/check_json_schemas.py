@@ -155,7 +155,8 @@ def main():
              lambda d: not d["same_size"] and d["differing_pixels"] is None),
             ("bench, every method", "bench",
              ["bench", "--runs", "1", "--only", "cgfs-scene", "--scenes", scenes, "--json"], None, 0,
-             lambda d: len(d["rows"]) >= 6 and len(d["summary"]["cpu_twin_over_lavapipe"]) >= 1),
+             lambda d: len(d["rows"]) >= 8 and len(d["summary"]["cpu_twin_over_lavapipe"]) >= 1
+             and len(d["summary"]["cpu_twin_over_swiftshader"]) == 1),
             ("bench --scale, two small counts", "bench-scale",
              ["bench", "--scale", "--counts", "1000,64", "--runs", "1", "--json", "-q"], None, 0,
              lambda d: [r["instances"] for r in d["rows"]] == [64, 1000] and all(r["identical"] for r in d["rows"])
@@ -166,7 +167,8 @@ def main():
             ("bench, depth scenes, two methods", "bench",
              ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
               scenes, "--json", "-q"], None, 0,
-             lambda d: d["summary"]["cpu_twin_over_lavapipe"] == [] and d["summary"]["far_1e7_vertex_error_px"]["compose-f32"] is None),
+             lambda d: d["summary"]["cpu_twin_over_lavapipe"] == [] and d["summary"]["cpu_twin_over_swiftshader"] == []
+             and d["summary"]["far_1e7_vertex_error_px"]["compose-f32"] is None),
             ("bench, a lit scene: every row's colour error", "bench",
              ["bench", "--runs", "1", "--only", "lit-flat", "--methods", "compose-f32,cpu-twin", "--scenes", scenes,
               "--json", "-q"], None, 0,

@@ -164,8 +164,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "render --backend both on SwiftShader: no bit-exact rules, so the verifier judges, and verify reads the image's "
-    "notes",
+    "render --backend both on SwiftShader: the twin copies it bit for bit, the verifier judges at 4 bits, and verify "
+    "reads the images' notes",
     "[cli][verify][render][swiftshader]") {
   const test::TempDir dir;
   const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
@@ -174,8 +174,14 @@ TEST_CASE(
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.out, HasSubstring("(SwiftShader Device"));
-  CHECK_THAT(r.out, HasSubstring("twin: no bit-exact rules for SwiftShader"));
+  CHECK_THAT(r.out, HasSubstring("twin: SwiftShader rules, SwiftShader Device (Subzero), driver 5.0.0"));
+  CHECK_THAT(r.out, HasSubstring("gpu vs cpu: 600 x 600: 0 differing pixels"));
   CHECK_THAT(r.out, HasSubstring("0 violations (subpixel bits 4, strict lines)"));
+  // The twin's image says whose rules drew it: SwiftShader's 4 bits.
+  const test::CliResult twin = test::RunCli({"verify", scene, (dir / "ss-cpu.png").string(), "--no-map"});
+  INFO(twin.out << twin.err);
+  CHECK(twin.exit_code == 0);
+  CHECK_THAT(twin.out, HasSubstring("(subpixel bits 4, strict lines)"));
   // Judged later, by the rules the image carries: SwiftShader's 4 bits and strict lines.
   const test::CliResult v = test::RunCli({"verify", scene, (dir / "ss-gpu.png").string(), "--no-map"});
   INFO(v.out << v.err);
@@ -195,8 +201,8 @@ TEST_CASE(
   const test::CliResult r = test::RunCli({"--version"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
-  CHECK_THAT(r.out, HasSubstring("SwiftShader Device"));
-  CHECK_THAT(r.out, HasSubstring("twin: no bit-exact rules"));
+  CHECK_THAT(r.out, HasSubstring("SwiftShader Device (Subzero), driver 5.0.0, 4 subpixel bits, x86-64 SSE4.1 (proven on"));
+  CHECK_THAT(r.out, HasSubstring("twin: bit-exact (SwiftShader rules, SwiftShader Device (Subzero)"));
   CHECK_THAT(r.out, HasSubstring("llvmpipe"));
-  CHECK_THAT(r.out, HasSubstring("twin: bit-exact"));
+  CHECK_THAT(r.out, HasSubstring("twin: bit-exact (lavapipe rules"));
 }
