@@ -206,8 +206,8 @@ struct Renderer {
   GpuRenderer* device = nullptr;  // null: the twin draws
 };
 
-BenchRow RendererRow(const Renderer& renderer, unsigned threads, const BenchRow& base, const std::filesystem::path& file,
-                     const SceneTruth& t, int runs, unsigned cores) {
+BenchRow RendererRow(const Renderer& renderer, unsigned threads, const BenchRow& base,
+                     const std::filesystem::path& file, const SceneTruth& t, int runs, unsigned cores) {
   BenchRow row = base;
   row.method = renderer.method;
   row.threads = threads;

@@ -10,7 +10,6 @@
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
 #include "run/backend_draws.hpp"
-#include "run/backend_draws.hpp"
 #include "run/judge_image.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -93,8 +92,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   GpuRenderer gpu;
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   // The twin copies the lavapipe that draws here, as `render` chooses it.
-  const cpu::RasterRules twin_rules =
-      cpu::ChooseTwinRules(run::FactsOf(gpu.Device()), cpu::DetectCpuPath()).rules;
+  const cpu::RasterRules twin_rules = cpu::ChooseTwinRules(run::FactsOf(gpu.Device()), cpu::DetectCpuPath()).rules;
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;

@@ -81,12 +81,13 @@ void DrawChunk(const BandTarget& target, const cpu::RasterRules& rules, unsigned
     for (unsigned band = part; band < bands; band += threads) {
       switch (scratch.kind) {
         case PrimitiveKind::kLines:
-          draw_band(band, scratch.lines, [](std::size_t, const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
-            for (int py = row_begin; py < row_end; ++py) {
-              const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
-              if (span.begin < span.end) on_span(py, span);
-            }
-          });
+          draw_band(band, scratch.lines,
+                    [](std::size_t, const LineSetup& line, int row_begin, int row_end, auto&& on_span) {
+                      for (int py = row_begin; py < row_end; ++py) {
+                        const Span span = CoveredSpan(line.edges.data(), line.edges.size(), line.bounds, py);
+                        if (span.begin < span.end) on_span(py, span);
+                      }
+                    });
           break;
         case PrimitiveKind::kTriangles:
           draw_band(band, scratch.triangles,

@@ -166,8 +166,8 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
 
 void ShadeSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane, std::uint32_t colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeAnchoredRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
-                   static_cast<float>(py), plane, fb.compare == DepthCompare::kGreater, colour);
+  ShadeAnchoredRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+                   plane, fb.compare == DepthCompare::kGreater, colour);
 }
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {

@@ -265,20 +265,20 @@ void ShadeVertices(const ChunkDraws& draws, const Assembly& assembly, const std:
   vertex_start.assign(draws.count + 1, 0);
   for (std::size_t i = 0; i < draws.count; ++i) vertex_start[i + 1] = vertex_start[i] + draws.mesh(i).positions.size();
   vertices.resize(vertex_start[draws.count]);
-  ParallelFor(PartsFor(threads, vertices.size(), 8192), vertices.size(),
-              [&](std::size_t begin, std::size_t end, unsigned) {
-                const DenormalsAsZero denormals(flush_denormals);
-                for (std::size_t g = begin; g < end;) {
-                  const std::size_t i = DrawOf(vertex_start, g);
-                  const std::size_t d = draw_begin + i;
-                  const DrawMesh& mesh = draws.mesh(i);
-                  const std::size_t stop = std::min(end, vertex_start[i + 1]);
-                  for (; g < stop; ++g) {
-                    const std::size_t v = g - vertex_start[i];
-                    vertices[g] = assembly.Shade(clip ? (*clip)[d][v] : VertexStage(list.draws[d].F, mesh.positions[v]));
-                  }
-                }
-              });
+  ParallelFor(
+      PartsFor(threads, vertices.size(), 8192), vertices.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+        const DenormalsAsZero denormals(flush_denormals);
+        for (std::size_t g = begin; g < end;) {
+          const std::size_t i = DrawOf(vertex_start, g);
+          const std::size_t d = draw_begin + i;
+          const DrawMesh& mesh = draws.mesh(i);
+          const std::size_t stop = std::min(end, vertex_start[i + 1]);
+          for (; g < stop; ++g) {
+            const std::size_t v = g - vertex_start[i];
+            vertices[g] = assembly.Shade(clip ? (*clip)[d][v] : VertexStage(list.draws[d].F, mesh.positions[v]));
+          }
+        }
+      });
 }
 
 // Empties each part's output and bins and reserves its share. Here, in the calling thread: a

@@ -66,8 +66,8 @@ bool OutlineWinding(const SnappedVertex& a, const SnappedVertex& b, const Snappe
   const float x0 = static_cast<float>(a.x), x1 = static_cast<float>(b.x), x2 = static_cast<float>(c.x);
   const float y0 = static_cast<float>(a.y), y1 = static_cast<float>(b.y), y2 = static_cast<float>(c.y);
   float area = (y0 - y2) * x1 + (y2 - y1) * x0 + (y1 - y0) * x2;
-  const std::uint32_t signs =
-      std::bit_cast<std::uint32_t>(a.clip.w) ^ std::bit_cast<std::uint32_t>(b.clip.w) ^ std::bit_cast<std::uint32_t>(c.clip.w);
+  const std::uint32_t signs = std::bit_cast<std::uint32_t>(a.clip.w) ^ std::bit_cast<std::uint32_t>(b.clip.w) ^
+                              std::bit_cast<std::uint32_t>(c.clip.w);
   if ((signs >> 31) != 0) area = -area;
   return area > 0.0f;
 }

@@ -78,7 +78,8 @@ void AssembleLine(const SnappedVertex& a, const SnappedVertex& b, std::uint32_t 
   quad.v[3].x += dy0w, quad.v[3].y += -dx0h;
   if (!ClipPolygon(quad, kClipFrustum)) return;
   std::array<SnappedPoint, kMaxOutlinePoints> p;
-  for (int i = 0; i < quad.count; ++i) p[static_cast<std::size_t>(i)] = SnapPolygonVertex(quad.v[static_cast<std::size_t>(i)], vp);
+  for (int i = 0; i < quad.count; ++i)
+    p[static_cast<std::size_t>(i)] = SnapPolygonVertex(quad.v[static_cast<std::size_t>(i)], vp);
   OutlineSetup* setup = Append(p.data(), quad.count, true, vp, out);
   if (setup == nullptr) return;
   setup->depth = LineDepthPlane(a, b);
@@ -104,7 +105,8 @@ void AssembleOutlineSmooth(const OutlineTriangle& v, const std::array<glm::vec3,
   setup->depth = TriangleDepthPlane(*v[k[0]], *v[k[1]], *v[k[2]]);
   setup->smooth = true;
   setup->colour = static_cast<std::uint32_t>(out.planes.size());
-  out.planes.push_back(TriangleColourPlanes(*v[k[0]], *v[k[1]], *v[k[2]], {colours[k[0]], colours[k[1]], colours[k[2]]}));
+  out.planes.push_back(
+      TriangleColourPlanes(*v[k[0]], *v[k[1]], *v[k[2]], {colours[k[0]], colours[k[1]], colours[k[2]]}));
 }
 
 void AssembleOutlineWireframe(const OutlineTriangle& v, std::uint32_t colour, const SnapViewport& vp,

@@ -29,8 +29,7 @@ struct OutlineOutput {
 using OutlineTriangle = std::array<const SnappedVertex*, 3>;
 
 // A filled triangle of one colour (unlit, or flat: the lit colour of its first vertex).
-void AssembleOutlineTriangle(const OutlineTriangle& v, std::uint32_t colour, const SnapViewport& vp,
-                             OutlineOutput out);
+void AssembleOutlineTriangle(const OutlineTriangle& v, std::uint32_t colour, const SnapViewport& vp, OutlineOutput out);
 
 // A Gouraud triangle whose vertices have the given colours.
 void AssembleOutlineSmooth(const OutlineTriangle& v, const std::array<glm::vec3, 3>& colours, const SnapViewport& vp,

@@ -100,7 +100,8 @@ AnchoredColourPlanes TriangleColourPlanes(const SnappedVertex& v0, const Snapped
                          .y0 = o.y0};
   };
   AnchoredColourPlanes p;
-  for (int k = 0; k < 3; ++k) p.colour_oow[static_cast<std::size_t>(k)] = plane(colours[0][k], colours[1][k], colours[2][k]);
+  for (int k = 0; k < 3; ++k)
+    p.colour_oow[static_cast<std::size_t>(k)] = plane(colours[0][k], colours[1][k], colours[2][k]);
   // The 1/w plane: the weights themselves summed, which is the matrix applied to (1, 1, 1).
   p.oow = AnchoredPlane{.a = (m[0][0] + m[1][0]) + m[2][0],
                         .b = (m[0][1] + m[1][1]) + m[2][1],

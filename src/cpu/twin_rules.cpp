@@ -47,7 +47,7 @@ constexpr std::array kKnown = {
     KnownLavapipe{"25.0.7", "19", "SSE4.1", 128, kMesa25NoFma, kDebian13Sse41},
 };
 
-constexpr std::uint32_t kSwiftShaderDriverId = 10;  // VK_DRIVER_ID_GOOGLE_SWIFTSHADER
+constexpr std::uint32_t kSwiftShaderDriverId = 10;     // VK_DRIVER_ID_GOOGLE_SWIFTSHADER
 constexpr std::uint32_t kSwiftShader500 = (5u << 22);  // VK_MAKE_VERSION(5, 0, 0)
 // Subzero never fuses and never approximates a reciprocal; the threads run with denormals as zero.
 constexpr KnownSwiftShader kSwiftShader{
@@ -118,9 +118,8 @@ TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path) {
   const KnownSwiftShader& row = kSwiftShader;
   const std::string seen = device.name + ", driver " + VersionText(device.driver_version) + ", " +
                            std::to_string(device.subpixel_bits) + " subpixel bits";
-  const std::string known = "the twin copies " + std::string(row.name) + ", driver " +
-                            VersionText(row.driver_version) + ", " + std::to_string(row.subpixel_bits) +
-                            " subpixel bits, on x86-64 with SSE4.1";
+  const std::string known = "the twin copies " + std::string(row.name) + ", driver " + VersionText(row.driver_version) +
+                            ", " + std::to_string(row.subpixel_bits) + " subpixel bits, on x86-64 with SSE4.1";
   if (device.name != row.name || device.driver_version != row.driver_version ||
       device.subpixel_bits != row.subpixel_bits || path.arch != "x86-64" || !path.cpuid_sse4_1) {
     twin.text = "no bit-exact rules for " + seen + " on " + path.arch + (path.cpuid_sse4_1 ? "" : " without SSE4.1") +
@@ -193,8 +192,8 @@ std::string KnownRulesText() {
   }
   text += "  " + std::string(kSwiftShader.name) + ", driver " + VersionText(kSwiftShader.driver_version) + ", " +
           std::to_string(kSwiftShader.subpixel_bits) + " subpixel bits, x86-64 SSE4.1 (proven on " +
-          std::string(kSwiftShader.proven_on.substr(0, kSwiftShader.proven_on.find(','))) +
-          "): proven in CI by " + std::string(kSwiftShader.proven_by) + "\n";
+          std::string(kSwiftShader.proven_on.substr(0, kSwiftShader.proven_on.find(','))) + "): proven in CI by " +
+          std::string(kSwiftShader.proven_by) + "\n";
   for (const UnprovenLavapipe& unproven : kUnproven) {
     text += "  (no rules for Mesa " + std::string(unproven.mesa) + " (LLVM " + std::string(unproven.llvm_major) +
             "), " + std::string(unproven.instruction_set) + ", " + std::to_string(unproven.vector_bits) +

@@ -201,7 +201,8 @@ TEST_CASE(
   const test::CliResult r = test::RunCli({"--version"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
-  CHECK_THAT(r.out, HasSubstring("SwiftShader Device (Subzero), driver 5.0.0, 4 subpixel bits, x86-64 SSE4.1 (proven on"));
+  CHECK_THAT(r.out,
+             HasSubstring("SwiftShader Device (Subzero), driver 5.0.0, 4 subpixel bits, x86-64 SSE4.1 (proven on"));
   CHECK_THAT(r.out, HasSubstring("twin: bit-exact (SwiftShader rules, SwiftShader Device (Subzero)"));
   CHECK_THAT(r.out, HasSubstring("llvmpipe"));
   CHECK_THAT(r.out, HasSubstring("twin: bit-exact (lavapipe rules"));

@@ -39,7 +39,9 @@ GpuRenderer& SwiftShader() {
   return *gpu;
 }
 
-cpu::TwinRules SwiftShaderRules() { return cpu::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), cpu::DetectCpuPath()); }
+cpu::TwinRules SwiftShaderRules() {
+  return cpu::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), cpu::DetectCpuPath());
+}
 
 CpuOptions Twin(CpuOptions options = {}) {
   const cpu::TwinRules twin = SwiftShaderRules();
@@ -93,11 +95,11 @@ DrawList Adversarial(std::uint32_t seed, bool perspective, bool wireframe) {
   const auto window = [&] {
     const int k = pixel(rng);
     switch (kind(rng)) {
-      case 0: return k + 0.5;                                 // a pixel centre
-      case 1: return k + 0.0;                                 // a pixel corner
-      case 2: return k + 0.5 + (sub(rng) + 0.5) / 16.0;       // a tie for 4-bit snapping
-      case 3: return k + 0.5 + sub(rng) / 16.0;               // on the 4-bit grid
-      case 4: return k + 0.5 + (sub(rng) * 16 + 8) / 256.0;   // on lavapipe's grid, between SwiftShader's
+      case 0: return k + 0.5;                                // a pixel centre
+      case 1: return k + 0.0;                                // a pixel corner
+      case 2: return k + 0.5 + (sub(rng) + 0.5) / 16.0;      // a tie for 4-bit snapping
+      case 3: return k + 0.5 + sub(rng) / 16.0;              // on the 4-bit grid
+      case 4: return k + 0.5 + (sub(rng) * 16 + 8) / 256.0;  // on lavapipe's grid, between SwiftShader's
       default: return anywhere(rng);
     }
   };
@@ -118,7 +120,7 @@ DrawList Adversarial(std::uint32_t seed, bool perspective, bool wireframe) {
       }
     }
     if (t % 5 == 0) tri[2] = tri[1] + (tri[1] - tri[0]) * 1e-3f;  // a sliver, nearly a line
-    if (t % 11 == 0) tri[2] = tri[1];                              // a line, zero area
+    if (t % 11 == 0) tri[2] = tri[1];                             // a line, zero area
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (const glm::vec3& p : tri) mesh.positions.push_back(p);
     mesh.triangles.push_back({base, base + 1, base + 2});
@@ -148,7 +150,8 @@ DrawList DenormalDepths() {
   DrawMesh mesh;
   const auto square = [&mesh](float z, Rgb8 colour) {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const glm::vec2 c : {glm::vec2(-0.5f, -0.5f), glm::vec2(0.5f, -0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(-0.5f, 0.5f)})
+    for (const glm::vec2 c :
+         {glm::vec2(-0.5f, -0.5f), glm::vec2(0.5f, -0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(-0.5f, 0.5f)})
       mesh.positions.push_back({c.x, c.y, z});
     mesh.triangles.push_back({base, base + 1, base + 2});
     mesh.triangles.push_back({base, base + 2, base + 3});
@@ -212,7 +215,8 @@ TEST_CASE("SwiftShader: every shipped scene and mesh, filled and in wireframe: G
   RequireNoValidationMessages();
 }
 
-TEST_CASE("SwiftShader: the million-instance scenes at 480x270, filled and in wireframe", "[twin][swiftshader][large]") {
+TEST_CASE("SwiftShader: the million-instance scenes at 480x270, filled and in wireframe",
+          "[twin][swiftshader][large]") {
   for (const auto& file : test::LargeShippedScenes()) {
     Scene scene = LoadScene(file);
     scene.canvas.width = 480;
