@@ -12,9 +12,10 @@ namespace {
 
 // One colour per row kind, the same on every plot.
 const std::map<std::string, std::string>& MethodColours() {
-  static const std::map<std::string, std::string> colours = {{"compose-f64", "#1f77b4"}, {"compose-f32", "#d62728"},
-                                                             {"steps-f32", "#ff7f0e"},   {"camera-relative", "#2ca02c"},
-                                                             {"cpu-twin", "#9467bd"},    {"lavapipe", "#8c564b"}};
+  static const std::map<std::string, std::string> colours = {
+      {"compose-f64", "#1f77b4"},          {"compose-f32", "#d62728"}, {"steps-f32", "#ff7f0e"},
+      {"camera-relative", "#2ca02c"},      {"cpu-twin", "#9467bd"},    {"lavapipe", "#8c564b"},
+      {"cpu-twin-swiftshader", "#17becf"}, {"swiftshader", "#bcbd22"}};
   return colours;
 }
 

@@ -190,13 +190,13 @@ std::string BenchSummary(const BenchResult& result) {
 std::string BenchTable(const BenchResult& result) {
   std::ostringstream out;
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-16s %3s %10s %10s %12s %10s %9s %19s\n", "scene", "method", "thr",
+  std::snprintf(line, sizeof line, "%-44s %-20s %3s %10s %10s %12s %10s %9s %19s\n", "scene", "method", "thr",
                 "vertex ms", "frame ms", "vertex err px", "image err", "z-fight", "colour err (pixels)");
   out << line;
   for (const BenchRow& r : result.rows) {
     const std::string colour =
         r.colour_error ? std::to_string(*r.colour_error) + " (" + std::to_string(r.colour_pixels) + ")" : "-";
-    std::snprintf(line, sizeof line, "%-44s %-16s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(),
+    std::snprintf(line, sizeof line, "%-44s %-20s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(),
                   r.method.c_str(), r.threads, r.vertex_ms < 0 ? "-" : Fixed(r.vertex_ms, 3).c_str(),
                   Fixed(r.frame_ms, 2).c_str(), Sci(r.vertex_error_px).c_str(),
                   static_cast<unsigned long long>(r.image_error_px),

@@ -36,6 +36,7 @@ Json TwinJson(const std::optional<cpu::TwinRules>& twin) {
     return twin->release ? Json((*twin->release).*field) : Json(nullptr);
   };
   return {{"exact", twin->exact},
+          {"rasterizer", twin->rules.rasterizer == cpu::Rasterizer::kSwiftShader ? "swiftshader" : "lavapipe"},
           {"text", twin->text},
           {"mesa", release_field(&cpu::LavapipeRelease::mesa)},
           {"llvm", release_field(&cpu::LavapipeRelease::llvm)},
