@@ -87,6 +87,8 @@ run "test -s out/cgfs-transforms-gpu.png && test -s out/cgfs-transforms-cpu.png"
   { echo "check-debian: demo.sh wrote no PNGs" >&2; exit 1; }
 step "bash scripts/test.sh"
 run "bash scripts/test.sh"
+# Which drivers the suite proved the twin against: lavapipe's Mesa, and SwiftShader's package.
+step "drivers tested: $(run "dpkg-query -W -f='\${Package} \${Version}; ' mesa-vulkan-drivers chromium-common")"
 step "both README commands passed on $release"
 if [ "$release" = bookworm ]; then
   # Debian 12's backport of Mesa 25.0.7 (LLVM 15): the twin's rows for it, against that driver.

@@ -262,7 +262,7 @@ TEST_CASE("SwiftShader: random scenes, filled, in wireframe and lit: GPU image =
 TEST_CASE("SwiftShader: adversarial triangles, ties on both grids, slivers, corners at and behind the eye",
           "[twin][swiftshader][random]") {
   std::uint64_t covered = 0;
-  for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+  for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     for (const bool perspective : {false, true}) {
       for (const bool wireframe : {false, true}) {
         const DrawList list = Adversarial(seed, perspective, wireframe);
@@ -274,7 +274,7 @@ TEST_CASE("SwiftShader: adversarial triangles, ties on both grids, slivers, corn
       }
     }
   }
-  CHECK(covered > 12 * 4 * 10000);
+  CHECK(covered > 40 * 4 * 10000);
   RequireNoValidationMessages();
 }
 
