@@ -20,6 +20,19 @@ float Farthest(const Framebuffer& fb, int x_begin, int x_end, int row_begin, int
   return farthest;
 }
 
+// The bound from the plane's extremes over the box (in double), widened by `slack` and clamped as
+// fragments are. A plane whose terms reach float's range could round a term to inf and a fragment
+// to NaN, which either clamp makes 0 or 1: then no bound short of the extreme holds.
+double Bounded(double lowest, double highest, double scale, double slack, DepthCompare op) {
+  const bool representable = scale < 0x1p100;  // also false for NaN
+  if (op == DepthCompare::kLess) {
+    const double z = lowest - slack;
+    return representable && z > 0 ? std::min(z, 1.0) : 0.0;
+  }
+  const double z = highest + slack;
+  return representable && z < 1 ? std::max(z, 0.0) : 1.0;
+}
+
 }  // namespace
 
 double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare op) {
@@ -33,14 +46,22 @@ double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare 
   // (and 2^-150 when subnormal); 2^-21 covers four twice over, and the double sums above too.
   const double scale = std::fabs(a0) + std::fabs(dzdx) * std::max(std::fabs(x0), std::fabs(x1)) +
                        std::fabs(dzdy) * std::max(std::fabs(y0), std::fabs(y1));
-  const double slack = scale * 0x1p-21 + 0x1p-126;
-  // A NaN plane value is clamped to 1 (ClampDepth): 0 and 1 are the bounds that stay true then.
-  if (op == DepthCompare::kLess) {
-    const double z = lowest - slack;
-    return z > 0 ? std::min(z, 1.0) : 0.0;
-  }
-  const double z = highest + slack;
-  return z < 1 ? std::max(z, 0.0) : 1.0;
+  return Bounded(lowest, highest, scale, scale * 0x1p-21 + 0x1p-126, op);
+}
+
+double NearestDepth(const AnchoredPlane& plane, const PixelRect& box, DepthCompare op) {
+  const double a = plane.a, b = plane.b, c = plane.c;
+  // xf = px - x0 and yf = py - y0 in double are exact; in float each may round once (an anchor
+  // 2^24 pixels or more away), so six roundings in all, each at most 2^-24 of `scale`.
+  const double x0 = box.x0 - double{plane.x0}, x1 = box.x1 - double{plane.x0};
+  const double y0 = box.y0 - double{plane.y0}, y1 = box.y1 - double{plane.y0};
+  const double lowest = c + std::min(a * x0, a * x1) + std::min(b * y0, b * y1);
+  const double highest = c + std::max(a * x0, a * x1) + std::max(b * y0, b * y1);
+  const double scale = std::fabs(c) + std::fabs(a) * std::max(std::fabs(x0), std::fabs(x1)) +
+                       std::fabs(b) * std::max(std::fabs(y0), std::fabs(y1));
+  // 2^-21 covers six roundings; a denormal flushed to 0 (SwiftShader's threads) moves a value by
+  // less than 2^-126, four times at most.
+  return Bounded(lowest, highest, scale, scale * 0x1p-21 + 0x1p-122, op);
 }
 
 DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare op)
@@ -49,26 +70,6 @@ DepthTiles::DepthTiles(std::uint32_t width, std::uint32_t height, DepthCompare o
       op_(op),
       farthest_(stride_ * ((height + kTileSize - 1) / kTileSize), ClearDepth(op)),
       dirty_(farthest_.size(), 0) {}
-
-double NearestDepth(const AnchoredPlane& plane, const PixelRect& box, DepthCompare op) {
-  const double a = plane.a, b = plane.b, c = plane.c;
-  // xf = px - x0 and yf = py - y0 are exact in float (x0, y0 are sixteenths), and so in double.
-  const double x0 = box.x0 - double{plane.x0}, x1 = box.x1 - double{plane.x0};
-  const double y0 = box.y0 - double{plane.y0}, y1 = box.y1 - double{plane.y0};
-  const double lowest = c + std::min(a * x0, a * x1) + std::min(b * y0, b * y1);
-  const double highest = c + std::max(a * x0, a * x1) + std::max(b * y0, b * y1);
-  // Four roundings of at most 2^-24 of `scale`, and four flushes of a denormal to 0 at most.
-  const double scale = std::fabs(c) + std::fabs(a) * std::max(std::fabs(x0), std::fabs(x1)) +
-                       std::fabs(b) * std::max(std::fabs(y0), std::fabs(y1));
-  const double slack = scale * 0x1p-21 + 0x1p-122;
-  // A NaN plane value is clamped to 0 (ClampDepthMaxFirst): 0 and 1 are the bounds that stay true.
-  if (op == DepthCompare::kLess) {
-    const double z = lowest - slack;
-    return z > 0 ? std::min(z, 1.0) : 0.0;
-  }
-  const double z = highest + slack;
-  return z < 1 ? std::max(z, 0.0) : 1.0;
-}
 
 template <class Plane>
 bool DepthTiles::Hidden(const PixelRect& bounds, const Plane& depth, int band, int row_begin, int row_end) const {

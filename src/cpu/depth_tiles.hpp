@@ -1,8 +1,8 @@
 // Stage 7's early rejection (a "hierarchical Z"): for each 16x16 tile of the depth buffer, a bound
-// on the farthest depth stored in it, so that a triangle none of whose fragments could be nearer
-// than that bound is skipped in the tile. Both depth tests are strict, so such a triangle would
-// change no pixel there: skipping it is exact, and the image stays lavapipe's. A million cubes
-// drawn front to back hide most of their triangles this way.
+// on the farthest depth stored in it, so that a primitive none of whose fragments could be nearer
+// than that bound is skipped in the tile. Both depth tests are strict, so such a primitive would
+// change no pixel there: skipping it is exact, and the image stays the device's. A million cubes
+// drawn front to back hide most of their triangles this way. It does not rasterize anything.
 // The bounds are refreshed from the depth buffer after each chunk, for the tiles drawn into; in
 // between they are stale, which stays safe because stored depths only ever move nearer.
 #pragma once
@@ -22,9 +22,10 @@ constexpr int kTileSize = kBandRows;
 // A bound on the depth the fragments of a plane can have inside `box` (pixel indices, inclusive),
 // as DepthAt computes them in float: no fragment is nearer than this (for kLess, no smaller; for
 // kGreater, no larger). Evaluated in double at the box's corners, widened by the float rounding of
-// the two fused multiply-adds, then clamped to [0, 1] as the fragments are.
+// DepthAt's operations (two fused multiply-adds, or four separate ones), then clamped to [0, 1] as
+// the fragments are.
 double NearestDepth(const DepthPlane& plane, const PixelRect& box, DepthCompare op);
-// The same for SwiftShader's plane: four roundings, from its anchor, clamped max before min.
+// The same for SwiftShader's plane: its roundings, from its anchor, clamped max before min.
 double NearestDepth(const AnchoredPlane& plane, const PixelRect& box, DepthCompare op);
 
 class DepthTiles {

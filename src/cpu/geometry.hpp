@@ -96,15 +96,16 @@ struct GeometryScratch {
   std::size_t bytes() const;
 };
 
-// Sets up one chunk into scratch.triangles, and, when band_count > 0, bins them into
-// scratch.bins. `clip`: when given, the positions another vertex stage computed (one vector per
-// draw) replace this one's F · (p, 1).
+// Sets up one chunk into the scratch (triangles or lines by lavapipe's rules, outlines by
+// SwiftShader's), and, when band_count > 0, bins them into scratch.bins. `clip`: when given, the
+// positions another vertex stage computed (one vector per draw) replace this one's F · (p, 1).
 // `rules`: the device whose arithmetic to follow.
 void ProcessGeometry(const DrawList& list, const GeometryChunk& chunk, unsigned threads, const RasterRules& rules,
                      GeometryScratch& scratch, const std::vector<std::vector<glm::vec4>>* clip = nullptr,
                      unsigned band_count = 0);
 
-// The whole list as one chunk, for tests that want every triangle at once.
+// The whole list as one chunk, for tests that want every triangle at once (lavapipe's rules: the
+// triangles of SwiftShader's are outlines).
 TriangleChunks ProcessGeometry(const DrawList& list, unsigned threads, const RasterRules& rules = {});
 
 }  // namespace twinraster::cpu

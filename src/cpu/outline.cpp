@@ -56,8 +56,8 @@ Span OutlineSpan(const SnappedPoint* points, int count, bool d, int width, int p
       left = clamped, has_left = true;
     }
   }
-  // A row no edge of one side reaches (only a polygon made concave by snapping can have one) keeps
-  // whatever SwiftShader's buffer held; the twin draws nothing there.
+  // A closed polygon crosses each of its rows as often upwards as downwards, so both ends are set;
+  // the flags only guard a row outside it.
   if (!has_left || !has_right || left >= right) return {};
   return {static_cast<int>(left), static_cast<int>(right)};
 }

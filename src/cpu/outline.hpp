@@ -6,8 +6,11 @@
 // right end, one running downwards its left end, later edges overwriting earlier ones. Pixel px is
 // covered when left <= px < right: the top-left rule at 4 subpixel bits. The winding comes from a
 // float area, so a sliver whose float area has the wrong sign gets its ends swapped and draws
-// nothing, as on SwiftShader. It does not clip or snap (swiftshader_clipping.hpp,
-// snapped_vertex.hpp), and lavapipe's edge functions are triangle_setup.hpp's.
+// nothing, as on SwiftShader. The twin computes each end exactly in 64-bit integers, where
+// SwiftShader steps a 32-bit DDA: the two agree while an edge spans less than 2^27 sixteenths of a
+// pixel, which clipping ensures for every point but one snapped from a NaN (INT32_MIN). It does not clip or snap
+// (swiftshader_clipping.hpp, snapped_vertex.hpp), and lavapipe's edge functions are
+// triangle_setup.hpp's.
 #pragma once
 
 #include "cpu/anchored_plane.hpp"

@@ -74,35 +74,49 @@ AnchoredPlane TriangleDepthPlane(const SnappedVertex& v0, const SnappedVertex& v
   return DepthThrough(OffsetsOf(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y), v0.z, v1.z, v2.z);
 }
 
-AnchoredColourPlanes TriangleColourPlanes(const SnappedVertex& v0, const SnappedVertex& v1, const SnappedVertex& v2,
-                                          const std::array<glm::vec3, 3>& colours) {
-  const Offsets o = OffsetsOf(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y);
+namespace {
+
+// m[k] = (per pixel right, per pixel down, at the anchor) of vertex k's weight: the matrix that
+// turns three vertex values into the plane of value/w.
+using WeightMatrix = std::array<std::array<float, 3>, 3>;
+
+WeightMatrix Weights(const Offsets& o, const SnappedVertex& v0, const SnappedVertex& v1, const SnappedVertex& v2) {
   const float w1 = v1.clip.w, w2 = v2.clip.w, rhw0 = v0.rhw;
   const float x1 = (w1 * kSubpixel) * static_cast<float>(o.x1), y1 = (w1 * kSubpixel) * static_cast<float>(o.y1);
   const float x2 = (w2 * kSubpixel) * static_cast<float>(o.x2), y2 = (w2 * kSubpixel) * static_cast<float>(o.y2);
   const float area = x1 * y2 - x2 * y1;
-  // m[k] = (per pixel right, per pixel down, at the anchor) of vertex k's weight.
-  float m[3][3] = {{0, 0, rhw0}, {0, 0, 0}, {0, 0, 0}};
-  if (area != 0.0f) {
-    const float inverse = 1.0f / area, d = inverse * rhw0;
-    m[0][0] = (y1 * w2 - y2 * w1) * d;
-    m[0][1] = (x2 * w1 - x1 * w2) * d;
-    m[1][0] = y2 * inverse;
-    m[1][1] = -x2 * inverse;
-    m[2][0] = -y1 * inverse;
-    m[2][1] = x1 * inverse;
-  }
-  const auto plane = [&](float i0, float i1, float i2) {
-    return AnchoredPlane{.a = (i0 * m[0][0] + i1 * m[1][0]) + i2 * m[2][0],
-                         .b = (i0 * m[0][1] + i1 * m[1][1]) + i2 * m[2][1],
-                         .c = (i0 * m[0][2] + i1 * m[1][2]) + i2 * m[2][2],
-                         .x0 = o.x0,
-                         .y0 = o.y0};
-  };
+  WeightMatrix m = {{{0, 0, rhw0}, {0, 0, 0}, {0, 0, 0}}};
+  if (area == 0.0f) return m;
+  const float inverse = 1.0f / area, d = inverse * rhw0;
+  m[0][0] = (y1 * w2 - y2 * w1) * d;
+  m[0][1] = (x2 * w1 - x1 * w2) * d;
+  m[1][0] = y2 * inverse;
+  m[1][1] = -x2 * inverse;
+  m[2][0] = -y1 * inverse;
+  m[2][1] = x1 * inverse;
+  return m;
+}
+
+// The plane of values i0, i1, i2 at the three vertices, divided by w.
+AnchoredPlane PlaneOf(const WeightMatrix& m, const Offsets& o, float i0, float i1, float i2) {
+  return {.a = (i0 * m[0][0] + i1 * m[1][0]) + i2 * m[2][0],
+          .b = (i0 * m[0][1] + i1 * m[1][1]) + i2 * m[2][1],
+          .c = (i0 * m[0][2] + i1 * m[1][2]) + i2 * m[2][2],
+          .x0 = o.x0,
+          .y0 = o.y0};
+}
+
+}  // namespace
+
+AnchoredColourPlanes TriangleColourPlanes(const SnappedVertex& v0, const SnappedVertex& v1, const SnappedVertex& v2,
+                                          const std::array<glm::vec3, 3>& colours) {
+  const Offsets o = OffsetsOf(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y);
+  const WeightMatrix m = Weights(o, v0, v1, v2);
   AnchoredColourPlanes p;
-  for (int k = 0; k < 3; ++k)
-    p.colour_oow[static_cast<std::size_t>(k)] = plane(colours[0][k], colours[1][k], colours[2][k]);
-  // The 1/w plane: the weights themselves summed, which is the matrix applied to (1, 1, 1).
+  for (int k = 0; k < 3; ++k) {
+    p.colour_oow[static_cast<std::size_t>(k)] = PlaneOf(m, o, colours[0][k], colours[1][k], colours[2][k]);
+  }
+  // The 1/w plane: the weights summed, the matrix applied to (1, 1, 1), each product exact.
   p.oow = AnchoredPlane{.a = (m[0][0] + m[1][0]) + m[2][0],
                         .b = (m[0][1] + m[1][1]) + m[2][1],
                         .c = (m[0][2] + m[1][2]) + m[2][2],

@@ -120,8 +120,9 @@ TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path) {
                            std::to_string(device.subpixel_bits) + " subpixel bits";
   const std::string known = "the twin copies " + std::string(row.name) + ", driver " + VersionText(row.driver_version) +
                             ", " + std::to_string(row.subpixel_bits) + " subpixel bits, on x86-64 with SSE4.1";
-  if (device.name != row.name || device.driver_version != row.driver_version ||
-      device.subpixel_bits != row.subpixel_bits || path.arch != "x86-64" || !path.cpuid_sse4_1) {
+  if (device.driver_id != kSwiftShaderDriverId || device.name != row.name ||
+      device.driver_version != row.driver_version || device.subpixel_bits != row.subpixel_bits ||
+      path.arch != "x86-64" || !path.cpuid_sse4_1) {
     twin.text = "no bit-exact rules for " + seen + " on " + path.arch + (path.cpuid_sse4_1 ? "" : " without SSE4.1") +
                 ": " + known;
     return twin;

@@ -1,8 +1,8 @@
 // The twin with SwiftShader's rules against the installed SwiftShader (Debian's chromium package):
 // the rules are chosen from what the device reports; every shipped scene and mesh, filled and in
-// wireframe, the million-instance scenes, random, lit and adversarial scenes (subpixel ties,
-// slivers, corners behind the eye, denormal depths) give 0 differing pixels; and each rule that
-// is SwiftShader's alone changes pixels, so a rule left out would show.
+// wireframe, the million cubes, random, lit and adversarial scenes (subpixel ties, slivers, corners
+// behind the eye, NaN w, denormal depths) give 0 differing pixels; and denormals as zero and the
+// rasterizer as a whole are each shown to change pixels, so leaving them out would show.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/twin_rules.hpp"
@@ -18,6 +18,10 @@
 #include "support/test_support.hpp"
 
 #include <glm/vec3.hpp>
+
+#if defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include <filesystem>
 #include <memory>
@@ -136,6 +140,28 @@ DrawList Adversarial(std::uint32_t seed, bool perspective, bool wireframe) {
   } else {
     f[3][2] = 0.25f;
   }
+  list.draws.push_back(DrawCall{0, f});
+  return list;
+}
+
+// Triangles with a corner whose clip w is NaN while x, y and z are finite (w = 1e37 (x + y) + 1
+// overflows to inf - inf): SwiftShader's FINITE bit does not look at w, so clipping meets the NaN.
+// `variant` moves which corners carry it; filled, or in wireframe.
+DrawList NanW(int variant, bool wireframe) {
+  DrawList list;
+  list.width = list.height = 64;
+  list.background = {255, 255, 255};
+  list.wireframe = wireframe;
+  DrawMesh mesh;
+  constexpr float kBig = 30.0f;
+  mesh.positions = {{0.2f, 0.1f, 0.5f}, {kBig, -kBig, 0.5f}, {-0.3f, 0.4f, 0.5f}, {0.5f, -0.5f, 0.5f}};
+  if (variant == 1) mesh.positions[1] = {-kBig, kBig, 0.5f};
+  if (variant == 2) mesh.positions[2] = {kBig, -kBig, 0.3f};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 3, 0}};
+  mesh.colours = {{200, 0, 0}, {0, 200, 0}, {0, 0, 200}};
+  list.meshes.push_back(mesh);
+  glm::mat4 f(1.0f);
+  f[0][3] = 1e37f, f[1][3] = 1e37f;  // w = 1e37 x + 1e37 y + 1
   list.draws.push_back(DrawCall{0, f});
   return list;
 }
@@ -261,7 +287,8 @@ TEST_CASE("SwiftShader: random scenes, filled, in wireframe and lit: GPU image =
 
 TEST_CASE("SwiftShader: adversarial triangles, ties on both grids, slivers, corners at and behind the eye",
           "[twin][swiftshader][random]") {
-  std::uint64_t covered = 0;
+  // Pixels drawn per configuration: each must draw, so that none passes by drawing nothing.
+  std::uint64_t covered[2][2] = {{0, 0}, {0, 0}};
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     for (const bool perspective : {false, true}) {
       for (const bool wireframe : {false, true}) {
@@ -270,15 +297,33 @@ TEST_CASE("SwiftShader: adversarial triangles, ties on both grids, slivers, corn
         INFO("seed " << seed << (perspective ? " perspective" : " flat") << (wireframe ? " wireframe" : " filled")
                      << ": " << Differences(p));
         CHECK(p.comparison.Equal());
-        covered += test::CountNotColour(p.cpu, list.background);
+        covered[perspective][wireframe] += test::CountNotColour(p.cpu, list.background);
       }
     }
   }
-  CHECK(covered > 40 * 4 * 10000);
+  for (const bool perspective : {false, true}) {
+    for (const bool wireframe : {false, true}) {
+      INFO((perspective ? "perspective" : "flat") << (wireframe ? " wireframe" : " filled"));
+      CHECK(covered[perspective][wireframe] > 40 * 20000);
+    }
+  }
+  // A NaN w: filled, SwiftShader draws none of these triangles; in wireframe, the edges between
+  // finite corners. The twin must agree either way.
+  std::uint64_t nan_wireframe = 0;
+  for (int variant = 0; variant < 3; ++variant) {
+    for (const bool wireframe : {false, true}) {
+      const DrawList list = NanW(variant, wireframe);
+      const Pair p = RenderPair(list);
+      INFO("NaN w, variant " << variant << (wireframe ? " wireframe" : " filled") << ": " << Differences(p));
+      CHECK(p.comparison.Equal());
+      if (wireframe) nan_wireframe += test::CountNotColour(p.cpu, list.background);
+    }
+  }
+  CHECK(nan_wireframe > 0);
   RequireNoValidationMessages();
 }
 
-TEST_CASE("SwiftShader: each rule of its own changes pixels, and the device draws as the rule says",
+TEST_CASE("SwiftShader: denormals as zero, and its rasterizer as a whole, change pixels as the device does",
           "[twin][swiftshader][rules]") {
   const cpu::RasterRules rules = Twin().rules;
   // Denormals as zero: the first square's depth 1e-39 is stored as 0, so the second (depth 0) fails.
@@ -289,6 +334,12 @@ TEST_CASE("SwiftShader: each rule of its own changes pixels, and the device draw
   CHECK(CompareImages(gpu, RenderOnCpu(denormal, CpuOptions{.rules = rules})).Equal());
   CHECK_FALSE(CompareImages(gpu, RenderOnCpu(denormal, CpuOptions{.rules = keeps_denormals})).Equal());
   CHECK(test::CountNotColour(gpu, {200, 0, 0}) < test::CountNotColour(gpu, {0, 0, 200}));  // red shows, blue does not
+#if defined(__x86_64__)
+  // The twin sets denormals as zero for its own work only: the caller's MXCSR is as it was.
+  const unsigned mxcsr = _mm_getcsr();
+  RenderOnCpu(denormal, CpuOptions{.threads = 2, .rules = rules});
+  CHECK(_mm_getcsr() == mxcsr);
+#endif
   // SwiftShader's rasterizer against lavapipe's, on scenes of every kind.
   cpu::RasterRules lavapipe = rules;
   lavapipe.rasterizer = cpu::Rasterizer::kLavapipe;
