@@ -84,7 +84,7 @@ struct KnownSwiftShader {
   std::string_view name;  // deviceName: the JIT is in it, and "(LLVM)" rounds differently
   std::uint32_t driver_version;
   std::uint32_t subpixel_bits;  // 4 in Chromium's build (SWIFTSHADER_LEGACY_PRECISION), 8 upstream
-  std::string_view proven_on;
+  std::string_view proven_on;   // the packages whose libvk_swiftshader.so the CI steps ran it against
   RasterRules rules;
   std::string_view proven_by;
 };
