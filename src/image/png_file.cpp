@@ -1,6 +1,7 @@
 #include "image/png_file.hpp"
 
 #include "image/png_bytes.hpp"
+#include "image/png_runs.hpp"
 
 #include <libdeflate.h>
 
@@ -96,6 +97,25 @@ struct CompressorDeleter {
   void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
+// The zlib stream (RFC 1950) of the filtered scanlines: at the fastest level the run encoder
+// (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's level.
+std::vector<std::uint8_t> ZlibStream(const std::vector<std::uint8_t>& raw, int level) {
+  if (level == kPngFastest) {
+    std::vector<std::uint8_t> zlib = {0x78, 0x01};  // deflate, 32 KiB window; no preset dictionary
+    png_runs::Deflate(raw, zlib);
+    const std::uint32_t adler = libdeflate_adler32(1, raw.data(), raw.size());
+    for (int shift = 24; shift >= 0; shift -= 8) zlib.push_back(static_cast<std::uint8_t>(adler >> shift));
+    return zlib;
+  }
+  const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
+  if (!compressor) throw std::bad_alloc();
+  std::vector<std::uint8_t> zlib(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
+  const std::size_t size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
+  if (size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
+  zlib.resize(size);
+  return zlib;
+}
+
 }  // namespace
 
 std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
@@ -107,13 +127,8 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
     throw std::invalid_argument("cannot encode an empty or malformed image as PNG");
   }
   const std::string text_chunks = TextChunks(notes);
-  const std::vector<std::uint8_t> raw = FilteredScanlines(image);
-  const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
-  if (!compressor) throw std::bad_alloc();
-  std::vector<std::uint8_t> zlib(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
-  const std::size_t zlib_size =
-      libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), zlib.data(), zlib.size());
-  if (zlib_size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
+  const std::vector<std::uint8_t> zlib = ZlibStream(FilteredScanlines(image), level);
+  const std::size_t zlib_size = zlib.size();
 
   std::string png(png_format::kSignature);
   png.reserve(8 + 25 + text_chunks.size() + 12 + zlib_size + 12);

@@ -1,5 +1,5 @@
-// PNG files in and out, with optional text notes: written by a small encoder over libdeflate (fast
-// enough for a 1920x1080 frame in a few tens of milliseconds), read by libspng as untrusted input
+// PNG files in and out, with optional text notes: written by a small encoder, over the run encoder
+// (png_runs.hpp) at the default level and libdeflate at the others, read by libspng as untrusted input
 // (png_reader.cpp: checksums, limits, bounded memory), notes read by a chunk walker of our own.
 // Outputs are staged (staged_file.hpp), so a failed run never leaves a truncated PNG or destroys an
 // earlier one. It does not keep a PNG's colour space, gamma or bit depth: pixels come back as 8-bit
@@ -19,8 +19,8 @@
 
 namespace twinraster {
 
-// libdeflate's compression levels: 0 stores the pixels uncompressed, 1 (the default) is the
-// fastest compression, 12 the smallest file. Every level is lossless.
+// Compression levels: 0 stores the pixels uncompressed; 1 (the default), the fastest, is the run
+// encoder (png_runs.hpp); 2 to 12 are libdeflate's, 12 the smallest file. Every level is lossless.
 inline constexpr int kPngFastest = 1;
 inline constexpr int kPngSmallest = 12;
 

@@ -1,14 +1,17 @@
-// PNG output is lossless at every level: encoded images decode (with stb_image, an independent
-// decoder) to the same pixels, and higher levels give smaller files. Text notes round trip, and
+// PNG output is lossless at every level: encoded images decode (with libspng, and the fastest
+// level's also with zlib) to the same pixels, and higher levels give smaller files. Text notes round trip, and
 // reading them survives corrupt, cut-off and hostile files.
 #include "image/png_file.hpp"
 
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 
+#include <zlib.h>
+
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace twinraster;
 
@@ -60,6 +63,61 @@ TEST_CASE("PNG round trip: every level decodes to the same pixels", "[png]") {
       REQUIRE(back.height == image.height);
       REQUIRE(back.rgba == image.rgba);
     }
+  }
+}
+
+namespace {
+
+// The pixels of a PNG written by EncodePng, decoded without libspng: its IDAT chunks inflated by
+// zlib, then each row's filter (None or Up, the two the encoder writes) undone here.
+std::vector<std::uint8_t> InflateByZlib(const std::string& png, std::uint32_t width, std::uint32_t height) {
+  std::string stream;
+  for (std::size_t at = 8; at + 12 <= png.size();) {
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i) length = (length << 8) | static_cast<std::uint8_t>(png[at + std::size_t(i)]);
+    if (png.compare(at + 4, 4, "IDAT") == 0) stream.append(png, at + 8, length);
+    at += 12 + length;
+  }
+  const std::size_t stride = std::size_t{width} * 4;
+  std::vector<std::uint8_t> raw((stride + 1) * height + 1);  // one spare byte: more data would show
+  uLongf size = raw.size();
+  REQUIRE(uncompress(raw.data(), &size, reinterpret_cast<const Bytef*>(stream.data()), stream.size()) == Z_OK);
+  REQUIRE(size == (stride + 1) * height);
+  std::vector<std::uint8_t> pixels(stride * height);
+  for (std::size_t y = 0; y < height; ++y) {
+    const std::uint8_t filter = raw[(stride + 1) * y];
+    REQUIRE((filter == 0 || filter == 2));
+    for (std::size_t i = 0; i < stride; ++i) {
+      const std::uint8_t above = (filter == 2 && y > 0) ? pixels[stride * (y - 1) + i] : 0;
+      pixels[stride * y + i] = static_cast<std::uint8_t>(raw[(stride + 1) * y + 1 + i] + above);
+    }
+  }
+  return pixels;
+}
+
+}  // namespace
+
+TEST_CASE("PNG at the fastest level: zlib and libspng, two decoders of their own, read back every pixel", "[png]") {
+  std::mt19937 random(20261126u);
+  std::vector<Image> images;
+  images.push_back(TestImage(1, 1, 1));
+  images.push_back(TestImage(3, 7, 2));
+  images.push_back(TestImage(1920, 1080, 3));  // large enough to be cut in two blocks
+  Image noise(700, 500);                       // nothing repeats: literals only
+  for (std::uint8_t& b : noise.rgba) b = static_cast<std::uint8_t>(random());
+  images.push_back(noise);
+  Image flat(1200, 900);  // one colour: runs only, across the two blocks' seam
+  for (std::size_t i = 0; i < flat.rgba.size(); ++i) flat.rgba[i] = static_cast<std::uint8_t>(i % 4 == 3 ? 255 : 200);
+  images.push_back(flat);
+  Image stripes(1001, 1000);  // period 4 and period 1 runs, odd width
+  for (std::size_t i = 0; i < stripes.rgba.size(); ++i)
+    stripes.rgba[i] = static_cast<std::uint8_t>((i / 4096) % 2 ? i % 4 * 60 : 77);
+  images.push_back(stripes);
+  for (const Image& image : images) {
+    INFO(image.width << "x" << image.height);
+    const std::string png = EncodePng(image, kPngFastest);
+    CHECK(InflateByZlib(png, image.width, image.height) == image.rgba);
+    CHECK(DecodePng(png, "fast.png").rgba == image.rgba);
   }
 }
 
