@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <exception>
 #include <thread>
 
 namespace twinraster::png_runs {
@@ -286,22 +287,37 @@ void Deflate(std::span<const std::uint8_t> data, std::vector<std::uint8_t>& out)
   const std::size_t half = data.size() >= kSplitBytes ? data.size() / 2 : data.size();
   std::vector<std::uint8_t> second;
   std::size_t second_bits = 0;
+  std::exception_ptr failed;  // an exception may not leave a thread: it is carried over and rethrown
   std::thread helper;
   if (half < data.size()) {
     helper = std::thread([&] {
-      BitWriter bits(second);
-      PutBlock(data, half, data.size(), true, bits);
-      second_bits = bits.BitCount();
-      bits.Finish();
+      try {
+        BitWriter bits(second);
+        PutBlock(data, half, data.size(), true, bits);
+        second_bits = bits.BitCount();
+        bits.Finish();
+      } catch (...) {
+        failed = std::current_exception();
+      }
     });
   }
-  BitWriter bits(out);
-  PutBlock(data, 0, half, half == data.size(), bits);
-  const std::size_t first_bits = bits.BitCount();
-  bits.Finish();
-  if (!helper.joinable()) return;
-  helper.join();
-  AppendBits(out, int(first_bits % 8), second, second_bits);
+  // Joined on every path, an exception here included.
+  const auto join = [&helper] {
+    if (helper.joinable()) helper.join();
+  };
+  std::size_t first_bits = 0;
+  try {
+    BitWriter bits(out);
+    PutBlock(data, 0, half, half == data.size(), bits);
+    first_bits = bits.BitCount();
+    bits.Finish();
+  } catch (...) {
+    join();
+    throw;
+  }
+  join();
+  if (failed) std::rethrow_exception(failed);
+  if (half < data.size()) AppendBits(out, int(first_bits % 8), second, second_bits);
 }
 
 }  // namespace twinraster::png_runs
