@@ -75,14 +75,15 @@ int DistanceCode(int distance) { return distance == 1 ? 0 : 3; }
 
 // How many bytes from p equal those from p - distance, up to `limit`, 8 at a time.
 std::size_t RepeatLength(const std::uint8_t* p, std::size_t distance, std::size_t limit) {
+  const std::uint8_t* before = p - distance;  // n - distance would wrap below zero
   std::size_t n = 0;
   for (; n + 8 <= limit; n += 8) {
     std::uint64_t a, b;
     std::memcpy(&a, p + n, 8);
-    std::memcpy(&b, p + n - distance, 8);
+    std::memcpy(&b, before + n, 8);
     if (a != b) return n + static_cast<std::size_t>(__builtin_ctzll(a ^ b) >> 3);  // little-endian
   }
-  while (n < limit && p[n] == p[n - distance]) ++n;
+  while (n < limit && p[n] == before[n]) ++n;
   return n;
 }
 
