@@ -43,6 +43,19 @@ DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept : data_(std::move(other.d
 
 namespace {
 
+// The depth test at pixel px of a row, then the depth and colour writes where it passes, with
+// every store unconditional (the old value where it fails), so that the rows' loops vectorize.
+[[gnu::always_inline]] inline void TestAndWrite(float* depth, std::uint8_t* rgba, int px, float z, bool greater,
+                                                std::uint32_t word) {
+  const float stored = depth[px];
+  const bool pass = greater ? z > stored : z < stored;  // DepthTest
+  depth[px] = pass ? z : stored;
+  std::uint32_t old;
+  std::memcpy(&old, rgba + 4 * px, 4);
+  const std::uint32_t written = pass ? word : old;
+  std::memcpy(rgba + 4 * px, &written, 4);
+}
+
 // Written so that the compiler can vectorize it (no branches, every store unconditional), once per
 // way of evaluating the depth plane (PlaneDepth, fused or not).
 template <bool kFused>
@@ -53,13 +66,7 @@ template <bool kFused>
     float z = kFused ? std::fma(dzdy, py, std::fma(dzdx, x, a0)) : dzdy * py + (dzdx * x + a0);  // PlaneDepth
     z = z < 1.0f ? z : 1.0f;                                                                     // ClampDepth
     z = z > 0.0f ? z : 0.0f;
-    const float stored = depth[px];
-    const bool pass = greater ? z > stored : z < stored;  // DepthTest
-    depth[px] = pass ? z : stored;
-    std::uint32_t old;
-    std::memcpy(&old, rgba + 4 * px, 4);
-    const std::uint32_t written = pass ? fill : old;
-    std::memcpy(rgba + 4 * px, &written, 4);
+    TestAndWrite(depth, rgba, px, z, greater, fill);
   }
 }
 
@@ -83,13 +90,7 @@ void ShadeAnchoredRow(float* depth, std::uint8_t* rgba, int begin, int end, floa
                       bool greater, std::uint32_t fill) {
   for (int px = begin; px < end; ++px) {
     const float z = ClampDepthMaxFirst(PlaneDepth(plane, static_cast<float>(px), py));
-    const float stored = depth[px];
-    const bool pass = greater ? z > stored : z < stored;  // DepthTest
-    depth[px] = pass ? z : stored;
-    std::uint32_t old;
-    std::memcpy(&old, rgba + 4 * px, 4);
-    const std::uint32_t written = pass ? fill : old;
-    std::memcpy(rgba + 4 * px, &written, 4);
+    TestAndWrite(depth, rgba, px, z, greater, fill);
   }
 }
 
@@ -108,14 +109,7 @@ template <class Plane>
   for (int px = begin; px < end; ++px) {
     const float x = static_cast<float>(px);
     const float z = Clamped(plane, x, py);
-    const float stored = depth[px];
-    const bool pass = greater ? z > stored : z < stored;  // DepthTest
-    depth[px] = pass ? z : stored;
-    const std::uint32_t word = PackUnorm(ColourAt(colour, x, py));
-    std::uint32_t old;
-    std::memcpy(&old, rgba + 4 * px, 4);
-    const std::uint32_t written = pass ? word : old;
-    std::memcpy(rgba + 4 * px, &written, 4);
+    TestAndWrite(depth, rgba, px, z, greater, PackUnorm(ColourAt(colour, x, py)));
   }
 }
 

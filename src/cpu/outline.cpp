@@ -1,18 +1,13 @@
 #include "cpu/outline.hpp"
 
+#include "cpu/floor_division.hpp"
+
 #include <algorithm>
 #include <bit>
 
 namespace twinraster::cpu {
 
 namespace {
-
-// Floor and ceiling of a / b for b > 0.
-std::int64_t FloorDiv(std::int64_t a, std::int64_t b) {
-  const std::int64_t q = a / b;
-  return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-std::int64_t CeilDiv(std::int64_t a, std::int64_t b) { return -FloorDiv(-a, b); }
 
 // ceil(y / 16): the first row whose centre is at or below y.
 std::int64_t FirstRow(std::int32_t y) { return CeilDiv(y, kOutlineOne); }

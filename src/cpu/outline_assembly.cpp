@@ -45,12 +45,18 @@ OutlineSetup* Append(const SnappedPoint* p, int count, bool d, const SnapViewpor
   return &setup;
 }
 
-// Set-up of a filled triangle's coverage; its planes are the caller's to fill.
-OutlineSetup* SetUpTriangle(const OutlineTriangle& v, const SnapViewport& vp, OutlineOutput& out) {
+// Set-up of a filled triangle's coverage and depth plane; `order` is the vertex order the planes
+// were built in (PlaneOrder), for the colour planes of a smooth one.
+OutlineSetup* SetUpTriangle(const OutlineTriangle& v, const SnapViewport& vp, OutlineOutput& out,
+                            std::array<std::size_t, 3>& order) {
   std::array<SnappedPoint, kMaxOutlinePoints> p;
   int count = 0;
   if (!TriangleOutline(v, vp, p, count)) return nullptr;
-  return Append(p.data(), count, OutlineWinding(*v[0], *v[1], *v[2]), vp, out);
+  OutlineSetup* setup = Append(p.data(), count, OutlineWinding(*v[0], *v[1], *v[2]), vp, out);
+  if (setup == nullptr) return nullptr;
+  order = PlaneOrder(v);
+  setup->depth = TriangleDepthPlane(*v[order[0]], *v[order[1]], *v[order[2]]);
+  return setup;
 }
 
 // One wireframe line a -> b: a parallelogram half a pixel either side of the segment, without end
@@ -90,19 +96,16 @@ void AssembleLine(const SnappedVertex& a, const SnappedVertex& b, std::uint32_t 
 
 void AssembleOutlineTriangle(const OutlineTriangle& v, std::uint32_t colour, const SnapViewport& vp,
                              OutlineOutput out) {
-  OutlineSetup* setup = SetUpTriangle(v, vp, out);
-  if (setup == nullptr) return;
-  const std::array<std::size_t, 3> k = PlaneOrder(v);
-  setup->depth = TriangleDepthPlane(*v[k[0]], *v[k[1]], *v[k[2]]);
-  setup->colour = colour;
+  std::array<std::size_t, 3> k;
+  OutlineSetup* setup = SetUpTriangle(v, vp, out, k);
+  if (setup != nullptr) setup->colour = colour;
 }
 
 void AssembleOutlineSmooth(const OutlineTriangle& v, const std::array<glm::vec3, 3>& colours, const SnapViewport& vp,
                            OutlineOutput out) {
-  OutlineSetup* setup = SetUpTriangle(v, vp, out);
+  std::array<std::size_t, 3> k;
+  OutlineSetup* setup = SetUpTriangle(v, vp, out, k);
   if (setup == nullptr) return;
-  const std::array<std::size_t, 3> k = PlaneOrder(v);
-  setup->depth = TriangleDepthPlane(*v[k[0]], *v[k[1]], *v[k[2]]);
   setup->smooth = true;
   setup->colour = static_cast<std::uint32_t>(out.planes.size());
   out.planes.push_back(

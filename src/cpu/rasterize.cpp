@@ -1,19 +1,10 @@
 #include "cpu/rasterize.hpp"
 
+#include "cpu/floor_division.hpp"
+
 #include <cstdint>
 
 namespace twinraster::cpu {
-
-namespace {
-
-// Floor and ceiling of a / b for b > 0.
-std::int64_t FloorDiv(std::int64_t a, std::int64_t b) {
-  const std::int64_t q = a / b;
-  return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-std::int64_t CeilDiv(std::int64_t a, std::int64_t b) { return -FloorDiv(-a, b); }
-
-}  // namespace
 
 Span CoveredSpan(const TriangleSetup& t, int py) {
   const std::array<EdgeFunction, 3> edges = Edges(t);
