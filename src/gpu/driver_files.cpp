@@ -13,6 +13,12 @@ bool LoaderVariablesSet() {
   return false;
 }
 
+// Those, and the loader's filters on the drivers it found.
+bool DriverChoiceSet() {
+  return LoaderVariablesSet() || std::getenv("VK_LOADER_DRIVERS_SELECT") != nullptr ||
+         std::getenv("VK_LOADER_DRIVERS_DISABLE") != nullptr;
+}
+
 std::vector<std::string> InstalledExtraDrivers() {
   std::vector<std::string> files;
   std::error_code error;  // unreadable counts as absent
@@ -34,6 +40,17 @@ ExtraDriverOffer::ExtraDriverOffer(bool wanted) {
 
 ExtraDriverOffer::~ExtraDriverOffer() {
   if (!files_.empty()) unsetenv("VK_ADD_DRIVER_FILES");  // it was unset before: ours alone
+}
+
+LavapipeAlone::LavapipeAlone() {
+  if (DriverChoiceSet()) return;
+  // Matched against the manifest's file name: lvp_icd.x86_64.json, lvp_icd.aarch64.json, ...
+  setenv("VK_LOADER_DRIVERS_SELECT", "*lvp_icd*", 0);
+  active_ = true;
+}
+
+LavapipeAlone::~LavapipeAlone() {
+  if (active_) unsetenv("VK_LOADER_DRIVERS_SELECT");  // it was unset before: ours alone
 }
 
 }  // namespace twinraster::gpu

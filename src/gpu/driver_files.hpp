@@ -1,6 +1,7 @@
-// Offers the Vulkan loader the drivers Debian installs outside its search path (Chromium's
-// SwiftShader), so `--device swiftshader` works without VK_ICD_FILENAMES. It loads no driver,
-// picks no device, and never overrides a loader variable the user set.
+// Which driver files the Vulkan loader reads: Debian's drivers outside its search path (Chromium's
+// SwiftShader) offered when a device is asked by name, so `--device swiftshader` works without
+// VK_ICD_FILENAMES; lavapipe's alone for the default device, so that no other driver is loaded.
+// It loads no driver, picks no device, and never overrides a loader variable the user set.
 #pragma once
 
 #include <array>
@@ -35,6 +36,25 @@ class ExtraDriverOffer {
 
  private:
   std::vector<std::string> files_;
+};
+
+// For its lifetime, when no loader variable that chooses drivers is in the environment, sets
+// VK_LOADER_DRIVERS_SELECT (Vulkan loader 1.3.234 and later; older loaders ignore it) to lavapipe's
+// manifest, and unsets it again when destroyed. The loader loads every driver it may use when an
+// instance is created; each Mesa driver maps and relocates a large library (tens of milliseconds
+// for all of Debian's), and the default device is lavapipe whenever it is installed. The caller
+// falls back to every driver when this finds no usable device.
+class LavapipeAlone {
+ public:
+  LavapipeAlone();
+  ~LavapipeAlone();
+  LavapipeAlone(const LavapipeAlone&) = delete;
+  LavapipeAlone& operator=(const LavapipeAlone&) = delete;
+
+  bool active() const { return active_; }  // false: the user's variables decide, or an outer one is active
+
+ private:
+  bool active_ = false;
 };
 
 }  // namespace twinraster::gpu

@@ -121,10 +121,29 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   // A device asked by name may be one outside the loader's search path; the default goes without
   // (loading SwiftShader's driver costs instance creation time).
   const ExtraDriverOffer offer(!options.device.empty());
-  CreateInstance(options.validation);
-  ChooseDevice(options.device);
+  if (!options.device.empty() || !ChooseLavapipeAlone(options.validation)) {
+    CreateInstance(options.validation);
+    ChooseDevice(options.device);
+  }
   CreateDevice();
   KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
+}
+
+// The default device from an instance with lavapipe's driver alone; false (and no instance) when
+// the user's variables choose the drivers, or lavapipe is missing or unusable.
+bool VulkanContext::ChooseLavapipeAlone(bool validation) {
+  const LavapipeAlone alone;
+  if (!alone.active()) return false;
+  try {
+    CreateInstance(validation);
+    ChooseDevice("");
+    return true;
+  } catch (const GpuUnavailable&) {
+    messenger_ = nullptr;  // before its instance
+    instance_ = nullptr;
+    messages_.clear();  // the loader's complaint that it found no driver: the fallback decides
+    return false;
+  }
 }
 
 void VulkanContext::CreateInstance(bool validation) {

@@ -2,6 +2,7 @@
 
 #include "image/png_bytes.hpp"
 #include "image/png_runs.hpp"
+#include "image/png_scanlines.hpp"
 
 #include <libdeflate.h>
 
@@ -32,27 +33,6 @@ void AppendChunk(std::string& out, const char (&type)[5], const std::uint8_t* da
   out.append(reinterpret_cast<const char*>(data), size);
   const std::uint32_t crc = libdeflate_crc32(0, out.data() + type_at, 4 + size);
   AppendBigEndian(out, crc);
-}
-
-// Every scanline gets the "Up" filter (each byte minus the byte above it). Rendered images are
-// mostly flat runs and straight edges, where Up leaves long runs of zeros for deflate; trying
-// all five filters per row, as stb_image_write does, costs more than it saves at fast levels.
-std::vector<std::uint8_t> FilteredScanlines(const Image& image) {
-  const std::size_t stride = std::size_t{image.width} * 4;
-  std::vector<std::uint8_t> raw((stride + 1) * image.height);
-  for (std::uint32_t y = 0; y < image.height; ++y) {
-    std::uint8_t* out = &raw[(stride + 1) * y];
-    const std::uint8_t* row = image.rgba.data() + stride * y;
-    if (y == 0) {
-      out[0] = 0;  // None: the first row has nothing above it
-      std::memcpy(out + 1, row, stride);
-      continue;
-    }
-    out[0] = 2;  // Up
-    const std::uint8_t* above = row - stride;
-    for (std::size_t i = 0; i < stride; ++i) out[1 + i] = static_cast<std::uint8_t>(row[i] - above[i]);
-  }
-  return raw;
 }
 
 constexpr std::size_t kMaxNotes = 64;
@@ -97,16 +77,12 @@ struct CompressorDeleter {
   void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
-// The zlib stream (RFC 1950) of the filtered scanlines: at the fastest level the run encoder
-// (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's level.
-std::vector<std::uint8_t> ZlibStream(const std::vector<std::uint8_t>& raw, int level) {
-  if (level == kPngFastest) {
-    std::vector<std::uint8_t> zlib = {0x78, 0x01};  // deflate, 32 KiB window; no preset dictionary
-    png_runs::Deflate(raw, zlib);
-    const std::uint32_t adler = libdeflate_adler32(1, raw.data(), raw.size());
-    for (int shift = 24; shift >= 0; shift -= 8) zlib.push_back(static_cast<std::uint8_t>(adler >> shift));
-    return zlib;
-  }
+// The zlib stream (RFC 1950) of the image's filtered scanlines: at the fastest level the run
+// encoder's (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's.
+std::vector<std::uint8_t> ZlibStream(const Image& image, int level) {
+  if (level == kPngFastest) return png_runs::ZlibStream(image);
+  std::vector<std::uint8_t> raw(png_scanlines::RowBytes(image) * image.height);
+  png_scanlines::FilterRows(image, 0, image.height, raw.data());
   const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
   if (!compressor) throw std::bad_alloc();
   std::vector<std::uint8_t> zlib(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
@@ -127,7 +103,7 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
     throw std::invalid_argument("cannot encode an empty or malformed image as PNG");
   }
   const std::string text_chunks = TextChunks(notes);
-  const std::vector<std::uint8_t> zlib = ZlibStream(FilteredScanlines(image), level);
+  const std::vector<std::uint8_t> zlib = ZlibStream(image, level);
   const std::size_t zlib_size = zlib.size();
 
   std::string png(png_format::kSignature);

@@ -1,9 +1,16 @@
 #include "image/png_runs.hpp"
 
+#include "image/png_scanlines.hpp"
+
+#include <libdeflate.h>
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <cstring>
 #include <exception>
+#include <memory>
+#include <span>
 #include <thread>
 
 namespace twinraster::png_runs {
@@ -14,27 +21,30 @@ namespace {
 // least significant bit.
 class BitWriter {
  public:
-  explicit BitWriter(std::vector<std::uint8_t>& out) : out_(out) {}
+  explicit BitWriter(std::vector<std::uint8_t>& out) : out_(out) { out_.resize(4096); }
   void Put(std::uint32_t value, int count) {  // count <= 32
     bits_ |= std::uint64_t{value} << count_;
     count_ += count;
     if (count_ < 32) return;
+    if (at_ + 4 > out_.size()) out_.resize(2 * out_.size());
     const auto word = static_cast<std::uint32_t>(bits_);
-    const std::size_t at = out_.size();
-    out_.resize(at + 4);
-    std::memcpy(out_.data() + at, &word, 4);  // little-endian hosts only (x86-64, aarch64)
+    std::memcpy(out_.data() + at_, &word, 4);  // little-endian hosts only (x86-64, aarch64)
+    at_ += 4;
     bits_ >>= 32;
     count_ -= 32;
   }
-  void Finish() {  // pads the last byte with zeros
-    for (; count_ > 0; count_ -= 8, bits_ >>= 8) out_.push_back(static_cast<std::uint8_t>(bits_));
+  // The bits written so far, before Finish pads them.
+  std::size_t BitCount() const { return at_ * 8 + static_cast<std::size_t>(count_); }
+  void Finish() {  // pads the last byte with zeros, and cuts `out` to what was written
+    out_.resize(at_ + 8);
+    for (; count_ > 0; count_ -= 8, bits_ >>= 8) out_[at_++] = static_cast<std::uint8_t>(bits_);
+    out_.resize(at_);
     count_ = 0;
   }
-  // The bits written so far, before Finish pads them.
-  std::size_t BitCount() const { return out_.size() * 8 + static_cast<std::size_t>(count_); }
 
  private:
-  std::vector<std::uint8_t>& out_;
+  std::vector<std::uint8_t>& out_;  // written up to at_; its size is the room there is
+  std::size_t at_ = 0;
   std::uint64_t bits_ = 0;
   int count_ = 0;
 };
@@ -87,12 +97,30 @@ std::size_t RepeatLength(const std::uint8_t* p, std::size_t distance, std::size_
   return n;
 }
 
-// Greedy: at each byte of data[begin, end), the longer repeat of the byte before or the pixel
-// before (which may lie before `begin`: a block may look back into the one before it), if 3 or more.
-void Tokenize(std::span<const std::uint8_t> data, std::size_t begin, std::size_t end, std::vector<Token>& tokens) {
-  tokens.clear();
-  for (std::size_t i = begin; i < end;) {
-    const std::size_t limit = std::min<std::size_t>(kMaxMatch, end - i);
+// Whether neither the byte before p nor the pixel before it starts a repeat of kMinMatch (3)
+// bytes at p: one 4-byte compare each, which decides most literals of a detailed frame at once.
+// Needs 4 bytes before p and 4 from it.
+bool NoRepeatAt(const std::uint8_t* p) {
+  std::uint32_t here, byte_before, pixel_before;
+  std::memcpy(&here, p, 4);
+  std::memcpy(&byte_before, p - 1, 4);
+  std::memcpy(&pixel_before, p - 4, 4);
+  constexpr std::uint32_t kFirstThree = 0x00ffffff;  // little-endian: the bytes at p, p+1, p+2
+  return ((here ^ byte_before) & kFirstThree) != 0 && ((here ^ pixel_before) & kFirstThree) != 0;
+}
+
+// Greedy: at each byte of `data`, the longer repeat of the byte before or the pixel before, if 3
+// or more. It never looks before `data`, so that the halves of a frame can be filtered and
+// encoded at once. `tokens` has room for one per byte; returns how many were written.
+std::size_t Tokenize(std::span<const std::uint8_t> data, Token* tokens) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < data.size();) {
+    if (i >= 4 && i + 4 <= data.size() && NoRepeatAt(data.data() + i)) {
+      tokens[count++] = {0, data[i]};
+      ++i;
+      continue;
+    }
+    const std::size_t limit = std::min<std::size_t>(kMaxMatch, data.size() - i);
     std::size_t best = 0, distance = 0;
     for (const std::size_t d : {std::size_t{1}, std::size_t{4}}) {
       if (i < d || best == limit) continue;
@@ -100,13 +128,14 @@ void Tokenize(std::span<const std::uint8_t> data, std::size_t begin, std::size_t
       if (n > best) best = n, distance = d;
     }
     if (best >= kMinMatch) {
-      tokens.push_back({static_cast<std::uint16_t>(best), static_cast<std::uint16_t>(distance)});
+      tokens[count++] = {static_cast<std::uint16_t>(best), static_cast<std::uint16_t>(distance)};
       i += best;
     } else {
-      tokens.push_back({0, data[i]});
+      tokens[count++] = {0, data[i]};
       ++i;
     }
   }
+  return count;
 }
 
 // Huffman code lengths for `frequency`, none longer than `limit`; unused symbols get 0. One used
@@ -234,10 +263,11 @@ void PutHeader(const Code& literals, const Code& distances, BitWriter& bits) {
   }
 }
 
-// One block for data[begin, end) into `bits`, with its own Huffman codes.
-void PutBlock(std::span<const std::uint8_t> data, std::size_t begin, std::size_t end, bool final, BitWriter& bits) {
-  thread_local std::vector<Token> tokens;  // reused: fresh memory costs a page fault per 4 KiB
-  Tokenize(data, begin, end, tokens);
+// One block for all of `data` into `bits`, with its own Huffman codes.
+void PutBlock(std::span<const std::uint8_t> data, bool final, BitWriter& bits) {
+  // Room for the most tokens there can be, not initialized: only what is written is touched.
+  const std::unique_ptr<Token[]> storage(new Token[data.size()]);
+  const std::span<const Token> tokens(storage.get(), Tokenize(data, storage.get()));
   std::vector<std::uint32_t> literal_frequency(kLiteralCodes, 0), distance_frequency(kDistanceCodes, 0);
   for (const Token& t : tokens) {
     if (t.length == 0) {
@@ -279,46 +309,79 @@ void AppendBits(std::vector<std::uint8_t>& out, int used, const std::vector<std:
   }
 }
 
-// Below this a second thread costs more than it saves.
+// Rows of a frame filtered, summed and deflated as one block.
+struct Block {
+  std::vector<std::uint8_t> bytes;  // the block, its last byte padded
+  std::size_t bits = 0;             // its length in bits, before the padding
+  std::uint32_t adler = 1;          // Adler-32 of the filtered rows
+  std::size_t size = 0;             // filtered bytes
+};
+
+// Rows [first, last) of `image` filtered into `raw`, then encoded; `final` marks the last block.
+Block EncodeRows(const Image& image, std::uint32_t first, std::uint32_t last, std::uint8_t* raw, bool final) {
+  png_scanlines::FilterRows(image, first, last, raw);
+  Block block;
+  block.size = png_scanlines::RowBytes(image) * (last - first);
+  block.adler = libdeflate_adler32(1, raw, block.size);
+  BitWriter bits(block.bytes);
+  PutBlock({raw, block.size}, final, bits);
+  block.bits = bits.BitCount();
+  bits.Finish();
+  return block;
+}
+
+// Runs `second` on a helper thread while `first` runs here. An exception may not leave a thread:
+// the helper's is carried over and rethrown after the join, which happens on every path.
+template <typename First, typename Second>
+void OnTwoThreads(First first, Second second) {
+  std::exception_ptr failed;
+  std::thread helper([&] {
+    try {
+      second();
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  });
+  try {
+    first();
+  } catch (...) {
+    helper.join();
+    throw;
+  }
+  helper.join();
+  if (failed) std::rethrow_exception(failed);
+}
+
+// Below this many filtered bytes a second thread costs more than it saves.
 constexpr std::size_t kSplitBytes = std::size_t{1} << 20;
 
 }  // namespace
 
-void Deflate(std::span<const std::uint8_t> data, std::vector<std::uint8_t>& out) {
-  const std::size_t half = data.size() >= kSplitBytes ? data.size() / 2 : data.size();
-  std::vector<std::uint8_t> second;
-  std::size_t second_bits = 0;
-  std::exception_ptr failed;  // an exception may not leave a thread: it is carried over and rethrown
-  std::thread helper;
-  if (half < data.size()) {
-    helper = std::thread([&] {
-      try {
-        BitWriter bits(second);
-        PutBlock(data, half, data.size(), true, bits);
-        second_bits = bits.BitCount();
-        bits.Finish();
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
+std::vector<std::uint8_t> ZlibStream(const Image& image) {
+  const std::size_t row_bytes = png_scanlines::RowBytes(image);
+  // Not value-initialized: each thread's first touch of its half is its own page faults.
+  const std::unique_ptr<std::uint8_t[]> raw(new std::uint8_t[row_bytes * image.height]);
+  const bool split = row_bytes * image.height >= kSplitBytes && image.height >= 2;
+  const std::uint32_t middle = split ? image.height / 2 : image.height;
+  Block top, bottom;
+  if (split) {
+    OnTwoThreads([&] { top = EncodeRows(image, 0, middle, raw.get(), false); },
+                 [&] { bottom = EncodeRows(image, middle, image.height, raw.get() + row_bytes * middle, true); });
+  } else {
+    top = EncodeRows(image, 0, image.height, raw.get(), true);
   }
-  // Joined on every path, an exception here included.
-  const auto join = [&helper] {
-    if (helper.joinable()) helper.join();
-  };
-  std::size_t first_bits = 0;
-  try {
-    BitWriter bits(out);
-    PutBlock(data, 0, half, half == data.size(), bits);
-    first_bits = bits.BitCount();
-    bits.Finish();
-  } catch (...) {
-    join();
-    throw;
+  std::vector<std::uint8_t> zlib;
+  zlib.reserve(2 + (top.bits + bottom.bits) / 8 + 2 + 4);
+  zlib.push_back(0x78);  // deflate, 32 KiB window
+  zlib.push_back(0x01);  // no preset dictionary; the header's check bits
+  AppendBits(zlib, 0, top.bytes, top.bits);
+  std::uint32_t adler = top.adler;
+  if (split) {
+    AppendBits(zlib, int(top.bits % 8), bottom.bytes, bottom.bits);
+    adler = static_cast<std::uint32_t>(adler32_combine(adler, bottom.adler, static_cast<z_off_t>(bottom.size)));
   }
-  join();
-  if (failed) std::rethrow_exception(failed);
-  if (half < data.size()) AppendBits(out, int(first_bits % 8), second, second_bits);
+  for (int shift = 24; shift >= 0; shift -= 8) zlib.push_back(static_cast<std::uint8_t>(adler >> shift));
+  return zlib;
 }
 
 }  // namespace twinraster::png_runs

@@ -1,10 +1,12 @@
 // The renderer's contract beyond pixels: device choice, sizes, malformed input, empty input,
 // moves, timings, determinism and LP_NUM_THREADS.
+#include "gpu/driver_files.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "gpu_test_support.hpp"
 #include "support/catch.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 
 using namespace twinraster;
@@ -47,6 +49,35 @@ TEST_CASE("Without options the renderer picks lavapipe, and a name picks a devic
   CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "no such device"}), GpuUnavailable);
   CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "no such device"}),
                     HasSubstring("no such device") && HasSubstring("llvmpipe"));
+}
+
+TEST_CASE("The default device loads lavapipe's driver alone, unless the user's loader variables choose", "[gpu]") {
+  const auto select = [] {
+    const char* value = std::getenv("VK_LOADER_DRIVERS_SELECT");
+    return value ? std::string(value) : std::string("(unset)");
+  };
+  SECTION("nothing set: lavapipe's manifest alone, for the guard's lifetime") {
+    {
+      const gpu::LavapipeAlone alone;
+      CHECK(alone.active());
+      CHECK(select() == "*lvp_icd*");
+    }
+    CHECK(select() == "(unset)");
+    CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
+  }
+  SECTION("the user's choice stands") {
+    for (const char* variable : {"VK_LOADER_DRIVERS_SELECT", "VK_LOADER_DRIVERS_DISABLE", "VK_ICD_FILENAMES",
+                                 "VK_DRIVER_FILES", "VK_ADD_DRIVER_FILES"}) {
+      INFO(variable);
+      const ScopedEnv user(variable, "*lvp_icd*");
+      const gpu::LavapipeAlone alone;
+      CHECK_FALSE(alone.active());
+      CHECK(select() == (std::string(variable) == "VK_LOADER_DRIVERS_SELECT" ? "*lvp_icd*" : "(unset)"));
+    }
+  }
+  SECTION("a device asked by name still finds the others") {
+    CHECK_THAT(GpuRenderer(GpuOptions{.device = "swiftshader"}).DeviceName(), HasSubstring("SwiftShader"));
+  }
 }
 
 TEST_CASE("GpuUnavailable says what to install", "[gpu][errors]") {
