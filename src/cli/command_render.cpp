@@ -2,6 +2,7 @@
 // draws, the comparison, the judgement, the verdict), writes its PNGs (staged: all of a scene's or
 // none, or one PNG to standard output), prints its record, and writes the batch's page and JUnit
 // file. Several scenes share one GPU process and write into one directory.
+#include "base/serial_queue.hpp"
 #include "base/stopwatch.hpp"
 #include "base/usage_error.hpp"
 #include "book/book_renderer.hpp"
@@ -172,43 +173,54 @@ std::vector<StagedFile> StageImages(run::RunResult& result, const RenderArgument
   return staged;
 }
 
-// One scene, from reading it to its files and its record (which render prints, and the page and
-// JUnit file read). `directory`: where several scenes' files go.
-run::RunRecord RenderScene(const RenderArguments& a, const std::string& scene_argument,
-                           const std::optional<std::string>& directory, run::GpuSession& gpu, Progress& progress) {
+// A scene read and drawn, its files not yet written.
+struct DrawnScene {
+  run::RunResult result;
+  std::string out;  // its PNG (or the stem of its PNGs), or - for standard output
+  Stopwatch clock;  // since the scene began to be read
+};
+
+// Reads one scene and runs it: everything is drawn before anything is written, so that a run that
+// fails writes no file at all. `directory`: where several scenes' files go.
+DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument,
+                     const std::optional<std::string>& directory, run::GpuSession& gpu, Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
-  Stopwatch total_clock;
+  DrawnScene drawn;
   const std::string source = IsStandardStream(scene_argument) ? "<stdin>" : scene_argument;
   Scene scene = LoadSceneArgument(scene_argument);
-  const double load_ms = total_clock.Milliseconds();
+  const double load_ms = drawn.clock.Milliseconds();
   if (a.wireframe) scene.wireframe = true;
-  const std::string out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
-                                    : a.output.value_or(scene.name + ".png");
-  // Everything is drawn before anything is written: a run that fails writes no file at all.
-  run::RunResult result;
+  drawn.out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
+                        : a.output.value_or(scene.name + ".png");
   try {
-    result = run::RunScene(scene, source, RunOptionsOf(a, IsStandardStream(out)), gpu,
-                           [&](std::string_view text) { progress.Status(text); });
+    drawn.result = run::RunScene(scene, source, RunOptionsOf(a, IsStandardStream(drawn.out)), gpu,
+                                 [&](std::string_view text) { progress.Status(text); });
   } catch (const book::BookRulesError& e) {
     // A problem with the scene, like the loader's, so that several scenes go on.
     throw SceneError(source, e.where(), "--rules book: " + e.problem());
   }
-  result.record.scene = scene_argument;
-  result.record.load_ms = load_ms;
+  drawn.result.record.scene = scene_argument;
+  drawn.result.record.load_ms = load_ms;
+  return drawn;
+}
 
+// Writes a drawn scene's files and returns its record (which render prints, and the page and JUnit
+// file read).
+run::RunRecord WriteScene(const RenderArguments& a, DrawnScene& drawn, Progress& progress) {
+  run::RunResult& result = drawn.result;
   progress.Status(result.record.backends.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
   std::string png_bytes;  // for -o -
-  for (StagedFile& file : StageImages(result, a, out, png_bytes)) file.Commit();
+  for (StagedFile& file : StageImages(result, a, drawn.out, png_bytes)) file.Commit();
   // A diff left by an earlier run would now describe images that no longer exist.
   std::error_code ignored;
-  const std::string old_diff = Suffixed(out, "diff");
-  if (!IsStandardStream(out) && !result.diff && result.record.comparison &&
+  const std::string old_diff = Suffixed(drawn.out, "diff");
+  if (!IsStandardStream(drawn.out) && !result.diff && result.record.comparison &&
       std::filesystem::is_regular_file(old_diff, ignored)) {
     std::filesystem::remove(old_diff, ignored);
   }
   progress.Clear();
   if (!png_bytes.empty()) WriteStandardOutput(png_bytes);
-  result.record.total_ms = total_clock.Milliseconds();
+  result.record.total_ms = drawn.clock.Milliseconds();
   return std::move(result.record);
 }
 
@@ -236,6 +248,75 @@ void WriteBatchReports(const RenderArguments& a, const std::vector<run::RunRecor
   for (StagedFile& file : staged) file.Commit();
 }
 
+// Whether a scene's failure is its own (bad input, an output that cannot be written), which a batch
+// reports and goes on from, rather than the run's.
+bool SceneOwnError(const std::exception& e) {
+  return dynamic_cast<const SceneError*>(&e) || dynamic_cast<const FileError*>(&e);
+}
+
+// What a batch keeps of its scenes: the records for the page and JUnit file, and the worst exit.
+struct BatchTally {
+  std::vector<run::RunRecord> records;
+  int worst = kExitOk;
+  void Add(const RenderArguments& a, run::RunRecord record) {
+    worst = WorseExit(worst, ExitCodeOf(record.verdict));
+    if (a.report || a.junit) records.push_back(std::move(record));
+  }
+};
+
+// The record of a scene that failed on its own, said on standard error.
+run::RunRecord FailedScene(const std::string& scene, const std::exception& e, Progress& progress) {
+  progress.Above([&] { std::cerr << "twinraster: " << e.what() << "\n"; });
+  return run::ErrorRecord(scene, e.what());
+}
+
+// One scene at a time: read, draw, write, print. One scene's bad input is the run's error (exit 2,
+// nothing written), unless a report or JUnit file is asked for, which then records it.
+void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& progress, BatchTally& tally) {
+  const bool keep_going = a.report || a.junit;
+  for (const std::string& scene : a.scenes) {
+    try {
+      DrawnScene drawn = DrawScene(a, scene, std::nullopt, gpu, progress);
+      run::RunRecord record = WriteScene(a, drawn, progress);
+      PrintRecord(a, record, false);
+      tally.Add(a, std::move(record));
+    } catch (const std::exception& e) {
+      if (!SceneOwnError(e) || !keep_going) throw;
+      tally.Add(a, FailedScene(scene, e, progress));
+    }
+  }
+}
+
+// Several scenes, each on its own: a bad scene or an unwritable output is reported and the others
+// still render. Each scene's files are written and its record printed on a thread of its own, in
+// order, while the next scene draws: the PNGs and the file system's waits take the other core.
+void RenderBatch(const RenderArguments& a, const std::string& directory, run::GpuSession& gpu, Progress& progress,
+                 BatchTally& tally) {
+  SerialQueue writer(2);  // drawn scenes waiting: each holds its images
+  for (const std::string& scene : a.scenes) {
+    try {
+      auto drawn = std::make_shared<DrawnScene>(DrawScene(a, scene, directory, gpu, progress));
+      writer.Push([&a, &progress, &tally, scene, drawn] {
+        try {
+          run::RunRecord record = WriteScene(a, *drawn, progress);
+          progress.Above([&] { PrintRecord(a, record, true); });
+          tally.Add(a, std::move(record));
+        } catch (const std::exception& e) {
+          if (!SceneOwnError(e)) throw;
+          tally.Add(a, FailedScene(scene, e, progress));
+        }
+      });
+    } catch (const std::exception& e) {
+      if (!SceneOwnError(e)) throw;  // the queue's scenes are still written first
+      const std::string what = e.what();
+      writer.Push([&progress, &tally, &a, scene, what] {
+        tally.Add(a, FailedScene(scene, std::runtime_error(what), progress));
+      });
+    }
+  }
+  writer.Finish();
+}
+
 int Render(RenderArguments& a) {
   ResolveOptions(a);
   CheckOutput(a);
@@ -245,34 +326,19 @@ int Render(RenderArguments& a) {
   isolation.timeout_seconds = a.timeout_seconds;
   run::GpuSession gpu(isolation);  // a child process, made for the first GPU draw and kept
   const bool several = a.scenes.size() > 1;
-  const std::optional<std::string> directory = several ? std::optional(a.output.value_or(".")) : std::nullopt;
-  if (directory) MakeDirectory(*directory);
+  const std::string directory = several ? a.output.value_or(".") : "";
+  if (several) MakeDirectory(directory);
   if (a.report) MakeDirectory((std::filesystem::path(*a.report) / "thumbs").string());  // and DIR with it
-  // One scene's bad input is the run's error (exit 2, nothing written), unless a report or JUnit
-  // file is asked for, which then records it. Several scenes: each on its own; a bad scene, an
-  // unwritable output or a crashed GPU process is reported and the others still render; the exit
-  // code is the worst of them. No Vulkan device ends the run (exit 3).
-  const bool keep_going = several || a.report || a.junit;
+  // The exit code is the worst of the scenes'. No Vulkan device ends the run (exit 3).
   Stopwatch batch_clock;
-  std::vector<run::RunRecord> records;
-  int worst = kExitOk;
-  for (const std::string& scene : a.scenes) {
-    run::RunRecord record;
-    try {
-      record = RenderScene(a, scene, directory, gpu, progress);
-      PrintRecord(a, record, several);
-    } catch (const std::exception& e) {
-      const bool expected = dynamic_cast<const SceneError*>(&e) || dynamic_cast<const FileError*>(&e);
-      if (!expected || !keep_going) throw;
-      progress.Clear();
-      std::cerr << "twinraster: " << e.what() << "\n";
-      record = run::ErrorRecord(scene, e.what());
-    }
-    worst = WorseExit(worst, ExitCodeOf(record.verdict));
-    if (a.report || a.junit) records.push_back(std::move(record));
+  BatchTally tally;
+  if (several) {
+    RenderBatch(a, directory, gpu, progress, tally);
+  } else {
+    RenderInTurn(a, gpu, progress, tally);
   }
-  WriteBatchReports(a, records, batch_clock.Milliseconds());
-  return worst;
+  WriteBatchReports(a, tally.records, batch_clock.Milliseconds());
+  return tally.worst;
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ Progress::~Progress() { Clear(); }
 
 void Progress::Status(std::string_view text) {
   if (!out_) return;
+  const std::lock_guard lock(mutex_);
   // A line longer than the terminal would wrap, and erasing clears only its last row.
   constexpr std::size_t kWidth = 72;
   *out_ << kEraseLine << (text.size() > kWidth ? std::string(text.substr(0, kWidth - 3)) + "..." : std::string(text))
@@ -32,11 +33,23 @@ void Progress::Status(std::string_view text) {
 
 void Progress::Line(std::string_view text) {
   if (!out_) return;
-  Clear();
+  const std::lock_guard lock(mutex_);
+  ClearLocked();
   *out_ << text << "\n" << std::flush;
 }
 
 void Progress::Clear() {
+  const std::lock_guard lock(mutex_);
+  ClearLocked();
+}
+
+void Progress::Above(const std::function<void()>& write) {
+  const std::lock_guard lock(mutex_);
+  ClearLocked();
+  write();
+}
+
+void Progress::ClearLocked() {
   if (!out_ || !status_showing_) return;
   *out_ << kEraseLine << std::flush;
   status_showing_ = false;

@@ -1,10 +1,13 @@
 // Progress on standard error for work that takes a while (a large render's stages, bench rows):
 // shown only when standard error is a terminal and --quiet is not given, so that pipes, files,
-// standard output and --json never see any of it.
+// standard output and --json never see any of it. Safe to call from several threads: a batch draws
+// one scene while it writes another.
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <iosfwd>
+#include <mutex>
 #include <string>
 #include <string_view>
 
@@ -27,10 +30,16 @@ class Progress {
   // A line that stays: one per finished bench row.
   void Line(std::string_view text);
   void Clear();  // erases the status line now
+  // Erases the status line and runs `write` (which prints lines that stay), with no status shown
+  // meanwhile.
+  void Above(const std::function<void()>& write);
 
  private:
+  void ClearLocked();
+
   std::ostream* out_;
   bool status_showing_ = false;
+  std::mutex mutex_;
 };
 
 }  // namespace twinraster

@@ -124,15 +124,30 @@ void ClearFrame(cpu::Framebuffer& fb, unsigned threads, std::uint32_t height, st
   });
 }
 
+// Left to choose (threads 0), the twin draws a small frame with few triangles on one thread:
+// handing parts to another costs more than that thread's share, and in a batch the other core is
+// busy with the GPU process or the last scene's files. Any count gives the same image.
+constexpr std::uint64_t kOneThreadPixels = 256 * 256;
+constexpr std::uint64_t kOneThreadTriangles = 4096;
+
+unsigned ThreadsFor(const DrawList& list, unsigned requested, unsigned bands) {
+  if (requested == 0 && std::uint64_t{list.width} * list.height <= kOneThreadPixels) {
+    std::uint64_t triangles = 0;
+    for (const DrawCall& draw : list.draws) triangles += list.meshes[draw.mesh].triangles.size();
+    if (triangles <= kOneThreadTriangles) return 1;
+  }
+  // More parts than bands would leave threads idle.
+  return std::min(cpu::ResolveThreadCount(requested), bands);
+}
+
 // The pipeline after validation; `clip` replaces the vertex stage when given. The list streams
 // through in chunks (geometry.hpp): each chunk is set up by all threads, then rasterized by all
 // threads, each over its own bands, before the next chunk is set up, so memory stays bounded.
 // Every band sees every triangle in list order whatever the chunking and the thread count.
 Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& options, CpuTimings* timings) {
   using namespace cpu;
-  // More parts than bands would leave threads idle; the image does not depend on this number.
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
-  const unsigned threads = std::min(ResolveThreadCount(options.threads), bands);
+  const unsigned threads = ThreadsFor(list, options.threads, bands);
   // Kept per calling thread from one render to the next (see GeometryScratch). Used through a
   // reference: in a lambda run by a pool worker, the name itself would mean the worker's own.
   thread_local GeometryScratch per_thread_scratch;

@@ -13,7 +13,8 @@
 
 namespace twinraster {
 
-// threads: 0 = std::thread::hardware_concurrency(). The image is identical for any thread count.
+// threads: 0 = std::thread::hardware_concurrency(), or one for a frame of at most 256x256 pixels
+// and 4096 triangles. The image is identical for any thread count.
 struct CpuOptions {
   unsigned threads = 0;
   // Triangles (and vertices) set up per chunk; 0: the default (geometry.hpp's ChunkBudget). The

@@ -1,7 +1,9 @@
 #include "gpu/driver_files.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 
 namespace twinraster::gpu {
 namespace {
@@ -28,6 +30,41 @@ std::vector<std::string> InstalledExtraDrivers() {
   return files;
 }
 
+// The name Mesa gives lavapipe's manifest on this architecture (its meson.build: the host CPU
+// family, as uname -m says it).
+constexpr std::string_view kLavapipeManifest =
+#if defined(__x86_64__)
+    "lvp_icd.x86_64.json";
+#elif defined(__aarch64__)
+    "lvp_icd.aarch64.json";
+#else
+    "";  // not guessed: every driver is loaded
+#endif
+
+// The loader's system search path for drivers (its docs, "Linux Driver Discovery"): /etc, then
+// each XDG data directory, under vulkan/icd.d.
+std::vector<std::filesystem::path> DriverDirectories() {
+  std::vector<std::filesystem::path> directories = {"/etc/vulkan/icd.d"};
+  const char* xdg = std::getenv("XDG_DATA_DIRS");
+  const std::string data = xdg && *xdg ? xdg : "/usr/local/share:/usr/share";
+  for (std::size_t begin = 0; begin <= data.size();) {
+    const std::size_t end = std::min(data.find(':', begin), data.size());
+    if (end > begin) directories.push_back(std::filesystem::path(data.substr(begin, end - begin)) / "vulkan/icd.d");
+    begin = end + 1;
+  }
+  return directories;
+}
+
+std::string InstalledLavapipeManifest() {
+  if (kLavapipeManifest.empty()) return "";
+  std::error_code error;  // unreadable counts as absent
+  for (const std::filesystem::path& directory : DriverDirectories()) {
+    const std::filesystem::path file = directory / kLavapipeManifest;
+    if (std::filesystem::exists(file, error)) return file.string();
+  }
+  return "";
+}
+
 }  // namespace
 
 ExtraDriverOffer::ExtraDriverOffer(bool wanted) {
@@ -44,13 +81,12 @@ ExtraDriverOffer::~ExtraDriverOffer() {
 
 LavapipeAlone::LavapipeAlone() {
   if (DriverChoiceSet()) return;
-  // Matched against the manifest's file name: lvp_icd.x86_64.json, lvp_icd.aarch64.json, ...
-  setenv("VK_LOADER_DRIVERS_SELECT", "*lvp_icd*", 0);
-  active_ = true;
+  manifest_ = InstalledLavapipeManifest();
+  if (!manifest_.empty()) setenv("VK_DRIVER_FILES", manifest_.c_str(), 0);
 }
 
 LavapipeAlone::~LavapipeAlone() {
-  if (active_) unsetenv("VK_LOADER_DRIVERS_SELECT");  // it was unset before: ours alone
+  if (!manifest_.empty()) unsetenv("VK_DRIVER_FILES");  // it was unset before: ours alone
 }
 
 }  // namespace twinraster::gpu

@@ -38,12 +38,14 @@ class ExtraDriverOffer {
   std::vector<std::string> files_;
 };
 
-// For its lifetime, when no loader variable that chooses drivers is in the environment, sets
-// VK_LOADER_DRIVERS_SELECT (Vulkan loader 1.3.234 and later; older loaders ignore it) to lavapipe's
-// manifest, and unsets it again when destroyed. The loader loads every driver it may use when an
-// instance is created; each Mesa driver maps and relocates a large library (tens of milliseconds
-// for all of Debian's), and the default device is lavapipe whenever it is installed. The caller
-// falls back to every driver when this finds no usable device.
+// For its lifetime, when no loader variable that chooses drivers is in the environment and
+// lavapipe's manifest for this machine's architecture is installed, sets VK_DRIVER_FILES to that
+// manifest alone, and unsets it again when destroyed. The loader loads every driver it finds when
+// an instance is created; each Mesa driver maps and relocates a large library (tens of
+// milliseconds for all of Debian's), and the default device is lavapipe whenever it is
+// installed. (VK_LOADER_DRIVERS_SELECT would filter too, but the loader then warns through the
+// validation messenger about every driver it leaves out.) The caller falls back to every driver
+// when this finds no usable device.
 class LavapipeAlone {
  public:
   LavapipeAlone();
@@ -51,10 +53,11 @@ class LavapipeAlone {
   LavapipeAlone(const LavapipeAlone&) = delete;
   LavapipeAlone& operator=(const LavapipeAlone&) = delete;
 
-  bool active() const { return active_; }  // false: the user's variables decide, or an outer one is active
+  // The manifest offered; empty when the user's variables decide, or none is installed.
+  const std::string& manifest() const { return manifest_; }
 
  private:
-  bool active_ = false;
+  std::string manifest_;
 };
 
 }  // namespace twinraster::gpu

@@ -233,15 +233,29 @@ GpuProcess::GpuProcess(IsolationOptions options) : options_(std::move(options)) 
 GpuProcess::~GpuProcess() = default;
 
 IsolatedGpuResult GpuProcess::Render(const DrawList& list) {
-  IsolatedGpuResult result;
+  Submit(list);
+  return Collect();
+}
+
+void GpuProcess::Submit(const DrawList& list) {
+  if (pending_) throw std::logic_error("GpuProcess::Submit: the last list was not collected");
   Stopwatch clock;
   Hand(list);
-  // Faulted in now, while the child works, rather than after.
-  Image image(list.width, list.height);
+  pending_ = Pending{clock, clock.Milliseconds(), list.width, list.height};
+}
 
+IsolatedGpuResult GpuProcess::Collect() {
+  if (!pending_) throw std::logic_error("GpuProcess::Collect: no list was submitted");
+  const Pending pending = *pending_;
+  pending_.reset();
+  const double away_ms = pending.clock.Milliseconds() - pending.submit_ms;  // this process's own work
+  const Stopwatch collect_clock;
+  IsolatedGpuResult result;
+  // Faulted in now, while the child works, rather than after.
+  Image image(pending.width, pending.height);
   std::optional<double> deadline;
-  if (options_.timeout_seconds > 0) deadline = clock.Milliseconds() + options_.timeout_seconds * 1000.0;
-  SocketReader reader(child_->fd, deadline, clock);
+  if (options_.timeout_seconds > 0) deadline = pending.clock.Milliseconds() + options_.timeout_seconds * 1000.0;
+  SocketReader reader(child_->fd, deadline, pending.clock);
   const Answer answer = Await(reader, device_, image, result);
   result.device = device_;
   if (answer.status != gpu::ReadStatus::kOk) {
@@ -251,7 +265,9 @@ IsolatedGpuResult GpuProcess::Render(const DrawList& list) {
   if (!answer.child_goes_on) child_.reset();
   if (result.outcome == GpuOutcome::kRendered) {
     result.image = std::move(image);
-    result.isolation_ms = std::max(0.0, clock.Milliseconds() - result.device_ms - answer.work_ms);
+    // The wait for what the child still had to do once this process came back is not overhead.
+    const double still_working_ms = std::max(0.0, result.device_ms + answer.work_ms - away_ms);
+    result.isolation_ms = pending.submit_ms + std::max(0.0, collect_clock.Milliseconds() - still_working_ms);
   }
   return result;
 }

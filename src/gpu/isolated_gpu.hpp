@@ -3,11 +3,13 @@
 // isolates its test groups).
 #pragma once
 
+#include "base/stopwatch.hpp"
 #include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace twinraster {
@@ -56,6 +58,13 @@ class GpuProcess {
 
   // Throws only std::system_error when the operating system refuses a pipe or a process.
   IsolatedGpuResult Render(const DrawList& list);
+  // Render in two halves, so that this process can work while the child draws: Submit hands the
+  // list over and returns, Collect waits for the answer. One list at a time; Submit throws as
+  // Render does, Collect never.
+  void Submit(const DrawList& list);
+  IsolatedGpuResult Collect();
+  // The living child's device, from its first answer on; empty before that and after a crash.
+  const DeviceIdentity& device() const { return device_; }
 
  private:
   struct Child;
@@ -67,6 +76,12 @@ class GpuProcess {
   IsolationOptions options_;
   std::unique_ptr<Child> child_;  // none before the first list and after a crash
   DeviceIdentity device_;         // the living child's
+  struct Pending {                // the list submitted and not yet collected
+    Stopwatch clock;              // from its hand-over
+    double submit_ms = 0;         // the hand-over's own time
+    std::uint32_t width = 0, height = 0;
+  };
+  std::optional<Pending> pending_;
 };
 
 // One list in a child of its own.

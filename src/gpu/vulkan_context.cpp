@@ -133,7 +133,7 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
 // the user's variables choose the drivers, or lavapipe is missing or unusable.
 bool VulkanContext::ChooseLavapipeAlone(bool validation) {
   const LavapipeAlone alone;
-  if (!alone.active()) return false;
+  if (alone.manifest().empty()) return false;
   try {
     CreateInstance(validation);
     ChooseDevice("");

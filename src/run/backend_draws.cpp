@@ -20,14 +20,28 @@ verify::DrawnBy TwinDrawnBy(const cpu::RasterRules& rules) {
 }  // namespace
 
 IsolatedGpuResult GpuSession::Render(const DrawList& list) {
-  if (!process_) process_.emplace(options_);
-  return process_->Render(list);
+  Submit(list);
+  return Collect();
 }
 
+void GpuSession::Submit(const DrawList& list) {
+  if (!process_) process_.emplace(options_);
+  process_->Submit(list);
+}
+
+IsolatedGpuResult GpuSession::Collect() { return process_->Collect(); }
+
+DeviceIdentity GpuSession::KnownDevice() const { return process_ ? process_->device() : DeviceIdentity{}; }
+
 BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device) {
+  gpu.Submit(list);
+  return CollectFromGpu(gpu, source, device);
+}
+
+BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIdentity& device) {
   BackendRun run;
   run.record.backend = Backend::kGpu;
-  IsolatedGpuResult r = gpu.Render(list);
+  IsolatedGpuResult r = gpu.Collect();
   device = r.device;
   run.drawn_by = {r.device.name, {.subpixel_bits = int(r.device.subpixel_bits), .strict_lines = r.device.strict_lines}};
   run.record.detail = r.device.name.empty() ? "no device" : r.device.name;

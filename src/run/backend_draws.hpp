@@ -30,6 +30,11 @@ class GpuSession {
  public:
   explicit GpuSession(IsolationOptions options) : options_(std::move(options)) {}
   IsolatedGpuResult Render(const DrawList& list);
+  // Render in two halves (gpu/isolated_gpu.hpp), so that the twin can draw while the child does.
+  void Submit(const DrawList& list);
+  IsolatedGpuResult Collect();
+  // The device the living child draws on, known once it has answered a list; empty otherwise.
+  DeviceIdentity KnownDevice() const;
 
  private:
   IsolationOptions options_;
@@ -40,6 +45,8 @@ class GpuSession {
 // refuses. A crash or a timeout is a result: status kCrashed or kTimedOut, the problem naming
 // `source`, no image; `device` is still known when the child got that far.
 BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device);
+// The same for a list submitted earlier (GpuSession::Submit).
+BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIdentity& device);
 
 // What the twin's choice of rules reads of a device (cpu/twin_rules.hpp).
 cpu::DeviceFacts FactsOf(const DeviceIdentity& device);

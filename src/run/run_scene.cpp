@@ -24,8 +24,45 @@ RunRecord SceneRecord(const Scene& scene, const std::string& source, const RunOp
   return record;
 }
 
-// Every backend asked for, GPU first. The twin copies the lavapipe that drew (with no device, its
-// default release); a GPU process that crashes is a result, and the twin still draws.
+// The twin with the rules of the device that drew (with no device, lavapipe's default release).
+BackendRun Twin(const DrawList& list, const DeviceIdentity& device, const RunOptions& options,
+                std::optional<cpu::TwinRules>& rules) {
+  rules = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
+  return DrawOnTwin(list, rules->rules, options.threads);
+}
+
+// The GPU's image, with the twin drawn meanwhile when the GPU process already knows its device
+// (every scene of a batch after its first): both cores work. Should the device that drew not be
+// the one expected (a fresh process after a crash), the twin draws again by the right rules.
+void DrawBoth(const DrawList& list, const RunOptions& options, GpuSession& gpu, RunRecord& record,
+              std::vector<BackendRun>& runs, const StatusLine& status) {
+  Say(status, "gpu: drawing on Vulkan...");
+  gpu.Submit(list);
+  const DeviceIdentity expected = gpu.KnownDevice();
+  std::optional<BackendRun> twin;
+  std::optional<cpu::TwinRules> twin_rules;
+  if (options.backends == Backends::kBoth && !expected.name.empty()) {
+    try {
+      Say(status, "cpu: drawing...");
+      twin = Twin(list, expected, options, twin_rules);
+    } catch (...) {
+      gpu.Collect();  // nothing is left pending
+      throw;
+    }
+  }
+  DeviceIdentity device;
+  runs.push_back(CollectFromGpu(gpu, record.scene, device));
+  if (options.backends == Backends::kGpu) return;
+  record.twin = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
+  if (!twin || !(twin_rules->rules == record.twin->rules)) {
+    Say(status, "cpu: drawing...");
+    twin = Twin(list, device, options, record.twin);
+  }
+  runs.push_back(std::move(*twin));
+}
+
+// Every backend asked for, GPU first. A GPU process that crashes is a result, and the twin still
+// draws.
 std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const RunOptions& options, GpuSession& gpu,
                              RunRecord& record, const StatusLine& status) {
   std::vector<BackendRun> runs;
@@ -34,16 +71,12 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
     runs.push_back(DrawByTheBook(scene));
     return runs;
   }
-  DeviceIdentity device;
   if (options.backends != Backends::kCpu) {
-    Say(status, "gpu: drawing on Vulkan...");
-    runs.push_back(DrawOnGpu(list, gpu, record.scene, device));
+    DrawBoth(list, options, gpu, record, runs, status);
+    return runs;
   }
-  if (options.backends != Backends::kGpu) {
-    Say(status, "cpu: drawing...");
-    record.twin = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
-    runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));
-  }
+  Say(status, "cpu: drawing...");
+  runs.push_back(Twin(list, DeviceIdentity{}, options, record.twin));
   return runs;
 }
 

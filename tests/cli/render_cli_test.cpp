@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -353,6 +354,48 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   test::WriteFile(dir / "plain.txt", "x");
   REQUIRE(test::RunCli({"render", kScene, lookat, "-o", (dir / "plain.txt").string()}).exit_code == 2);
   REQUIRE(test::RunCli({"render", kScene, "-", "-o", out.string()}).exit_code == 2);
+}
+
+TEST_CASE("render with several scenes: records in the order given, each scene's files written while the next draws",
+          "[cli][render][many]") {
+  const test::TempDir dir;
+  const std::string lookat = test::SourcePath("scenes/lookat.json").string();
+  test::WriteFile(dir / "broken.json", "{\"canvas\": ");
+  std::filesystem::copy_file(lookat, dir / "again.json");
+  const std::vector<std::string> scenes = {kScene, (dir / "broken.json").string(), lookat,
+                                           (dir / "again.json").string()};
+  std::vector<std::string> args = {"render"};
+  args.insert(args.end(), scenes.begin(), scenes.end());
+  for (const std::string& extra : std::vector<std::string>{"-o", (dir / "out").string(), "--json", "--junit",
+                                                             (dir / "j.xml").string()}) {
+    args.push_back(extra);
+  }
+  const test::CliResult r = test::RunCli(args);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 2);
+  // One JSON line per readable scene, in order; the twin, drawn while the GPU process drew the
+  // later scenes, matches it.
+  std::vector<std::string> printed;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    const auto j = nlohmann::json::parse(line);
+    printed.push_back(j["scene"]);
+    CHECK(j["differing_pixels"] == 0);
+  }
+  REQUIRE(printed == std::vector<std::string>{scenes[0], scenes[2], scenes[3]});
+  // The JUnit file has every scene, the broken one in its place.
+  const std::string xml = test::ReadFile(dir / "j.xml");
+  std::size_t at = 0;
+  for (const std::string& scene : scenes) {
+    INFO(scene);
+    at = xml.find("name=\"" + scene + "\"", at);
+    REQUIRE(at != std::string::npos);
+  }
+  // A batch's images are the ones a scene drawn on its own gets.
+  const test::CliResult alone = test::RunCli({"render", lookat, "-o", (dir / "alone.png").string()});
+  REQUIRE(alone.exit_code == 0);
+  CHECK(ReadPng(dir / "out/again-gpu.png").rgba == ReadPng(dir / "alone-gpu.png").rgba);
+  CHECK(ReadPng(dir / "out/again-cpu.png").rgba == ReadPng(dir / "alone-cpu.png").rgba);
 }
 
 TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so",

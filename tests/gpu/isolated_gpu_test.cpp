@@ -8,6 +8,7 @@
 #include "support/lit_scene.hpp"
 
 #include <chrono>
+#include <stdexcept>
 
 using namespace twinraster;
 using namespace twinraster::gpu_test;
@@ -82,5 +83,22 @@ TEST_CASE("One GPU process draws a batch: later lists, lit or in wireframe, sent
     CHECK(r.image.rgba == here.Render(lists[i]).rgba);
     CHECK((r.device_ms > 0) == (i == 0));  // the device is made once
     CHECK(r.device.name == here.Device().name);
+  }
+}
+
+TEST_CASE("Submit and Collect: the child draws while this process works, and knows its device from its first answer") {
+  GpuProcess process({});
+  GpuRenderer here;
+  CHECK(process.device().name.empty());
+  CHECK_THROWS_AS(process.Collect(), std::logic_error);  // nothing submitted
+  for (const DrawList& list : {ChapterInstances(160, 120), ChapterInstances(64, 64)}) {
+    process.Submit(list);
+    CHECK_THROWS_AS(process.Submit(list), std::logic_error);  // one list at a time
+    const Image meanwhile = here.Render(list);                // this process's own work
+    const IsolatedGpuResult r = process.Collect();
+    REQUIRE(r.outcome == GpuOutcome::kRendered);
+    CHECK(r.image.rgba == meanwhile.rgba);
+    CHECK(process.device().name == here.Device().name);
+    CHECK(r.isolation_ms >= 0);
   }
 }

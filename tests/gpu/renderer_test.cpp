@@ -52,17 +52,17 @@ TEST_CASE("Without options the renderer picks lavapipe, and a name picks a devic
 }
 
 TEST_CASE("The default device loads lavapipe's driver alone, unless the user's loader variables choose", "[gpu]") {
-  const auto select = [] {
-    const char* value = std::getenv("VK_LOADER_DRIVERS_SELECT");
+  const auto driver_files = [] {
+    const char* value = std::getenv("VK_DRIVER_FILES");
     return value ? std::string(value) : std::string("(unset)");
   };
   SECTION("nothing set: lavapipe's manifest alone, for the guard's lifetime") {
     {
       const gpu::LavapipeAlone alone;
-      CHECK(alone.active());
-      CHECK(select() == "*lvp_icd*");
+      CHECK_THAT(alone.manifest(), HasSubstring("/vulkan/icd.d/lvp_icd."));
+      CHECK(driver_files() == alone.manifest());
     }
-    CHECK(select() == "(unset)");
+    CHECK(driver_files() == "(unset)");
     CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
   }
   SECTION("the user's choice stands") {
@@ -71,9 +71,13 @@ TEST_CASE("The default device loads lavapipe's driver alone, unless the user's l
       INFO(variable);
       const ScopedEnv user(variable, "*lvp_icd*");
       const gpu::LavapipeAlone alone;
-      CHECK_FALSE(alone.active());
-      CHECK(select() == (std::string(variable) == "VK_LOADER_DRIVERS_SELECT" ? "*lvp_icd*" : "(unset)"));
+      CHECK(alone.manifest().empty());
+      CHECK(driver_files() == (std::string(variable) == "VK_DRIVER_FILES" ? "*lvp_icd*" : "(unset)"));
     }
+  }
+  SECTION("no lavapipe for the loader to find: the default device is sought among every driver") {
+    const ScopedEnv elsewhere("XDG_DATA_DIRS", "/nonexistent");
+    CHECK(gpu::LavapipeAlone().manifest().empty());
   }
   SECTION("a device asked by name still finds the others") {
     CHECK_THAT(GpuRenderer(GpuOptions{.device = "swiftshader"}).DeviceName(), HasSubstring("SwiftShader"));

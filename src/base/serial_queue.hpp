@@ -1,0 +1,81 @@
+// Tasks run one at a time, in the order pushed, on one thread of its own, while the pushing thread
+// goes on: how a batch writes one scene's files while it draws the next. It does not run tasks in
+// parallel with each other, and it drops the tasks after one that throws.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace twinraster {
+
+class SerialQueue {
+ public:
+  // At most `waiting` tasks wait at once; Push blocks beyond that, which bounds the memory that
+  // pushed work (whole images) holds.
+  explicit SerialQueue(std::size_t waiting) : waiting_(waiting), worker_([this] { Work(); }) {}
+  // Runs what is queued, then joins; a task's exception is dropped here (call Finish to see it).
+  ~SerialQueue() { Stop(); }
+  SerialQueue(const SerialQueue&) = delete;
+  SerialQueue& operator=(const SerialQueue&) = delete;
+
+  // Queues `task`; rethrows a task's exception instead, once one has thrown.
+  void Push(std::function<void()> task) {
+    std::unique_lock lock(mutex_);
+    room_.wait(lock, [&] { return tasks_.size() < waiting_ || failed_; });
+    if (failed_) std::rethrow_exception(failed_);
+    tasks_.push_back(std::move(task));
+    work_.notify_one();
+  }
+
+  // Runs what is queued, joins, and rethrows a task's exception.
+  void Finish() {
+    Stop();
+    if (failed_) std::rethrow_exception(failed_);
+  }
+
+ private:
+  void Stop() {
+    {
+      const std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    work_.notify_one();
+    if (worker_.joinable()) worker_.join();
+  }
+
+  void Work() {
+    for (;;) {
+      std::function<void()> task;
+      {
+        std::unique_lock lock(mutex_);
+        work_.wait(lock, [&] { return !tasks_.empty() || stopping_; });
+        if (tasks_.empty() || failed_) return;
+        task = std::move(tasks_.front());
+        tasks_.pop_front();
+      }
+      room_.notify_one();
+      try {
+        task();
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        failed_ = std::current_exception();
+        room_.notify_all();
+      }
+    }
+  }
+
+  const std::size_t waiting_;
+  std::mutex mutex_;
+  std::condition_variable work_, room_;
+  std::deque<std::function<void()>> tasks_;
+  bool stopping_ = false;
+  std::exception_ptr failed_;
+  std::thread worker_;  // last: started once everything it reads exists
+};
+
+}  // namespace twinraster
