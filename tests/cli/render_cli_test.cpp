@@ -366,8 +366,8 @@ TEST_CASE("render with several scenes: records in the order given, each scene's 
                                            (dir / "again.json").string()};
   std::vector<std::string> args = {"render"};
   args.insert(args.end(), scenes.begin(), scenes.end());
-  for (const std::string& extra : std::vector<std::string>{"-o", (dir / "out").string(), "--json", "--junit",
-                                                             (dir / "j.xml").string()}) {
+  for (const std::string& extra :
+       std::vector<std::string>{"-o", (dir / "out").string(), "--json", "--junit", (dir / "j.xml").string()}) {
     args.push_back(extra);
   }
   const test::CliResult r = test::RunCli(args);

@@ -1,5 +1,6 @@
 // The queue a batch writes its scenes through: order, bounded waiting, and failures.
 #include "base/serial_queue.hpp"
+
 #include "support/catch.hpp"
 
 #include <atomic>
