@@ -40,7 +40,7 @@ apt-get update -qq
 apt-get install -y -qq --no-install-recommends \
   g++-aarch64-linux-gnu qemu-user-static \
   libc6-dev:arm64 libstdc++-12-dev:arm64 libvulkan-dev:arm64 mesa-vulkan-drivers:arm64 \
-  libdeflate-dev:arm64 libtinyobjloader-dev:arm64 libspng-dev:arm64 >/dev/null
+  libdeflate-dev:arm64 libtinyobjloader-dev:arm64 libspng-dev:arm64 libstb-dev:arm64 >/dev/null
 # libsimdjson-dev does not co-install with its amd64 self (a shared file differs): unpacked into a
 # sysroot that the toolchain file searches.
 sysroot="$work/sysroot"

@@ -19,6 +19,7 @@ packages=(
   libsimdjson-dev                # scene files: the fast parser
   libtinyobjloader-dev           # OBJ meshes a scene names (or render mesh.obj)
   libcli11-dev                   # the command line
+  libstb-dev                     # bench: stb_image_write, a PNG encoder to compare against
 )
 test_packages=(
   vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests

@@ -96,11 +96,14 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;
+  result.width = options.width, result.height = options.height;
+  if (options.processes) result.processes = RunProcessBench(*options.processes);
   for (std::size_t n = 0; n < counts.size(); ++n) {
     ScaleRow row;
     const std::string json = CubesJson(counts[n], options.width, options.height);
     row.json_bytes = json.size();
     std::vector<double> load, chain, gpu_setup, gpu_draw, gpu_per_draw, twin_setup, twin_draw, png, judge;
+    Image frame;  // the twin's, for the PNG encoders
     for (int run = 0; run < options.runs; ++run) {
       Stopwatch clock;
       const Scene scene = ParseScene(json, "cubes.json");
@@ -121,6 +124,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       clock.Lap();
       const std::string bytes = EncodePng(twin_image);
       png.push_back(clock.Lap());
+      frame = twin_image;
       judge.push_back(run::JudgeImage(scene, list, twin_image, twin.drawn_by.rasterizes, false).verify_ms);
       row.instances = list.draws.size();
       row.triangles = list.draws.size() * list.meshes.front().triangles.size();
@@ -133,6 +137,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
     row.gpu_per_draw_ms = Median(gpu_per_draw);
     row.verify_ms = Median(judge);
     row.peak_mib = PeakMib();
+    row.png_encoders = ComparePngEncoders(frame, options.runs);
     result.rows.push_back(row);
     if (options.on_row) options.on_row(row, n + 1, counts.size());
   }

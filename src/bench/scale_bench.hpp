@@ -1,11 +1,17 @@
 // `twinraster bench --scale`: the chapter's "one million cubes" at 1 k, 10 k, 100 k and 1 M
 // instances, each stage timed (medians; the verifier's judgement too) with the process's peak
-// memory, so that cost can be read against instance count.
+// memory, so that cost can be read against instance count; each size's frame written by every PNG
+// encoder (png_bench.hpp); and, first, the fixed costs of a scene as whole processes
+// (process_bench.hpp).
 #pragma once
+
+#include "bench/png_bench.hpp"
+#include "bench/process_bench.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +32,7 @@ struct ScaleRow {
   double verify_ms = 0;
   double peak_mib = 0;     // the process's peak resident memory once this size is done (sizes run in increasing order)
   bool identical = false;  // lavapipe's image equals the twin's
+  std::vector<PngEncoding> png_encoders;  // the twin's frame, by each encoder
 };
 
 struct ScaleOptions {
@@ -33,12 +40,15 @@ struct ScaleOptions {
   int runs = 3;
   std::uint32_t width = 1920, height = 1080;
   std::function<void(const ScaleRow& row, std::size_t done, std::size_t total)> on_row;
+  std::optional<ProcessBenchOptions> processes;  // the fixed costs too, when given
 };
 
 struct ScaleResult {
+  std::optional<ProcessTimes> processes;
   std::vector<ScaleRow> rows;
   std::string machine;
   int runs = 0;
+  std::uint32_t width = 0, height = 0;  // every size's frame
 };
 
 // Cubes in a centred grid as close to a cube as the count allows, each written out as its own

@@ -7,6 +7,7 @@
 #include "cpu/geometry.hpp"
 #include "cpu/parallel.hpp"
 #include "cpu/rasterize.hpp"
+#include "cpu/thread_pool.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -148,6 +149,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   using namespace cpu;
   const unsigned bands = (list.height + kBandRows - 1) / kBandRows;
   const unsigned threads = ThreadsFor(list, options.threads, bands);
+  const KeepPoolSpinning stages_follow;
   // Kept per calling thread from one render to the next (see GeometryScratch). Used through a
   // reference: in a lambda run by a pool worker, the name itself would mean the worker's own.
   thread_local GeometryScratch per_thread_scratch;

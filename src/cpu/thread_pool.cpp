@@ -32,6 +32,10 @@ inline void CpuRelax() {
 // microseconds, more than one stage of a chunk often takes.
 constexpr int kSpins = 20000;
 
+// Renders under way (KeepPoolSpinning): idle workers spin only while one is, since the next part
+// is then near; once the last ends, they sleep at once and leave the core to other work.
+std::atomic<int> g_spinning_holds{0};
+
 // One RunParts call. Workers hold it by shared_ptr: one that wakes late finds every part taken
 // and lets go, never touching a later job's counters.
 struct Job {
@@ -82,7 +86,11 @@ class ThreadPool {
     std::uint64_t seen = 0;
     for (;;) {
       std::shared_ptr<Job> job;
-      for (int spin = 0; spin < kSpins && generation_.load(std::memory_order_acquire) == seen; ++spin) CpuRelax();
+      for (int spin = 0; spin < kSpins && generation_.load(std::memory_order_acquire) == seen &&
+                         g_spinning_holds.load(std::memory_order_relaxed) > 0;
+           ++spin) {
+        CpuRelax();
+      }
       {
         std::unique_lock lock(mutex_);
         wake_.wait(lock, [&] { return stopping_ || generation_.load() != seen; });
@@ -124,6 +132,9 @@ class ThreadPool {
 };
 
 }  // namespace
+
+KeepPoolSpinning::KeepPoolSpinning() { g_spinning_holds.fetch_add(1, std::memory_order_relaxed); }
+KeepPoolSpinning::~KeepPoolSpinning() { g_spinning_holds.fetch_sub(1, std::memory_order_relaxed); }
 
 void RunParts(unsigned parts, const std::function<void(unsigned)>& fn) {
   if (parts == 0) return;

@@ -13,4 +13,15 @@ namespace twinraster::cpu {
 // from different threads take turns; a call from inside fn runs its parts inline, one by one.
 void RunParts(unsigned parts, const std::function<void(unsigned)>& fn);
 
+// While one lives (a render's stages follow each other closely), idle workers spin a little for
+// the next parts before they sleep; with none, they sleep at once, so that a finished render
+// leaves the other cores to what follows it (the PNG, another process).
+class KeepPoolSpinning {
+ public:
+  KeepPoolSpinning();
+  ~KeepPoolSpinning();
+  KeepPoolSpinning(const KeepPoolSpinning&) = delete;
+  KeepPoolSpinning& operator=(const KeepPoolSpinning&) = delete;
+};
+
 }  // namespace twinraster::cpu

@@ -79,8 +79,14 @@ struct CompressorDeleter {
 
 // The zlib stream (RFC 1950) of the image's filtered scanlines: at the fastest level the run
 // encoder's (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's.
+std::vector<std::uint8_t> LibdeflateStream(const Image& image, int level);
+
 std::vector<std::uint8_t> ZlibStream(const Image& image, int level) {
   if (level == kPngFastest) return png_runs::ZlibStream(image);
+  return LibdeflateStream(image, level);
+}
+
+std::vector<std::uint8_t> LibdeflateStream(const Image& image, int level) {
   std::vector<std::uint8_t> raw(png_scanlines::RowBytes(image) * image.height);
   png_scanlines::FilterRows(image, 0, image.height, raw.data());
   const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(libdeflate_alloc_compressor(level));
@@ -92,9 +98,8 @@ std::vector<std::uint8_t> ZlibStream(const Image& image, int level) {
   return zlib;
 }
 
-}  // namespace
-
-std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
+// The checks every encoding makes before any work.
+void CheckEncodable(const Image& image, int level) {
   if (level < 0 || level > kPngSmallest) {
     throw std::invalid_argument("PNG level " + std::to_string(level) + " is outside 0.." +
                                 std::to_string(kPngSmallest));
@@ -102,12 +107,12 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   if (image.width == 0 || image.height == 0 || image.rgba.size() != std::size_t{image.width} * image.height * 4) {
     throw std::invalid_argument("cannot encode an empty or malformed image as PNG");
   }
-  const std::string text_chunks = TextChunks(notes);
-  const std::vector<std::uint8_t> zlib = ZlibStream(image, level);
-  const std::size_t zlib_size = zlib.size();
+}
 
+// The file around its image data: signature, header, notes, the data, the end.
+std::string PngAround(const Image& image, const std::string& text_chunks, const std::vector<std::uint8_t>& zlib) {
   std::string png(png_format::kSignature);
-  png.reserve(8 + 25 + text_chunks.size() + 12 + zlib_size + 12);
+  png.reserve(8 + 25 + text_chunks.size() + 12 + zlib.size() + 12);
   std::uint8_t header[13] = {};
   for (int i = 0; i < 4; ++i) {
     header[i] = static_cast<std::uint8_t>(image.width >> (24 - 8 * i));
@@ -120,9 +125,22 @@ std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
   header[12] = 0;  // no interlace
   AppendChunk(png, "IHDR", header, sizeof header);
   png += text_chunks;
-  AppendChunk(png, "IDAT", zlib.data(), zlib_size);
+  AppendChunk(png, "IDAT", zlib.data(), zlib.size());
   AppendChunk(png, "IEND", nullptr, 0);
   return png;
+}
+
+}  // namespace
+
+std::string EncodePng(const Image& image, int level, const PngNotes& notes) {
+  CheckEncodable(image, level);
+  const std::string text_chunks = TextChunks(notes);
+  return PngAround(image, text_chunks, ZlibStream(image, level));
+}
+
+std::string EncodePngWithLibdeflate(const Image& image, int level) {
+  CheckEncodable(image, level);
+  return PngAround(image, "", LibdeflateStream(image, level));
 }
 
 StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level, const PngNotes& notes) {

@@ -33,6 +33,9 @@ using PngNotes = std::vector<std::pair<std::string, std::string>>;
 
 std::string EncodePng(const Image& image, int level = kPngFastest,
                       const PngNotes& notes = {});  // the bytes of a PNG file
+// The bench's comparison: the same file with its image data deflated by libdeflate at `level`
+// (0-12), whichever encoder the level usually has.
+std::string EncodePngWithLibdeflate(const Image& image, int level);
 StagedFile StagePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,
                     const PngNotes& notes = {});
 void WritePng(const std::filesystem::path& file, const Image& image, int level = kPngFastest,

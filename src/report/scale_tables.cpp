@@ -29,6 +29,63 @@ constexpr std::array<Stage, 9> kStages = {{
     {"verify_ms", "verify", &ScaleRow::verify_ms},
 }};
 
+// The fixed costs: what a scene costs beyond its drawing, as whole processes.
+void PutProcessTimes(std::ostringstream& s, const ProcessTimes& p) {
+  char line[256];
+  s << "Fixed costs: whole processes, medians of " << p.runs << " run(s) in turn (the batch: " << p.batch_runs << ")\n";
+  const auto put = [&](const char* what, double ms, const std::string& note) {
+    std::snprintf(line, sizeof line, "  %-70s %9.1f ms  %s\n", what, ms, note.c_str());
+    s << line;
+  };
+  char ratio[64];
+  std::snprintf(ratio, sizeof ratio, "%.2fx the floor", p.floor_ms > 0 ? p.cpu_scene_ms / p.floor_ms : 0.0);
+  put("twinraster --help (the process floor)", p.floor_ms, "");
+  put("twinraster --version (asks the Vulkan loader for every device)", p.version_ms, "");
+  put("render cgfs-transforms.json --backend cpu (600x600)", p.cpu_scene_ms, ratio);
+  put("render cgfs-transforms.json --backend gpu (child process included)", p.gpu_scene_ms, "");
+  std::snprintf(ratio, sizeof ratio, "%.2f ms a scene",
+                p.batch_scenes > 0 ? p.batch_ms / static_cast<double>(p.batch_scenes) : 0.0);
+  const std::string batch = "render " + std::to_string(p.batch_scenes) + " scenes " + std::to_string(p.batch_side) +
+                            "x" + std::to_string(p.batch_side) + ", both backends, --report, --junit";
+  put(batch.c_str(), p.batch_ms, ratio);
+}
+
+// MB of pixels (RGBA) encoded per second.
+double PngMegabytesPerSecond(const ScaleResult& result, const PngEncoding& e) {
+  return e.ms > 0 ? static_cast<double>(result.width) * result.height * 4 / 1e6 / (e.ms / 1e3) : 0;
+}
+
+void PutPngEncodings(std::ostringstream& s, const ScaleResult& result) {
+  s << "PNG: each size's frame (the twin's, " << result.width << "x" << result.height
+    << ") by each encoder, medians of " << result.runs << " run(s)\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%10s  %-30s %9s %12s %9s\n", "instances", "encoder", "ms", "bytes", "MB/s");
+  s << line;
+  for (const ScaleRow& r : result.rows) {
+    for (const PngEncoding& e : r.png_encoders) {
+      std::snprintf(line, sizeof line, "%10zu  %-30s %9.2f %12zu %9.0f\n", r.instances, e.encoder.c_str(), e.ms,
+                    e.bytes, PngMegabytesPerSecond(result, e));
+      s << line;
+    }
+  }
+  s << "(MB/s: megabytes of RGBA pixels in, per second; level 1's time includes its two threads)\n";
+}
+
+// The fixed costs and the PNG encoders, after the stages.
+std::string ExtraTables(const ScaleResult& result) {
+  std::ostringstream s;
+  if (result.processes) {
+    PutProcessTimes(s, *result.processes);
+  } else {
+    s << "Fixed costs: not measured (the chapter's scene, cgfs-transforms.json, is not in --scenes DIR)\n";
+  }
+  if (!result.rows.empty() && !result.rows.front().png_encoders.empty()) {
+    s << "\n";
+    PutPngEncodings(s, result);
+  }
+  return s.str();
+}
+
 }  // namespace
 
 std::string ScaleTable(const ScaleResult& result) {
@@ -54,6 +111,8 @@ std::string ScaleTable(const ScaleResult& result) {
     << (result.rows.empty() ? 0 : result.rows.front().threads)
     << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after "
        "that size)\n";
+  const std::string extra = ExtraTables(result);
+  if (!extra.empty()) s << "\n" << extra;
   return s.str();
 }
 
@@ -85,7 +144,25 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
     for (const Stage& stage : kStages) row[stage.key] = r.*stage.value;
     row["peak_mib"] = r.peak_mib;
     row["identical"] = r.identical;
+    row["png_encoders"] = nlohmann::ordered_json::array();
+    for (const PngEncoding& e : r.png_encoders) {
+      row["png_encoders"].push_back(
+          {{"encoder", e.encoder}, {"ms", e.ms}, {"bytes", e.bytes}, {"mb_per_s", PngMegabytesPerSecond(result, e)}});
+    }
     j["rows"].push_back(std::move(row));
+  }
+  j["processes"] = nullptr;
+  if (const auto& p = result.processes) {
+    j["processes"] = {{"runs", p->runs},
+                      {"floor_ms", p->floor_ms},
+                      {"version_ms", p->version_ms},
+                      {"cpu_scene_ms", p->cpu_scene_ms},
+                      {"gpu_scene_ms", p->gpu_scene_ms},
+                      {"cpu_scene_over_floor", p->floor_ms > 0 ? p->cpu_scene_ms / p->floor_ms : 0.0},
+                      {"batch_scenes", p->batch_scenes},
+                      {"batch_side", p->batch_side},
+                      {"batch_runs", p->batch_runs},
+                      {"batch_ms", p->batch_ms}};
   }
   return j;
 }

@@ -160,7 +160,13 @@ def main():
             ("bench --scale, two small counts", "bench-scale",
              ["bench", "--scale", "--counts", "1000,64", "--runs", "1", "--json", "-q"], None, 0,
              lambda d: [r["instances"] for r in d["rows"]] == [64, 1000] and all(r["identical"] for r in d["rows"])
-             and d["rows"][1]["triangles"] == 12000),
+             and d["rows"][1]["triangles"] == 12000 and d["processes"] is None
+             and [len(r["png_encoders"]) for r in d["rows"]] == [5, 5]),
+            ("bench --scale with the fixed costs, a batch of 12", "bench-scale",
+             ["bench", "--scale", "--counts", "8", "--runs", "1", "--scenes", scenes, "--batch-scenes", "12", "--json",
+              "-q"], None, 0,
+             lambda d: d["processes"]["batch_scenes"] == 12 and d["processes"]["batch_ms"] > 0
+             and d["processes"]["cpu_scene_ms"] > d["processes"]["floor_ms"] > 0),
             ("bench --verify, the chapter's scene", "bench-verify",
              ["bench", "--verify", "--only", "cgfs-transforms", "--runs", "1", "--scenes", scenes, "--json", "-q"], None, 0,
              lambda d: len(d["rows"]) == 1 and d["rows"][0]["violations"] == 0 and d["rows"][0]["triangles"] == 24),
