@@ -263,11 +263,8 @@ void PutHeader(const Code& literals, const Code& distances, BitWriter& bits) {
   }
 }
 
-// One block for all of `data` into `bits`, with its own Huffman codes.
-void PutBlock(std::span<const std::uint8_t> data, bool final, BitWriter& bits) {
-  // Room for the most tokens there can be, not initialized: only what is written is touched.
-  const std::unique_ptr<Token[]> storage(new Token[data.size()]);
-  const std::span<const Token> tokens(storage.get(), Tokenize(data, storage.get()));
+// One block of `tokens` into `bits`, with its own Huffman codes.
+void PutBlock(std::span<const Token> tokens, bool final, BitWriter& bits) {
   std::vector<std::uint32_t> literal_frequency(kLiteralCodes, 0), distance_frequency(kDistanceCodes, 0);
   for (const Token& t : tokens) {
     if (t.length == 0) {
@@ -317,14 +314,31 @@ struct Block {
   std::size_t size = 0;             // filtered bytes
 };
 
-// Rows [first, last) of `image` filtered into `raw`, then encoded; `final` marks the last block.
-Block EncodeRows(const Image& image, std::uint32_t first, std::uint32_t last, std::uint8_t* raw, bool final) {
-  png_scanlines::FilterRows(image, first, last, raw);
+// Filtered bytes held at once: rows are filtered, summed and tokenized a few at a time through
+// one small buffer, rather than the whole frame filtered into memory first, whose pages would cost
+// more to touch than the encoding itself.
+constexpr std::size_t kChunkBytes = std::size_t{64} << 10;
+
+// Rows [first, last) of `image` filtered, summed and encoded; `final` marks the last block. A
+// repeat never reaches back across a chunk's start.
+Block EncodeRows(const Image& image, std::uint32_t first, std::uint32_t last, bool final) {
+  const std::size_t row_bytes = png_scanlines::RowBytes(image);
+  const auto rows_per_chunk = static_cast<std::uint32_t>(std::max<std::size_t>(1, kChunkBytes / row_bytes));
+  std::vector<std::uint8_t> chunk(std::min<std::size_t>(rows_per_chunk, last - first) * row_bytes);
   Block block;
-  block.size = png_scanlines::RowBytes(image) * (last - first);
-  block.adler = libdeflate_adler32(1, raw, block.size);
+  block.size = row_bytes * (last - first);
+  // Room for the most tokens there can be, not initialized: only what is written is touched.
+  const std::unique_ptr<Token[]> tokens(new Token[block.size]);
+  std::size_t count = 0;
+  for (std::uint32_t y = first; y < last; y += rows_per_chunk) {
+    const std::uint32_t end = std::min(last, y + rows_per_chunk);
+    png_scanlines::FilterRows(image, y, end, chunk.data());
+    const std::span<const std::uint8_t> filtered(chunk.data(), row_bytes * (end - y));
+    block.adler = libdeflate_adler32(block.adler, filtered.data(), filtered.size());
+    count += Tokenize(filtered, tokens.get() + count);
+  }
   BitWriter bits(block.bytes);
-  PutBlock({raw, block.size}, final, bits);
+  PutBlock({tokens.get(), count}, final, bits);
   block.bits = bits.BitCount();
   bits.Finish();
   return block;
@@ -358,17 +372,14 @@ constexpr std::size_t kSplitBytes = std::size_t{1} << 20;
 }  // namespace
 
 std::vector<std::uint8_t> ZlibStream(const Image& image) {
-  const std::size_t row_bytes = png_scanlines::RowBytes(image);
-  // Not value-initialized: each thread's first touch of its half is its own page faults.
-  const std::unique_ptr<std::uint8_t[]> raw(new std::uint8_t[row_bytes * image.height]);
-  const bool split = row_bytes * image.height >= kSplitBytes && image.height >= 2;
+  const bool split = png_scanlines::RowBytes(image) * image.height >= kSplitBytes && image.height >= 2;
   const std::uint32_t middle = split ? image.height / 2 : image.height;
   Block top, bottom;
   if (split) {
-    OnTwoThreads([&] { top = EncodeRows(image, 0, middle, raw.get(), false); },
-                 [&] { bottom = EncodeRows(image, middle, image.height, raw.get() + row_bytes * middle, true); });
+    OnTwoThreads([&] { top = EncodeRows(image, 0, middle, false); },
+                 [&] { bottom = EncodeRows(image, middle, image.height, true); });
   } else {
-    top = EncodeRows(image, 0, image.height, raw.get(), true);
+    top = EncodeRows(image, 0, image.height, true);
   }
   std::vector<std::uint8_t> zlib;
   zlib.reserve(2 + (top.bits + bottom.bits) / 8 + 2 + 4);
