@@ -31,11 +31,12 @@ BackendRun Twin(const DrawList& list, const DeviceIdentity& device, const RunOpt
   return DrawOnTwin(list, rules->rules, options.threads);
 }
 
-// The GPU's image, with the twin drawn meanwhile when the GPU process already knows its device
-// (every scene of a batch after its first): both cores work. Should the device that drew not be
-// the one expected (a fresh process after a crash), the twin draws again by the right rules.
-void DrawBoth(const DrawList& list, const RunOptions& options, GpuSession& gpu, RunRecord& record,
-              std::vector<BackendRun>& runs, const StatusLine& status) {
+// The GPU's image, and the twin's when both are asked for: drawn meanwhile when the GPU process
+// knows its device (every scene of a batch after its first), so that both cores work. Should the
+// device that drew not be the one expected (a fresh process after a crash), the twin draws again
+// by the right rules.
+void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gpu, RunRecord& record,
+                 std::vector<BackendRun>& runs, const StatusLine& status) {
   Say(status, "gpu: drawing on Vulkan...");
   gpu.Submit(list);
   const DeviceIdentity expected = gpu.KnownDevice();
@@ -72,7 +73,7 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
     return runs;
   }
   if (options.backends != Backends::kCpu) {
-    DrawBoth(list, options, gpu, record, runs, status);
+    DrawWithGpu(list, options, gpu, record, runs, status);
     return runs;
   }
   Say(status, "cpu: drawing...");
