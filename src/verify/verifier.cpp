@@ -207,7 +207,8 @@ class Primitives {
       if (MissesRows(g, judge.Clip({0, 0, 0, int(h) - 1}))) continue;
       auto& nb = neighbours_[list_.draws[d].mesh];
       if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
-      DrawReach reach{d, {}, {}};
+      DrawReach reach;
+      reach.draw = d;
       VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
         const PixelBox box = judge.Clip(shape.Box(w, h));
         if (box.Empty()) return;
