@@ -41,6 +41,7 @@ class FrameJudge {
   // nothing per pixel.
   bool CouldMatter(const PixelBox& box, std::array<double, 2> range, bool showing) const;
   void RefreshTiles();
+  static constexpr int kTile = 16;  // the side of the tiles CouldMatter decides by
 
   // The background where no surface is certain, then every pixel's class, written into `pixels`
   // (the whole frame's, row by row) and counted into `counts`, with the band's first and worst.
@@ -81,7 +82,6 @@ class FrameJudge {
     std::uint8_t not_certain_line = 0;      // 1: some offer came from other than a certain line
   };
   std::vector<State> state_;
-  static constexpr int kTile = 16;
   int tiles_x_ = 0;
   std::vector<double> tile_gap_;  // the smallest gap in each tile: its farthest bound
   std::vector<std::uint32_t> dirty_;

@@ -36,9 +36,11 @@ void CheckInputs(const Scene& scene, const DrawList& list, const Image& image, c
 }
 
 // visit(x, y, centre, coverage) for each pixel of `box` the shape may cover. A triangle's rows
-// are inside in their middle: those pixels are visited without testing the edges.
-template <class Shape, class Visit>
-void Scan(const Shape& shape, const PixelBox& box, Visit&& visit) {
+// are inside in their middle: those pixels are visited without testing the edges. `keep(y, x0, x1)`
+// is asked first for each row's run of pixels within one tile, which is skipped when it says no.
+template <class Shape, class Keep, class Visit>
+void Scan(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit) {
+  constexpr int kTile = FrameJudge::kTile;
   for (int y = box.y0; y <= box.y1; ++y) {
     int in0 = box.x1 + 1, in1 = box.x1, x0 = box.x0, x1 = box.x1;
     if constexpr (std::is_same_v<Shape, TriangleShape>) {
@@ -47,17 +49,30 @@ void Scan(const Shape& shape, const PixelBox& box, Visit&& visit) {
       const std::array<int, 2> span = shape.InsideSpan(y);
       if (span[0] <= span[1]) in0 = std::max(span[0], box.x0), in1 = std::min(span[1], box.x1);
     }
-    for (int x = x0; x <= x1; ++x) {
-      const glm::dvec2 centre(x + 0.5, y + 0.5);
-      if (x >= in0 && x <= in1) {
-        visit(x, y, centre, Coverage::kIn);
-        continue;
+    for (int run0 = x0; run0 <= x1; run0 = (run0 / kTile + 1) * kTile) {
+      const int run1 = std::min(x1, (run0 / kTile + 1) * kTile - 1);
+      if (!keep(y, run0, run1)) continue;
+      for (int x = run0; x <= run1; ++x) {
+        const glm::dvec2 centre(x + 0.5, y + 0.5);
+        if (x >= in0 && x <= in1) {
+          visit(x, y, centre, Coverage::kIn);
+          continue;
+        }
+        const Coverage c = shape.Covers(centre);
+        if (c != Coverage::kOut) visit(x, y, centre, c);
       }
-      const Coverage c = shape.Covers(centre);
-      if (c != Coverage::kOut) visit(x, y, centre, c);
     }
   }
 }
+
+// Scan's `keep` for a surface whose depth lies in `range` everywhere: skips the runs of tiles where
+// it can matter at no pixel (FrameJudge::CouldMatter on the tile), unless the options turn that off.
+struct TileCull {
+  const FrameJudge& judge;
+  std::array<double, 2> range;
+  bool showing, on;
+  bool operator()(int y, int x0, int x1) const { return !on || judge.CouldMatter({x0, y, x1, y}, range, showing); }
+};
 
 // For each triangle's edge i (tri[i] -> tri[i + 1]), the one other triangle of the mesh sharing it
 // and that triangle's edge index, or -1 where the edge is a border or shared by more than two.
@@ -124,6 +139,7 @@ class Primitives {
   Primitives(const Scene& scene, const DrawList& list, const VerifyOptions& options)
       : list_(list),
         subpixel_bits_(options.subpixel_bits),
+        fast_(options.fast_paths),
         line_rules_(options.strict_lines ? LineRules::kStrict : LineRules::kNotStrict),
         neighbours_(list.meshes.size()) {
     if (list.lighting && !list.wireframe) light_.emplace(scene);
@@ -204,7 +220,7 @@ class Primitives {
       const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
       since_refresh += mesh.triangles.size();
       Prepare(d, g);
-      if (MissesRows(g, judge.Clip({0, 0, 0, int(h) - 1}))) continue;
+      if (fast_ && MissesRows(g, judge.Clip({0, 0, 0, int(h) - 1}))) continue;
       auto& nb = neighbours_[list_.draws[d].mesh];
       if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
       DrawReach reach;
@@ -217,11 +233,11 @@ class Primitives {
         if (!judge.CouldMatter(box, range, false)) return;
         if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
           if (unclipped) {
-            OccludeWithNeighbours(judge, shape, box, mesh, *nb, t, g);
+            OccludeWithNeighbours(judge, shape, box, TileCull{judge, range, false, fast_}, mesh, *nb, t, g);
             return;
           }
         }
-        Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+        Scan(shape, box, TileCull{judge, range, false, fast_}, [&](int x, int y, glm::dvec2 p, Coverage c) {
           if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
         });
       });
@@ -264,10 +280,11 @@ class Primitives {
   }
 
   static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
-                                    const DrawMesh& mesh, const std::vector<std::array<Neighbour, 3>>& nb,
-                                    std::size_t t, const DrawGeometry& g) {
+                                    const TileCull& keep, const DrawMesh& mesh,
+                                    const std::vector<std::array<Neighbour, 3>>& nb, std::size_t t,
+                                    const DrawGeometry& g) {
     std::array<std::optional<TriangleShape>, 3> across;
-    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+    Scan(shape, box, keep, [&](int x, int y, glm::dvec2 p, Coverage c) {
       if (c == Coverage::kIn) {
         judge.Occlude(x, y, shape.Depth(p));
         return;
@@ -304,6 +321,7 @@ class Primitives {
 
   const DrawList& list_;
   int subpixel_bits_;
+  bool fast_;  // VerifyOptions::fast_paths
   LineRules line_rules_;
   std::optional<ExactLight> light_;
   std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours_;  // per mesh, when needed
@@ -312,11 +330,14 @@ class Primitives {
 // One band of rows: its own primitives' state, its judge, and the draws that reach it.
 struct Band {
   Band(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0, int row1)
-      : primitives(scene, list, options), judge(image, list.background, list.reversed_z, row0, row1) {}
+      : primitives(scene, list, options),
+        judge(image, list.background, list.reversed_z, row0, row1),
+        fast(options.fast_paths) {}
   Primitives primitives;
   FrameJudge judge;
   std::vector<DrawReach> reaching;
   Verification counts;
+  bool fast = true;
 };
 
 // Pass 2 at one pixel of the band only, gathering what each surface that may show there allows:
@@ -352,15 +373,17 @@ void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) 
   // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
   const auto offer = [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
     const PixelBox box = judge.Clip(shape.Box(w, h));
-    if (!judge.CouldMatter(box, shape.DepthRange(), true)) return;
+    const std::array<double, 2> range = shape.DepthRange();
+    if (!judge.CouldMatter(box, range, true)) return;
     constexpr bool kLine = std::is_same_v<std::decay_t<decltype(shape)>, LineShape>;
-    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+    Scan(shape, box, TileCull{judge, range, true, band.fast}, [&](int x, int y, glm::dvec2 p, Coverage c) {
       if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat), kLine && c == Coverage::kIn);
     });
   };
   DrawGeometry g;
   for (const DrawReach& reach : band.reaching) {
-    if (judge.CouldMatter(reach.box, reach.range, true)) band.primitives.ForEachInDraw(reach.draw, true, g, offer);
+    if (!band.fast || judge.CouldMatter(reach.box, reach.range, true))
+      band.primitives.ForEachInDraw(reach.draw, true, g, offer);
   }
   judge.Finish(band.counts, pixels);
 }
@@ -399,13 +422,14 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   const int rows = int(image.height);
   const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
   const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
-  std::vector<std::unique_ptr<Band>> bands;
-  for (int row0 = 0; row0 < rows; row0 += band_rows) {
-    bands.push_back(std::make_unique<Band>(scene, list, image, options, row0, std::min(rows, row0 + band_rows)));
-  }
+  std::vector<std::unique_ptr<Band>> bands(std::size_t((rows + band_rows - 1) / band_rows));
   std::vector<std::future<void>> running;
-  for (auto& band : bands) {
-    running.push_back(std::async(std::launch::async, [&, b = band.get()] { JudgeBand(*b, image, result.pixels); }));
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
+    running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
+      bands[b] = std::make_unique<Band>(scene, list, image, options, row0, row1);  // its set-up on its thread
+      JudgeBand(*bands[b], image, result.pixels);
+    }));
   }
   for (auto& r : running) r.get();  // rethrows a band's exception
   Merge(bands, result);
