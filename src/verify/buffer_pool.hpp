@@ -13,17 +13,11 @@ namespace twinraster::verify {
 template <typename T>
 class BufferPool {
  public:
-  // `size` copies of `fill`, in a vector given back earlier when there is one.
-  static std::vector<T> Take(std::size_t size, const T& fill) {
-    std::vector<T> buffer;
-    {
-      const std::lock_guard<std::mutex> hold(Lock());
-      if (!Spare().empty()) {
-        buffer = std::move(Spare().back());
-        Spare().pop_back();
-      }
-    }
-    buffer.assign(size, fill);
+  // `size` elements, in a vector given back earlier when there is one, holding whatever its earlier
+  // user left there (or T's default): for a caller that writes each element before it reads it.
+  static std::vector<T> TakeAsLeft(std::size_t size) {
+    std::vector<T> buffer = TakeSpare();
+    buffer.resize(size);
     return buffer;
   }
 
@@ -35,6 +29,16 @@ class BufferPool {
 
  private:
   static constexpr std::size_t kKept = 4;
+
+  static std::vector<T> TakeSpare() {
+    std::vector<T> buffer;
+    const std::lock_guard<std::mutex> hold(Lock());
+    if (!Spare().empty()) {
+      buffer = std::move(Spare().back());
+      Spare().pop_back();
+    }
+    return buffer;
+  }
 
   static std::mutex& Lock() {
     static std::mutex lock;

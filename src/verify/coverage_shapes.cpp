@@ -49,19 +49,8 @@ TriangleShape::TriangleShape(const WindowVertex& a, const WindowVertex& b, const
   area2_ = Cross(e1, e2);
   orientation_ = area2_ > 0 ? 1 : area2_ < 0 ? -1 : 0;
   for (std::size_t i = 0; i < 3 && orientation_ != 0; ++i) {
-    const glm::dvec2 p = v_[i].xy, q = v_[(i + 1) % 3].xy;
-    const double length = glm::length(q - p);
-    if (!(length > 0)) {
-      orientation_ = 0;
-      break;
-    }
-    // Inside: orientation * cross(q - p, x - p) > 0.
-    normal_[i] = double(orientation_) * glm::dvec2(-(q.y - p.y), q.x - p.x) / length;
-    offset_[i] = -glm::dot(normal_[i], p);
-    // A vertex moved by up to e along x and along y moves by up to e (|n.x| + |n.y|) along n.
-    const double along_normal = std::abs(normal_[i].x) + std::abs(normal_[i].y);
-    edge_radius_[i] = std::max(v_[i].xy_error, v_[(i + 1) % 3].xy_error) * along_normal;
-    outside_radius_[i] = std::max({a.xy_error, b.xy_error, c.xy_error}) * along_normal;
+    const glm::dvec2 d = v_[(i + 1) % 3].xy - v_[i].xy;
+    if (!(glm::dot(d, d) > 0)) orientation_ = 0;  // a zero length (its square root is 0 too)
   }
   const double z_error = std::max({a.z_error, b.z_error, c.z_error});
   const double z_max = std::max({std::abs(a.z), std::abs(b.z), std::abs(c.z)});
@@ -78,6 +67,24 @@ TriangleShape::TriangleShape(const WindowVertex& a, const WindowVertex& b, const
   }
 }
 
+const TriangleShape::Edges& TriangleShape::edges() const {
+  if (edges_made_ || orientation_ == 0) return edges_;
+  edges_made_ = true;
+  const double error = std::max({v_[0].xy_error, v_[1].xy_error, v_[2].xy_error});
+  for (std::size_t i = 0; i < 3; ++i) {
+    const glm::dvec2 p = v_[i].xy, q = v_[(i + 1) % 3].xy;
+    const double length = glm::length(q - p);
+    // Inside: orientation * cross(q - p, x - p) > 0.
+    edges_.normal[i] = double(orientation_) * glm::dvec2(-(q.y - p.y), q.x - p.x) / length;
+    edges_.offset[i] = -glm::dot(edges_.normal[i], p);
+    // A vertex moved by up to e along x and along y moves by up to e (|n.x| + |n.y|) along n.
+    const double along_normal = std::abs(edges_.normal[i].x) + std::abs(edges_.normal[i].y);
+    edges_.edge_radius[i] = std::max(v_[i].xy_error, v_[(i + 1) % 3].xy_error) * along_normal;
+    edges_.outside_radius[i] = error * along_normal;
+  }
+  return edges_;
+}
+
 PixelBox TriangleShape::Box(std::uint32_t width, std::uint32_t height) const {
   const double x0 = std::min({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) - radius_;
   const double x1 = std::max({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) + radius_;
@@ -89,13 +96,14 @@ PixelBox TriangleShape::Box(std::uint32_t width, std::uint32_t height) const {
 Coverage TriangleShape::Covers(glm::dvec2 p) const {
   if (!std::isfinite(radius_)) return Coverage::kMaybe;
   if (orientation_ != 0) {
-    const double d0 = glm::dot(normal_[0], p) + offset_[0];
-    const double d1 = glm::dot(normal_[1], p) + offset_[1];
-    const double d2 = glm::dot(normal_[2], p) + offset_[2];
+    const Edges& e = edges();
+    const double d0 = glm::dot(e.normal[0], p) + e.offset[0];
+    const double d1 = glm::dot(e.normal[1], p) + e.offset[1];
+    const double d2 = glm::dot(e.normal[2], p) + e.offset[2];
     // Inside by more than its edge can move: inside whatever the implementation does. Beyond one
     // edge by more than any vertex can move along its normal: outside.
-    if (d0 > edge_radius_[0] && d1 > edge_radius_[1] && d2 > edge_radius_[2]) return Coverage::kIn;
-    if (d0 < -outside_radius_[0] || d1 < -outside_radius_[1] || d2 < -outside_radius_[2]) return Coverage::kOut;
+    if (d0 > e.edge_radius[0] && d1 > e.edge_radius[1] && d2 > e.edge_radius[2]) return Coverage::kIn;
+    if (d0 < -e.outside_radius[0] || d1 < -e.outside_radius[1] || d2 < -e.outside_radius[2]) return Coverage::kOut;
     if (d0 >= 0 && d1 >= 0 && d2 >= 0) return Coverage::kMaybe;
   }
   const double distance = std::min({SegmentDistance(p, v_[0].xy, v_[1].xy), SegmentDistance(p, v_[1].xy, v_[2].xy),
@@ -153,18 +161,20 @@ std::array<int, 2> TriangleShape::InsideSpan(int y) const {
   if (orientation_ == 0 || !std::isfinite(radius_)) return {1, 0};
   // Inside by more than each edge can move: every pixel in it is one Covers finds inside too; the
   // margin leaves the pixels at its ends to Covers.
-  return RowSpan(normal_, offset_, {-edge_radius_[0], -edge_radius_[1], -edge_radius_[2]}, y, true);
+  const Edges& e = edges();
+  return RowSpan(e.normal, e.offset, {-e.edge_radius[0], -e.edge_radius[1], -e.edge_radius[2]}, y, true);
 }
 
 std::array<int, 2> TriangleShape::ReachSpan(int y) const {
   if (orientation_ == 0 || !std::isfinite(radius_))
     return {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
-  return RowSpan(normal_, offset_, outside_radius_, y, false);
+  return RowSpan(edges().normal, edges().offset, edges().outside_radius, y, false);
 }
 
 std::array<double, 3> TriangleShape::EdgeDistances(glm::dvec2 p) const {
-  return {glm::dot(normal_[0], p) + offset_[0], glm::dot(normal_[1], p) + offset_[1],
-          glm::dot(normal_[2], p) + offset_[2]};
+  const Edges& e = edges();
+  return {glm::dot(e.normal[0], p) + e.offset[0], glm::dot(e.normal[1], p) + e.offset[1],
+          glm::dot(e.normal[2], p) + e.offset[2]};
 }
 
 std::array<double, 2> TriangleShape::Depth(glm::dvec2 p) const {

@@ -43,17 +43,25 @@ class TriangleShape {
   bool Degenerate() const { return orientation_ == 0; }
   double radius() const { return radius_; }
   // How far edge i itself may move along its normal at a centre beside it.
-  double EdgeRadius(int i) const { return edge_radius_[std::size_t(i)]; }
+  double EdgeRadius(int i) const { return edges().edge_radius[std::size_t(i)]; }
 
  private:
+  // The edges' lines and how far each may move. Made on first use: most triangles of a large
+  // scene are passed over by their box and depth range alone, before any centre is tested.
+  struct Edges {
+    std::array<glm::dvec2, 3> normal;  // unit, inward
+    std::array<double, 3> offset{};
+    std::array<double, 3> edge_radius{};     // edge i's endpoints' movement along its normal
+    std::array<double, 3> outside_radius{};  // any vertex's movement along edge i's normal
+  };
+  const Edges& edges() const;
+
   std::array<WindowVertex, 3> v_;
   bool lit_ = false;
-  double radius_ = 0;                       // how far a vertex may move (Euclidean)
-  std::array<double, 3> edge_radius_{};     // edge i's endpoints' movement along its normal
-  std::array<double, 3> outside_radius_{};  // any vertex's movement along edge i's normal
-  int orientation_ = 0;                     // sign of the area; 0: degenerate
-  std::array<glm::dvec2, 3> normal_;        // unit, inward
-  std::array<double, 3> offset_{};
+  double radius_ = 0;    // how far a vertex may move (Euclidean)
+  int orientation_ = 0;  // sign of the area; 0: degenerate
+  mutable bool edges_made_ = false;
+  mutable Edges edges_;
   double area2_ = 0;          // twice the signed area
   glm::dvec2 gradient_{0.0};  // of depth
   double depth_error_ = 0, depth_relative_ = 0;

@@ -16,10 +16,22 @@ FrameJudge::FrameJudge(const Image& image, Rgb8 background, bool reversed_z, int
       clear_key_(reversed_z ? 0.0 : 1.0),
       tiles_x_(int((image.width + kTile - 1) / kTile)),
       tile_gap_(std::size_t(tiles_x_) * std::size_t((row1 - row0 + kTile - 1) / kTile)),
-      is_dirty_(tile_gap_.size(), 0) {
+      is_dirty_(tile_gap_.size(), 0),
+      used_(tile_gap_.size(), 0) {
   const std::size_t pixels = std::size_t{image.width} * std::size_t(row1 - row0);
-  gap_ = BufferPool<double>::Take(pixels, 0.0);
-  state_ = BufferPool<State>::Take(pixels, State{});
+  gap_ = BufferPool<double>::TakeAsLeft(pixels);
+  state_ = BufferPool<State>::TakeAsLeft(pixels);
+}
+
+void FrameJudge::Use(std::size_t tile) {
+  if (used_[tile]) return;
+  used_[tile] = 1;
+  const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
+  const int x0 = tx * kTile, x1 = std::min(int(image_->width), x0 + kTile);
+  for (int y = row0_ + ty * kTile; y < std::min(row1_, row0_ + (ty + 1) * kTile); ++y) {
+    std::fill(gap_.begin() + std::ptrdiff_t(Index(x0, y)), gap_.begin() + std::ptrdiff_t(Index(x1, y)), 0.0);
+    std::fill(state_.begin() + std::ptrdiff_t(Index(x0, y)), state_.begin() + std::ptrdiff_t(Index(x1, y)), State{});
+  }
 }
 
 FrameJudge::~FrameJudge() {
@@ -69,21 +81,21 @@ Rgb8 FrameJudge::ImageColour(int x, int y) const {
 void FrameJudge::Occlude(int x, int y, std::array<double, 2> depth) {
   const double far_key = reversed_ ? -depth[0] : depth[1];
   // Written for sure only if it passes against the clear value whatever its depth.
-  double& gap = gap_[Index(x, y)];
-  if (clear_key_ - far_key > gap) {
-    gap = clear_key_ - far_key;
-    const std::uint32_t tile = std::uint32_t(((y - row0_) / kTile) * tiles_x_ + x / kTile);
-    if (!is_dirty_[tile]) is_dirty_[tile] = 1, dirty_.push_back(tile);
-  }
+  if (!(clear_key_ - far_key > Gap(x, y))) return;
+  const std::size_t tile = TileOf(x, y);
+  Use(tile);
+  gap_[Index(x, y)] = clear_key_ - far_key;
+  if (!is_dirty_[tile]) is_dirty_[tile] = 1, dirty_.push_back(std::uint32_t(tile));
 }
 
 bool FrameJudge::MayShow(int x, int y, std::array<double, 2> depth) const {
   const double near_key = reversed_ ? -depth[1] : depth[0];
   const double near_gap = clear_key_ - near_key;
-  return near_gap > 0 && near_gap >= gap_[Index(x, y)];
+  return near_gap > 0 && near_gap >= Gap(x, y);
 }
 
 void FrameJudge::Offer(int x, int y, const ColourRange& colours, bool certain_line) {
+  Use(TileOf(x, y));
   State& s = state_[Index(x, y)];
   const auto gap = [](std::uint8_t g, std::uint8_t hi) { return std::max<std::uint8_t>(g, std::uint8_t(255 - hi)); };
   s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g),
@@ -98,32 +110,55 @@ void FrameJudge::Offer(int x, int y, const ColourRange& colours, bool certain_li
 
 void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
   int worst_distance = 0;
-  for (int y = row0_; y < row1_; ++y) {
-    for (int x = 0; x < int(image_->width); ++x) {
-      const std::size_t i = Index(x, y);
-      State& s = state_[i];
-      if (s.offers > 0) ++v.covered;
-      if (gap_[i] == 0) Offer(x, y, ColourRange::Exactly(background_));
-      const bool disjoint =
-          s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
-      const int distance = 255 - s.closeness;
-      if (s.background_closeness < 255) ++v.background_excluded;
-      const PixelClass c = distance > 0 ? PixelClass::kViolation
-                           : disjoint   ? PixelClass::kUncertain
-                                        : PixelClass::kCertain;
-      pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
-      if (c == PixelClass::kViolation) {
-        ++v.violations;
-        const Violation found{std::uint32_t(x), std::uint32_t(y), ImageColour(x, y), distance, {}};
-        if (!v.first) v.first = found;
-        if (distance > worst_distance) worst_distance = distance, v.worst = found;
-      } else if (c == PixelClass::kUncertain) {
-        ++v.uncertain;
-        if (gap_[i] != 0 && !s.not_certain_line) ++v.uncertain_shared_edges;
-      } else {
-        ++v.certain;
+  for (int y = row0_; y < row1_; ++y) {  // in row order, for the first violation and the worst
+    for (int x0 = 0; x0 < int(image_->width); x0 += kTile) {
+      const int x1 = std::min(int(image_->width), x0 + kTile);
+      if (!used_[TileOf(x0, y)]) {
+        FinishUnused(x0, x1, y, v, worst_distance, pixels);
+        continue;
       }
+      for (int x = x0; x < x1; ++x) FinishUsed(x, y, v, worst_distance, pixels);
     }
+  }
+}
+
+void FrameJudge::FinishUsed(int x, int y, Verification& v, int& worst_distance, std::vector<PixelClass>& pixels) {
+  const std::size_t i = Index(x, y);
+  State& s = state_[i];
+  if (s.offers > 0) ++v.covered;
+  if (gap_[i] == 0) Offer(x, y, ColourRange::Exactly(background_));
+  const bool disjoint = s.max_lo.r + s.hi_gap.r > 255 || s.max_lo.g + s.hi_gap.g > 255 || s.max_lo.b + s.hi_gap.b > 255;
+  const int distance = 255 - s.closeness;
+  if (s.background_closeness < 255) ++v.background_excluded;
+  const PixelClass c = distance > 0 ? PixelClass::kViolation : disjoint ? PixelClass::kUncertain : PixelClass::kCertain;
+  pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
+  Count(x, y, c, distance, worst_distance, v);
+  if (c == PixelClass::kUncertain && gap_[i] != 0 && !s.not_certain_line) ++v.uncertain_shared_edges;
+}
+
+// Pixels no surface reached: only the background is offered, so each is certain when it shows the
+// background and a violation by its distance from it otherwise (what FinishUsed finds there too).
+void FrameJudge::FinishUnused(int x0, int x1, int y, Verification& v, int& worst_distance,
+                              std::vector<PixelClass>& pixels) const {
+  const ColourRange background = ColourRange::Exactly(background_);
+  for (int x = x0; x < x1; ++x) {
+    const int distance = background.Distance(ImageColour(x, y));
+    const PixelClass c = distance > 0 ? PixelClass::kViolation : PixelClass::kCertain;
+    pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
+    Count(x, y, c, distance, worst_distance, v);
+  }
+}
+
+void FrameJudge::Count(int x, int y, PixelClass c, int distance, int& worst_distance, Verification& v) const {
+  if (c == PixelClass::kViolation) {
+    ++v.violations;
+    const Violation found{std::uint32_t(x), std::uint32_t(y), ImageColour(x, y), distance, {}};
+    if (!v.first) v.first = found;
+    if (distance > worst_distance) worst_distance = distance, v.worst = found;
+  } else if (c == PixelClass::kUncertain) {
+    ++v.uncertain;
+  } else {
+    ++v.certain;
   }
 }
 

@@ -32,7 +32,7 @@ class FrameJudge {
   bool MayShow(int x, int y, std::array<double, 2> depth) const;
   // `certain_line`: a line certain to cover (x, y) offers it (see Verification's shared edges).
   void Offer(int x, int y, const ColourRange& colours, bool certain_line = false);
-  bool BackgroundMayShow(int x, int y) const { return gap_[Index(x, y)] == 0; }
+  bool BackgroundMayShow(int x, int y) const { return Gap(x, y) == 0; }
   Rgb8 background() const { return background_; }
 
   // Whether a surface whose depth lies in `range` everywhere could matter anywhere in `box`: in
@@ -41,6 +41,7 @@ class FrameJudge {
   // nothing per pixel.
   bool CouldMatter(const PixelBox& box, std::array<double, 2> range, bool showing) const;
   void RefreshTiles();
+  static constexpr int kTile = 16;  // the side of the tiles CouldMatter decides by
 
   // The background where no surface is certain, then every pixel's class, written into `pixels`
   // (the whole frame's, row by row) and counted into `counts`, with the band's first and worst.
@@ -51,6 +52,15 @@ class FrameJudge {
 
  private:
   std::size_t Index(int x, int y) const { return std::size_t(y - row0_) * image_->width + std::size_t(x); }
+  std::size_t TileOf(int x, int y) const { return std::size_t(((y - row0_) / kTile) * tiles_x_ + x / kTile); }
+  // The per-pixel buffers are cleared a tile at a time, when a surface first reaches it: a tile
+  // no surface reaches (the background's) costs no clearing, and Finish classes it in one sweep.
+  void Use(std::size_t tile);
+  double Gap(int x, int y) const { return used_[TileOf(x, y)] ? gap_[Index(x, y)] : 0.0; }
+  // Finish's classing of one pixel, counted into `v`.
+  void Count(int x, int y, PixelClass c, int distance, int& worst_distance, Verification& v) const;
+  void FinishUsed(int x, int y, Verification& v, int& worst_distance, std::vector<PixelClass>& pixels);
+  void FinishUnused(int x0, int x1, int y, Verification& v, int& worst_distance, std::vector<PixelClass>& pixels) const;
   const Image* image_;
   Rgb8 background_;
   bool reversed_ = false;
@@ -72,11 +82,11 @@ class FrameJudge {
     std::uint8_t not_certain_line = 0;      // 1: some offer came from other than a certain line
   };
   std::vector<State> state_;
-  static constexpr int kTile = 16;
   int tiles_x_ = 0;
   std::vector<double> tile_gap_;  // the smallest gap in each tile: its farthest bound
   std::vector<std::uint32_t> dirty_;
   std::vector<char> is_dirty_;
+  std::vector<char> used_;  // per tile: its pixels' gap_ and state_ are live (else all zeros)
 };
 
 }  // namespace twinraster::verify

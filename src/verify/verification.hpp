@@ -38,6 +38,10 @@ const char* JudgementName(Judgement judgement);  // "passed", "inconclusive", "f
 struct VerifyOptions {
   int subpixel_bits = 4;      // subPixelPrecisionBits; the spec's minimum is 4
   bool strict_lines = false;  // strictLines
+  // Not the device's: whether the verifier skips the draws, and the runs of a tile's pixels, where
+  // a surface's box and depth range show it cannot matter. The judgement is the same either way;
+  // false (every one tested) is for the tests that check so.
+  bool fast_paths = true;
 };
 
 struct Verification {

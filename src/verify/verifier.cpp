@@ -5,7 +5,10 @@
 #include "verify/pixel_judge.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <future>
+#include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -33,9 +36,11 @@ void CheckInputs(const Scene& scene, const DrawList& list, const Image& image, c
 }
 
 // visit(x, y, centre, coverage) for each pixel of `box` the shape may cover. A triangle's rows
-// are inside in their middle: those pixels are visited without testing the edges.
-template <class Shape, class Visit>
-void Scan(const Shape& shape, const PixelBox& box, Visit&& visit) {
+// are inside in their middle: those pixels are visited without testing the edges. `keep(y, x0, x1)`
+// is asked first for each row's run of pixels within one tile, which is skipped when it says no.
+template <class Shape, class Keep, class Visit>
+void Scan(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit) {
+  constexpr int kTile = FrameJudge::kTile;
   for (int y = box.y0; y <= box.y1; ++y) {
     int in0 = box.x1 + 1, in1 = box.x1, x0 = box.x0, x1 = box.x1;
     if constexpr (std::is_same_v<Shape, TriangleShape>) {
@@ -44,17 +49,30 @@ void Scan(const Shape& shape, const PixelBox& box, Visit&& visit) {
       const std::array<int, 2> span = shape.InsideSpan(y);
       if (span[0] <= span[1]) in0 = std::max(span[0], box.x0), in1 = std::min(span[1], box.x1);
     }
-    for (int x = x0; x <= x1; ++x) {
-      const glm::dvec2 centre(x + 0.5, y + 0.5);
-      if (x >= in0 && x <= in1) {
-        visit(x, y, centre, Coverage::kIn);
-        continue;
+    for (int run0 = x0; run0 <= x1; run0 = (run0 / kTile + 1) * kTile) {
+      const int run1 = std::min(x1, (run0 / kTile + 1) * kTile - 1);
+      if (!keep(y, run0, run1)) continue;
+      for (int x = run0; x <= run1; ++x) {
+        const glm::dvec2 centre(x + 0.5, y + 0.5);
+        if (x >= in0 && x <= in1) {
+          visit(x, y, centre, Coverage::kIn);
+          continue;
+        }
+        const Coverage c = shape.Covers(centre);
+        if (c != Coverage::kOut) visit(x, y, centre, c);
       }
-      const Coverage c = shape.Covers(centre);
-      if (c != Coverage::kOut) visit(x, y, centre, c);
     }
   }
 }
+
+// Scan's `keep` for a surface whose depth lies in `range` everywhere: skips the runs of tiles where
+// it can matter at no pixel (FrameJudge::CouldMatter on the tile), unless the options turn that off.
+struct TileCull {
+  const FrameJudge& judge;
+  std::array<double, 2> range;
+  bool showing, on;
+  bool operator()(int y, int x0, int x1) const { return !on || judge.CouldMatter({x0, y, x1, y}, range, showing); }
+};
 
 // For each triangle's edge i (tri[i] -> tri[i + 1]), the one other triangle of the mesh sharing it
 // and that triangle's edge index, or -1 where the edge is a border or shared by more than two.
@@ -86,6 +104,26 @@ std::vector<std::array<Neighbour, 3>> MeshNeighbours(const DrawMesh& mesh) {
   return out;
 }
 
+// A draw that reaches a band: the union of its primitives' boxes there and of their depth ranges
+// (NaN when any range is), so that one test can skip a draw only when it would skip each of them.
+struct DrawReach {
+  std::size_t draw = 0;
+  PixelBox box;
+  std::array<double, 2> range{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+
+  void Add(const PixelBox& b, std::array<double, 2> r) {
+    box = box.Empty() ? b
+                      : PixelBox{std::min(box.x0, b.x0), std::min(box.y0, b.y0), std::max(box.x1, b.x1),
+                                 std::max(box.y1, b.y1)};
+    if (std::isnan(r[0]) || std::isnan(r[1]) || std::isnan(range[0])) {
+      range = {std::nan(""), std::nan("")};
+      return;
+    }
+    range = {std::min(range[0], r[0]), std::max(range[1], r[1])};
+  }
+  bool Contains(int x, int y) const { return x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1; }
+};
+
 // A draw's vertices bounded in clip space and, for those inside the view volume, mapped to the
 // framebuffer once for all the triangles that share them.
 struct DrawGeometry {
@@ -101,23 +139,24 @@ class Primitives {
   Primitives(const Scene& scene, const DrawList& list, const VerifyOptions& options)
       : list_(list),
         subpixel_bits_(options.subpixel_bits),
+        fast_(options.fast_paths),
         line_rules_(options.strict_lines ? LineRules::kStrict : LineRules::kNotStrict),
         neighbours_(list.meshes.size()) {
     if (list.lighting && !list.wireframe) light_.emplace(scene);
   }
 
-  // visit(shape, flat colour, triangle index, whether unclipped) with a TriangleShape or a
-  // LineShape; `colours` asks for lit corner colours (pass 2 only).
-  template <class Visit>
-  void ForEach(bool colours, Visit&& visit) const {
-    DrawGeometry g;
-    for (std::size_t d = 0; d < list_.draws.size(); ++d) ForEachInDraw(d, colours, g, visit);
-  }
-
+  // visit(shape, flat colour, triangle index, whether unclipped) for each primitive of draw d, with
+  // a TriangleShape or a LineShape; `colours` asks for lit corner colours (pass 2 only).
   template <class Visit>
   void ForEachInDraw(std::size_t d, bool colours, DrawGeometry& g, Visit&& visit) const {
-    const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
     Prepare(d, g);
+    VisitDraw(d, colours, g, visit);
+  }
+
+  // ForEachInDraw once Prepare(d, g) has run.
+  template <class Visit>
+  void VisitDraw(std::size_t d, bool colours, const DrawGeometry& g, Visit&& visit) const {
+    const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
     const bool lit = mesh.shading != Shading::kUnlit && light_;
     std::vector<std::array<glm::dvec3, 3>> corner;
     if (lit && colours) corner = light_->CornerColours(d);
@@ -171,34 +210,45 @@ class Primitives {
   // another triangle of the mesh is covered by one of the two whichever way the edge moves (the
   // vertices are the same for both, and the spec's tie rule leaves no gap between them): certain,
   // with the farther of the two depths.
-  void Occlude(FrameJudge& judge) {
+  // Returns the draws that reach the band (pass 2 and AllowedAt need no others), in draw order.
+  std::vector<DrawReach> Occlude(FrameJudge& judge) {
     const std::uint32_t w = list_.width, h = list_.height;
     DrawGeometry g;
+    std::vector<DrawReach> reaching;
     std::size_t since_refresh = 0;
     for (std::size_t d = 0; d < list_.draws.size(); ++d) {
       const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
+      since_refresh += mesh.triangles.size();
+      Prepare(d, g);
+      if (fast_ && MissesRows(g, judge.Clip({0, 0, 0, int(h) - 1}))) continue;
       auto& nb = neighbours_[list_.draws[d].mesh];
       if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
-      ForEachInDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+      DrawReach reach;
+      reach.draw = d;
+      VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
         const PixelBox box = judge.Clip(shape.Box(w, h));
-        if (!judge.CouldMatter(box, shape.DepthRange(), false)) return;
+        if (box.Empty()) return;
+        const std::array<double, 2> range = shape.DepthRange();
+        reach.Add(box, range);
+        if (!judge.CouldMatter(box, range, false)) return;
         if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
           if (unclipped) {
-            OccludeWithNeighbours(judge, shape, box, mesh, *nb, t, g);
+            OccludeWithNeighbours(judge, shape, box, TileCull{judge, range, false, fast_}, mesh, *nb, t, g);
             return;
           }
         }
-        Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+        Scan(shape, box, TileCull{judge, range, false, fast_}, [&](int x, int y, glm::dvec2 p, Coverage c) {
           if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
         });
       });
-      since_refresh += mesh.triangles.size();
+      if (!reach.box.Empty()) reaching.push_back(reach);
       if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
     }
     judge.RefreshTiles();
+    return reaching;
   }
 
- private:
+  // A draw's vertices bounded and, where inside the view volume, mapped to the framebuffer.
   void Prepare(std::size_t d, DrawGeometry& g) const {
     const DrawCall& draw = list_.draws[d];
     BoundVertices(draw.F, list_.meshes[draw.mesh].positions, g.clip);
@@ -210,11 +260,31 @@ class Primitives {
     }
   }
 
+ private:
+  // Whether no triangle of the prepared draw can reach rows [rows.y0, rows.y1]: each triangle's
+  // Box lies within its draw's vertices' extent widened by the largest radius any of them has.
+  // Wireframes and draws that clipping cuts are not culled here.
+  bool MissesRows(const DrawGeometry& g, const PixelBox& rows) const {
+    if (list_.wireframe) return false;
+    double y0 = std::numeric_limits<double>::infinity(), y1 = -y0, error = 0;
+    for (std::size_t i = 0; i < g.clip.size(); ++i) {
+      if (!g.inside[i]) return false;
+      y0 = std::min(y0, g.window[i].xy.y), y1 = std::max(y1, g.window[i].xy.y);
+      error = std::max(error, g.window[i].xy_error);
+    }
+    const double radius = std::sqrt(2.0) * error;  // as TriangleShape's, so never smaller than one
+    y0 -= radius, y1 += radius;
+    if (!std::isfinite(y0) || !std::isfinite(y1)) return false;
+    // A box's rows are those whose centres y + 0.5 lie in [y0, y1].
+    return y1 < rows.y0 + 0.5 || y0 > rows.y1 + 0.5;
+  }
+
   static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
-                                    const DrawMesh& mesh, const std::vector<std::array<Neighbour, 3>>& nb,
-                                    std::size_t t, const DrawGeometry& g) {
+                                    const TileCull& keep, const DrawMesh& mesh,
+                                    const std::vector<std::array<Neighbour, 3>>& nb, std::size_t t,
+                                    const DrawGeometry& g) {
     std::array<std::optional<TriangleShape>, 3> across;
-    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+    Scan(shape, box, keep, [&](int x, int y, glm::dvec2 p, Coverage c) {
       if (c == Coverage::kIn) {
         judge.Occlude(x, y, shape.Depth(p));
         return;
@@ -251,49 +321,92 @@ class Primitives {
 
   const DrawList& list_;
   int subpixel_bits_;
+  bool fast_;  // VerifyOptions::fast_paths
   LineRules line_rules_;
   std::optional<ExactLight> light_;
   std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours_;  // per mesh, when needed
 };
 
-// Pass 2 at one pixel only, gathering what each surface that may show there allows.
-std::vector<ColourRange> AllowedAt(const Primitives& primitives, FrameJudge& judge, int x, int y) {
+// One band of rows: its own primitives' state, its judge, and the draws that reach it.
+struct Band {
+  Band(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0, int row1)
+      : primitives(scene, list, options),
+        judge(image, list.background, list.reversed_z, row0, row1),
+        fast(options.fast_paths) {}
+  Primitives primitives;
+  FrameJudge judge;
+  std::vector<DrawReach> reaching;
+  Verification counts;
+  bool fast = true;
+};
+
+// Pass 2 at one pixel of the band only, gathering what each surface that may show there allows:
+// only draws whose boxes in the band hold the pixel can.
+std::vector<ColourRange> AllowedAt(const Band& band, int x, int y) {
+  const FrameJudge& judge = band.judge;
   std::vector<ColourRange> allowed;
-  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
-    const PixelBox box = shape.Box(judge.width(), judge.height());
-    if (x < box.x0 || x > box.x1 || y < box.y0 || y > box.y1) return;
-    const Coverage c = shape.Covers(glm::dvec2(x + 0.5, y + 0.5));
-    if (c == Coverage::kOut) return;
-    const glm::dvec2 p(x + 0.5, y + 0.5);
-    const ColourRange colours = shape.Colour(p, flat);
-    if (judge.MayShow(x, y, shape.Depth(p)) && std::find(allowed.begin(), allowed.end(), colours) == allowed.end()) {
-      allowed.push_back(colours);
-    }
-  });
+  DrawGeometry g;
+  for (const DrawReach& reach : band.reaching) {
+    if (!reach.Contains(x, y)) continue;
+    band.primitives.ForEachInDraw(reach.draw, true, g, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
+      const PixelBox box = shape.Box(judge.width(), judge.height());
+      if (x < box.x0 || x > box.x1 || y < box.y0 || y > box.y1) return;
+      const Coverage c = shape.Covers(glm::dvec2(x + 0.5, y + 0.5));
+      if (c == Coverage::kOut) return;
+      const glm::dvec2 p(x + 0.5, y + 0.5);
+      const ColourRange colours = shape.Colour(p, flat);
+      if (judge.MayShow(x, y, shape.Depth(p)) && std::find(allowed.begin(), allowed.end(), colours) == allowed.end()) {
+        allowed.push_back(colours);
+      }
+    });
+  }
   if (judge.BackgroundMayShow(x, y)) allowed.push_back(ColourRange::Exactly(judge.background()));
   return allowed;
 }
 
 // One band of rows judged whole: both passes, then each pixel's class into `pixels` (the whole
-// frame's; the band writes only its rows) and the band's counts into `counts`.
-void JudgeBand(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0,
-               int row1, Verification& counts, std::vector<PixelClass>& pixels) {
-  Primitives primitives(scene, list, options);
-  FrameJudge judge(image, list.background, list.reversed_z, row0, row1);
+// frame's; the band writes only its rows) and the band's counts.
+void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) {
+  FrameJudge& judge = band.judge;
   const std::uint32_t w = image.width, h = image.height;
-  primitives.Occlude(judge);
+  band.reaching = band.primitives.Occlude(judge);
   // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
-  primitives.ForEach(true, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
+  const auto offer = [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
     const PixelBox box = judge.Clip(shape.Box(w, h));
-    if (!judge.CouldMatter(box, shape.DepthRange(), true)) return;
+    const std::array<double, 2> range = shape.DepthRange();
+    if (!judge.CouldMatter(box, range, true)) return;
     constexpr bool kLine = std::is_same_v<std::decay_t<decltype(shape)>, LineShape>;
-    Scan(shape, box, [&](int x, int y, glm::dvec2 p, Coverage c) {
+    Scan(shape, box, TileCull{judge, range, true, band.fast}, [&](int x, int y, glm::dvec2 p, Coverage c) {
       if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat), kLine && c == Coverage::kIn);
     });
-  });
-  judge.Finish(counts, pixels);
-  for (std::optional<Violation>* v : {&counts.worst, &counts.first}) {
-    if (*v) (*v)->allowed = AllowedAt(primitives, judge, int((*v)->x), int((*v)->y));
+  };
+  DrawGeometry g;
+  for (const DrawReach& reach : band.reaching) {
+    if (!band.fast || judge.CouldMatter(reach.box, reach.range, true))
+      band.primitives.ForEachInDraw(reach.draw, true, g, offer);
+  }
+  judge.Finish(band.counts, pixels);
+}
+
+// The bands' counts summed; the first violation is the first band's, the worst the first of the
+// largest distance. The colours allowed are gathered for those two pixels only.
+void Merge(const std::vector<std::unique_ptr<Band>>& bands, Verification& result) {
+  const Band* first = nullptr;
+  const Band* worst = nullptr;
+  for (const auto& band : bands) {  // top to bottom
+    const Verification& b = band->counts;
+    result.certain += b.certain, result.uncertain += b.uncertain, result.violations += b.violations;
+    result.covered += b.covered, result.uncertain_shared_edges += b.uncertain_shared_edges;
+    result.background_excluded += b.background_excluded;
+    if (!result.first && b.first) result.first = b.first, first = band.get();
+    if (b.worst && (!result.worst || b.worst->distance > result.worst->distance))
+      result.worst = b.worst, worst = band.get();
+  }
+  if (first) result.first->allowed = AllowedAt(*first, int(result.first->x), int(result.first->y));
+  if (worst) {
+    const bool same = first && result.first->x == result.worst->x && result.first->y == result.worst->y;
+    result.worst->allowed =
+        same ? result.first->allowed : AllowedAt(*worst, int(result.worst->x), int(result.worst->y));
   }
 }
 
@@ -309,22 +422,17 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   const int rows = int(image.height);
   const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
   const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
-  std::vector<Verification> bands(std::size_t((rows + band_rows - 1) / band_rows));
+  std::vector<std::unique_ptr<Band>> bands(std::size_t((rows + band_rows - 1) / band_rows));
   std::vector<std::future<void>> running;
   for (std::size_t b = 0; b < bands.size(); ++b) {
     const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
     running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
-      JudgeBand(scene, list, image, options, row0, row1, bands[b], result.pixels);
+      bands[b] = std::make_unique<Band>(scene, list, image, options, row0, row1);  // its set-up on its thread
+      JudgeBand(*bands[b], image, result.pixels);
     }));
   }
-  for (auto& r : running) r.get();          // rethrows a band's exception
-  for (const Verification& band : bands) {  // top to bottom: the first violation is the first band's
-    result.certain += band.certain, result.uncertain += band.uncertain, result.violations += band.violations;
-    result.covered += band.covered, result.uncertain_shared_edges += band.uncertain_shared_edges;
-    result.background_excluded += band.background_excluded;
-    if (!result.first && band.first) result.first = band.first;
-    if (band.worst && (!result.worst || band.worst->distance > result.worst->distance)) result.worst = band.worst;
-  }
+  for (auto& r : running) r.get();  // rethrows a band's exception
+  Merge(bands, result);
   return result;
 }
 
