@@ -30,16 +30,17 @@ std::vector<std::string> InstalledExtraDrivers() {
   return files;
 }
 
-// The name Mesa gives lavapipe's manifest on this architecture (its meson.build: the host CPU
-// family, as uname -m says it).
-constexpr std::string_view kLavapipeManifest =
+// The names Mesa gives lavapipe's manifest: per architecture (Mesa 22.3, Debian 12: its
+// meson.build names the host CPU family, as uname -m says it), or one name for all (Mesa 25.0,
+// Debian 13, whose manifest names the library without a directory).
+constexpr std::string_view kLavapipeManifests[] = {
 #if defined(__x86_64__)
-    "lvp_icd.x86_64.json";
+    "lvp_icd.x86_64.json",
 #elif defined(__aarch64__)
-    "lvp_icd.aarch64.json";
-#else
-    "";  // not guessed: every driver is loaded
+    "lvp_icd.aarch64.json",
 #endif
+    "lvp_icd.json",
+};
 
 // The loader's system search path for drivers (its docs, "Linux Driver Discovery"): /etc, then
 // each XDG data directory, under vulkan/icd.d.
@@ -56,11 +57,12 @@ std::vector<std::filesystem::path> DriverDirectories() {
 }
 
 std::string InstalledLavapipeManifest() {
-  if (kLavapipeManifest.empty()) return "";
   std::error_code error;  // unreadable counts as absent
   for (const std::filesystem::path& directory : DriverDirectories()) {
-    const std::filesystem::path file = directory / kLavapipeManifest;
-    if (std::filesystem::exists(file, error)) return file.string();
+    for (const std::string_view name : kLavapipeManifests) {
+      const std::filesystem::path file = directory / name;
+      if (std::filesystem::exists(file, error)) return file.string();
+    }
   }
   return "";
 }

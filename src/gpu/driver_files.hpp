@@ -39,13 +39,12 @@ class ExtraDriverOffer {
 };
 
 // For its lifetime, when no loader variable that chooses drivers is in the environment and
-// lavapipe's manifest for this machine's architecture is installed, sets VK_DRIVER_FILES to that
-// manifest alone, and unsets it again when destroyed. The loader loads every driver it finds when
-// an instance is created; each Mesa driver maps and relocates a large library (tens of
-// milliseconds for all of Debian's), and the default device is lavapipe whenever it is
-// installed. (VK_LOADER_DRIVERS_SELECT would filter too, but the loader then warns through the
-// validation messenger about every driver it leaves out.) The caller falls back to every driver
-// when this finds no usable device.
+// lavapipe's manifest is installed (lvp_icd.<arch>.json, or lvp_icd.json from Mesa 25), sets
+// VK_DRIVER_FILES to that manifest alone, and unsets it again when destroyed. The loader loads every driver it finds
+// when an instance is created; each Mesa driver maps and relocates a large library (tens of milliseconds for all of
+// Debian's), and the default device is lavapipe whenever it is installed. (VK_LOADER_DRIVERS_SELECT would filter too,
+// but the loader then warns through the validation messenger about every driver it leaves out.) The caller falls back
+// to every driver when this finds no usable device.
 class LavapipeAlone {
  public:
   LavapipeAlone();
