@@ -5,6 +5,7 @@
 #include "verify/pixel_judge.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <limits>
@@ -132,6 +133,13 @@ struct DrawGeometry {
   std::vector<char> inside;
 };
 
+// A draw prepared once for all the bands: its geometry, and the extent of the rows its triangles
+// may reach (none when unknown: the draw reaches every band).
+struct PreparedDraw {
+  DrawGeometry g;
+  std::optional<std::array<double, 2>> rows;
+};
+
 // Every primitive the scene draws, in draw order and bounded: the triangles of each clipped fan,
 // or in wireframe each clipped polygon's edges.
 class Primitives {
@@ -205,47 +213,50 @@ class Primitives {
     }
   }
 
-  // Pass 1: the nearest surface certain to be written at each pixel, and the farthest depth it
-  // may have there. A centre inside a triangle but within reach of one edge it shares with
-  // another triangle of the mesh is covered by one of the two whichever way the edge moves (the
-  // vertices are the same for both, and the spec's tie rule leaves no gap between them): certain,
-  // with the farther of the two depths.
-  // Returns the draws that reach the band (pass 2 and AllowedAt need no others), in draw order.
-  std::vector<DrawReach> Occlude(FrameJudge& judge) {
+  // Pass 1 for draw d, `prepared` by PrepareShared: the nearest surface certain to be written at
+  // each pixel, and the farthest depth it may have there. A centre inside a triangle but within reach
+  // of one edge it shares with another triangle of the mesh is covered by one of the two whichever way
+  // the edge moves (the vertices are the same for both, and the spec's tie rule leaves no gap between
+  // them): certain, with the farther of the two depths.
+  // Appends the draw to `reaching` if it reaches the band (pass 2 and AllowedAt need no others).
+  // `since_refresh` counts the triangles since the judge's tiles were last refreshed.
+  void OccludeDraw(FrameJudge& judge, std::size_t d, const PreparedDraw& prepared, std::vector<DrawReach>& reaching,
+                   std::size_t& since_refresh) {
     const std::uint32_t w = list_.width, h = list_.height;
-    DrawGeometry g;
-    std::vector<DrawReach> reaching;
-    std::size_t since_refresh = 0;
-    for (std::size_t d = 0; d < list_.draws.size(); ++d) {
-      const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
-      since_refresh += mesh.triangles.size();
-      Prepare(d, g);
-      if (fast_ && MissesRows(g, judge.Clip({0, 0, 0, int(h) - 1}))) continue;
-      auto& nb = neighbours_[list_.draws[d].mesh];
-      if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
-      DrawReach reach;
-      reach.draw = d;
-      VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
-        const PixelBox box = judge.Clip(shape.Box(w, h));
-        if (box.Empty()) return;
-        const std::array<double, 2> range = shape.DepthRange();
-        reach.Add(box, range);
-        if (!judge.CouldMatter(box, range, false)) return;
-        if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
-          if (unclipped) {
-            OccludeWithNeighbours(judge, shape, box, TileCull{judge, range, false, fast_}, mesh, *nb, t, g);
-            return;
-          }
+    const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
+    since_refresh += mesh.triangles.size();
+    const PixelBox rows = judge.Clip({0, 0, 0, int(h) - 1});
+    const auto& extent = prepared.rows;
+    if (fast_ && extent && ((*extent)[1] < rows.y0 + 0.5 || (*extent)[0] > rows.y1 + 0.5)) return;
+    auto& nb = neighbours_[list_.draws[d].mesh];
+    if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
+    const DrawGeometry& g = prepared.g;
+    DrawReach reach;
+    reach.draw = d;
+    VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+      const PixelBox box = judge.Clip(shape.Box(w, h));
+      if (box.Empty()) return;
+      const std::array<double, 2> range = shape.DepthRange();
+      reach.Add(box, range);
+      if (!judge.CouldMatter(box, range, false)) return;
+      if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
+        if (unclipped) {
+          OccludeWithNeighbours(judge, shape, box, TileCull{judge, range, false, fast_}, mesh, *nb, t, g);
+          return;
         }
-        Scan(shape, box, TileCull{judge, range, false, fast_}, [&](int x, int y, glm::dvec2 p, Coverage c) {
-          if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
-        });
+      }
+      Scan(shape, box, TileCull{judge, range, false, fast_}, [&](int x, int y, glm::dvec2 p, Coverage c) {
+        if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
       });
-      if (!reach.box.Empty()) reaching.push_back(reach);
-      if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
-    }
-    judge.RefreshTiles();
-    return reaching;
+    });
+    if (!reach.box.Empty()) reaching.push_back(reach);
+    if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
+  }
+
+  // Draw d prepared for every band's pass 1: its geometry and the rows its triangles may reach.
+  void PrepareShared(std::size_t d, PreparedDraw& p) const {
+    Prepare(d, p.g);
+    p.rows = RowExtent(p.g);
   }
 
   // A draw's vertices bounded and, where inside the view volume, mapped to the framebuffer.
@@ -261,22 +272,22 @@ class Primitives {
   }
 
  private:
-  // Whether no triangle of the prepared draw can reach rows [rows.y0, rows.y1]: each triangle's
-  // Box lies within its draw's vertices' extent widened by the largest radius any of them has.
-  // Wireframes and draws that clipping cuts are not culled here.
-  bool MissesRows(const DrawGeometry& g, const PixelBox& rows) const {
-    if (list_.wireframe) return false;
+  // The extent in y of the rows the prepared draw's triangles may reach (a box's rows are those
+  // whose centres y + 0.5 lie in it): each triangle's Box lies within its draw's vertices' extent
+  // widened by the largest radius any of them has. None for wireframes and draws that clipping
+  // cuts, which are never culled by rows.
+  std::optional<std::array<double, 2>> RowExtent(const DrawGeometry& g) const {
+    if (list_.wireframe) return std::nullopt;
     double y0 = std::numeric_limits<double>::infinity(), y1 = -y0, error = 0;
     for (std::size_t i = 0; i < g.clip.size(); ++i) {
-      if (!g.inside[i]) return false;
+      if (!g.inside[i]) return std::nullopt;
       y0 = std::min(y0, g.window[i].xy.y), y1 = std::max(y1, g.window[i].xy.y);
       error = std::max(error, g.window[i].xy_error);
     }
     const double radius = std::sqrt(2.0) * error;  // as TriangleShape's, so never smaller than one
     y0 -= radius, y1 += radius;
-    if (!std::isfinite(y0) || !std::isfinite(y1)) return false;
-    // A box's rows are those whose centres y + 0.5 lie in [y0, y1].
-    return y1 < rows.y0 + 0.5 || y0 > rows.y1 + 0.5;
+    if (!std::isfinite(y0) || !std::isfinite(y1)) return std::nullopt;
+    return std::array<double, 2>{y0, y1};
   }
 
   static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
@@ -364,12 +375,110 @@ std::vector<ColourRange> AllowedAt(const Band& band, int x, int y) {
   return allowed;
 }
 
-// One band of rows judged whole: both passes, then each pixel's class into `pixels` (the whole
-// frame's; the band writes only its rows) and the band's counts.
+// What the bands share in pass 1: each draw is prepared once for the frame, a chunk of draws at a
+// time, by whichever band first reaches the chunk before it, into a ring of chunks that every band
+// then reads in draw order. Whole chunks, so that no two cores write the same cache lines. A band
+// ahead of the others prepares for them; one behind finds its draws ready. A chunk's slot is reused
+// only once every band has finished with the chunk it held.
+class SharedPass1 {
+ public:
+  static constexpr std::size_t kChunk = 256, kSlots = 16;        // draws
+  static constexpr std::size_t kBudget = std::size_t{64} << 20;  // bytes of geometry the ring may hold
+
+  // Whether the ring of `list`'s draws fits the budget; if not, each band prepares its own draws.
+  static bool Fits(const DrawList& list) {
+    std::size_t vertices = 0;
+    for (const DrawMesh& mesh : list.meshes) vertices = std::max(vertices, mesh.positions.size());
+    const std::size_t per_vertex = sizeof(BoundedVertex) + sizeof(WindowVertex) + 1;
+    return vertices <= kBudget / per_vertex / (kChunk * kSlots);
+  }
+
+  SharedPass1(std::size_t bands, std::size_t draws) : bands_(bands), draws_(draws), slots_(kSlots) {
+    for (std::size_t s = 0; s < kSlots; ++s) {
+      slots_[s].draws.resize(kChunk);
+      slots_[s].writable.store(s);
+    }
+  }
+
+  // Draw d, prepared. The band asking prepares (with `primitives`) the chunks up to the one after
+  // d's that no band has claimed yet, so that the next chunk is usually ready when it is reached.
+  const PreparedDraw& Get(std::size_t d, const Primitives& primitives) {
+    for (std::size_t c = next_.load(); c <= d / kChunk + 1; c = next_.load()) {
+      if (next_.compare_exchange_weak(c, c + 1)) Prepare(c, primitives);
+    }
+    Slot& slot = slots_[d / kChunk % kSlots];
+    WaitFor([&] { return slot.ready.load(std::memory_order_acquire) == d / kChunk + 1; });
+    return slot.draws[d % kChunk];
+  }
+
+  // One band is done with `chunk` (called after its last draw, or the frame's).
+  void Finished(std::size_t chunk) {
+    Slot& slot = slots_[chunk % kSlots];
+    if (slot.finished.fetch_add(1, std::memory_order_acq_rel) + 1 == bands_) {
+      slot.finished.store(0, std::memory_order_relaxed);  // before any band can finish the next chunk
+      slot.writable.store(chunk + kSlots, std::memory_order_release);
+    }
+  }
+
+  void Fail() { failed_ = true; }  // a band threw: the others stop rather than wait for it
+
+ private:
+  struct Slot {
+    std::vector<PreparedDraw> draws;
+    std::atomic<std::size_t> ready{0};     // the chunk held + 1 once prepared
+    std::atomic<std::size_t> writable{0};  // the chunk that may be written here
+    std::atomic<std::size_t> finished{0};  // bands done with the chunk held
+  };
+
+  void Prepare(std::size_t chunk, const Primitives& primitives) {
+    if (chunk * kChunk >= draws_) return;
+    Slot& slot = slots_[chunk % kSlots];
+    WaitFor([&] { return slot.writable.load(std::memory_order_acquire) == chunk; });
+    for (std::size_t d = chunk * kChunk; d < std::min(draws_, (chunk + 1) * kChunk); ++d) {
+      primitives.PrepareShared(d, slot.draws[d % kChunk]);
+    }
+    slot.ready.store(chunk + 1, std::memory_order_release);
+  }
+
+  // Yields while waiting: the band waited for may need this core.
+  template <class Done>
+  void WaitFor(Done&& done) const {
+    while (!done()) {
+      if (failed_) throw std::runtime_error("another band of the frame failed");
+      std::this_thread::yield();
+    }
+  }
+
+  std::size_t bands_, draws_;
+  std::vector<Slot> slots_;
+  std::atomic<std::size_t> next_{0};  // the first chunk no band has claimed
+  std::atomic<bool> failed_{false};
+};
+
+// Pass 1 of one band, with the draws prepared through `shared`, or by the band itself when null.
+void OccludeShared(Band& band, SharedPass1* shared, std::size_t draws) {
+  std::size_t since_refresh = 0;
+  if (!shared) {
+    PreparedDraw own;
+    for (std::size_t d = 0; d < draws; ++d) {
+      band.primitives.PrepareShared(d, own);
+      band.primitives.OccludeDraw(band.judge, d, own, band.reaching, since_refresh);
+    }
+    band.judge.RefreshTiles();
+    return;
+  }
+  for (std::size_t d = 0; d < draws; ++d) {
+    band.primitives.OccludeDraw(band.judge, d, shared->Get(d, band.primitives), band.reaching, since_refresh);
+    if ((d + 1) % SharedPass1::kChunk == 0 || d + 1 == draws) shared->Finished(d / SharedPass1::kChunk);
+  }
+  band.judge.RefreshTiles();
+}
+
+// One band of rows judged whole once pass 1 has run: pass 2, then each pixel's class into `pixels`
+// (the whole frame's; the band writes only its rows) and the band's counts.
 void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) {
   FrameJudge& judge = band.judge;
   const std::uint32_t w = image.width, h = image.height;
-  band.reaching = band.primitives.Occlude(judge);
   // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
   const auto offer = [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
     const PixelBox box = judge.Clip(shape.Box(w, h));
@@ -418,18 +527,33 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   result.width = image.width, result.height = image.height, result.options = options;
   result.pixels.resize(std::size_t{image.width} * image.height);
   // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
-  // its own pixels, so they share nothing but the read-only inputs and the pixel classes.
+  // its own pixels, so they share only the read-only inputs, the draws prepared for pass 1
+  // (SharedPass1) and the pixel classes.
   const int rows = int(image.height);
   const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
   const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
   std::vector<std::unique_ptr<Band>> bands(std::size_t((rows + band_rows - 1) / band_rows));
+  std::optional<SharedPass1> shared;
+  if (SharedPass1::Fits(list)) shared.emplace(bands.size(), list.draws.size());
   std::vector<std::future<void>> running;
+  running.reserve(bands.size());  // so that only std::async can throw below
   for (std::size_t b = 0; b < bands.size(); ++b) {
     const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
-    running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
-      bands[b] = std::make_unique<Band>(scene, list, image, options, row0, row1);  // its set-up on its thread
-      JudgeBand(*bands[b], image, result.pixels);
-    }));
+    try {
+      running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
+        try {
+          bands[b] = std::make_unique<Band>(scene, list, image, options, row0, row1);  // its set-up on its thread
+          OccludeShared(*bands[b], shared ? &*shared : nullptr, list.draws.size());
+        } catch (...) {
+          if (shared) shared->Fail();
+          throw;
+        }
+        JudgeBand(*bands[b], image, result.pixels);
+      }));
+    } catch (...) {  // no thread for band b: the others must not wait for it
+      if (shared) shared->Fail();
+      throw;
+    }
   }
   for (auto& r : running) r.get();  // rethrows a band's exception
   Merge(bands, result);
