@@ -77,15 +77,7 @@ struct CompressorDeleter {
   void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
-// The zlib stream (RFC 1950) of the image's filtered scanlines: at the fastest level the run
-// encoder's (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's.
-std::vector<std::uint8_t> LibdeflateStream(const Image& image, int level);
-
-std::vector<std::uint8_t> ZlibStream(const Image& image, int level) {
-  if (level == kPngFastest) return png_runs::ZlibStream(image);
-  return LibdeflateStream(image, level);
-}
-
+// The zlib stream (RFC 1950) of the image's filtered scanlines, deflated by libdeflate at `level`.
 std::vector<std::uint8_t> LibdeflateStream(const Image& image, int level) {
   std::vector<std::uint8_t> raw(png_scanlines::RowBytes(image) * image.height);
   png_scanlines::FilterRows(image, 0, image.height, raw.data());
@@ -96,6 +88,13 @@ std::vector<std::uint8_t> LibdeflateStream(const Image& image, int level) {
   if (size == 0) throw FileError("PNG encoding failed");  // cannot happen with a bound-sized buffer
   zlib.resize(size);
   return zlib;
+}
+
+// The zlib stream (RFC 1950) of the image's filtered scanlines: at the fastest level the run
+// encoder's (png_runs.hpp), which for rendered frames is faster and no larger; else libdeflate's.
+std::vector<std::uint8_t> ZlibStream(const Image& image, int level) {
+  if (level == kPngFastest) return png_runs::ZlibStream(image);
+  return LibdeflateStream(image, level);
 }
 
 // The checks every encoding makes before any work.

@@ -57,7 +57,7 @@ void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gp
   record.twin = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
   if (!twin || !(twin_rules->rules == record.twin->rules)) {
     Say(status, "cpu: drawing...");
-    twin = Twin(list, device, options, record.twin);
+    twin = DrawOnTwin(list, record.twin->rules, options.threads);
   }
   runs.push_back(std::move(*twin));
 }
