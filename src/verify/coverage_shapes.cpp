@@ -8,8 +8,6 @@ namespace twinraster::verify {
 
 namespace {
 
-constexpr double kUnit = 0x1p-24;
-
 double Cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 double SegmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
@@ -60,10 +58,10 @@ TriangleShape::TriangleShape(const WindowVertex& a, const WindowVertex& b, const
     gradient_ = glm::dvec2(dz1 * e2.y - dz2 * e1.y, dz2 * e1.x - dz1 * e2.x) / area2_;
     const double condition = (std::abs(e1.x * e2.y) + std::abs(e1.y * e2.x)) / std::abs(area2_);
     // Vertices that moved by up to `radius` move the plane by |g| radius at a covered centre.
-    depth_error_ = z_error + glm::length(gradient_) * radius_ + 4 * kUnit * z_max;
-    depth_relative_ = 4 * kUnit + 8 * kUnit * condition;
+    depth_error_ = z_error + glm::length(gradient_) * radius_ + 4 * kFloatUnit * z_max;
+    depth_relative_ = 4 * kFloatUnit + 8 * kFloatUnit * condition;
   } else {
-    depth_error_ = z_error + 4 * kUnit * z_max;
+    depth_error_ = z_error + 4 * kFloatUnit * z_max;
   }
 }
 
@@ -124,7 +122,7 @@ std::array<double, 2> TriangleShape::DepthRange() const {
       (std::max({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) - std::min({v_[0].xy.x, v_[1].xy.x, v_[2].xy.x}) +
        std::max({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) - std::min({v_[0].xy.y, v_[1].xy.y, v_[2].xy.y}) + 2 * radius_);
   const double e = depth_error_ + glm::length(gradient_) * radius_ + depth_relative_ * extent +
-                   4 * kUnit * std::max(std::abs(lo), std::abs(hi)) + 4 * kUnit * extent;
+                   4 * kFloatUnit * std::max(std::abs(lo), std::abs(hi)) + 4 * kFloatUnit * extent;
   return {lo - e, hi + e};
 }
 
@@ -177,21 +175,27 @@ std::array<double, 3> TriangleShape::EdgeDistances(glm::dvec2 p) const {
           glm::dot(e.normal[2], p) + e.offset[2]};
 }
 
-std::array<double, 2> TriangleShape::Depth(glm::dvec2 p) const {
-  if (orientation_ == 0 || !std::isfinite(radius_)) {
-    const double lo = std::min({v_[0].z, v_[1].z, v_[2].z}), hi = std::max({v_[0].z, v_[1].z, v_[2].z});
-    const double e = std::isfinite(radius_) ? depth_error_ : std::numeric_limits<double>::infinity();
-    return {lo - e, hi + e};
-  }
-  const glm::dvec2 d = p - v_[0].xy;
-  const double gx = gradient_.x * d.x, gy = gradient_.y * d.y;
-  const double z = v_[0].z + gx + gy;
-  const double e = depth_error_ + depth_relative_ * (std::abs(gx) + std::abs(gy)) + 4 * kUnit * std::abs(z);
-  return {z - e, z + e};
+std::array<double, 2> TriangleShape::DepthAnywhere() const {
+  const double lo = std::min({v_[0].z, v_[1].z, v_[2].z}), hi = std::max({v_[0].z, v_[1].z, v_[2].z});
+  const double e = std::isfinite(radius_) ? depth_error_ : std::numeric_limits<double>::infinity();
+  return {lo - e, hi + e};
 }
 
-ColourRange TriangleShape::Colour(glm::dvec2 p, Rgb8 flat) const {
-  if (!lit_) return ColourRange::Exactly(flat);
+std::array<double, 2> TriangleShape::DepthAlong(int y, int x0, int x1) const {
+  if (orientation_ == 0 || !std::isfinite(radius_)) return DepthAnywhere();
+  // Along a row, the plane is linear and Depth's error convex, so both ends bound every centre
+  // between them, but for the rounding of Depth's own arithmetic there: a few units in the last
+  // place of its largest term, widened here by far more.
+  const glm::dvec2 a(x0 + 0.5, y + 0.5), b(x1 + 0.5, y + 0.5);
+  const std::array<double, 2> at_a = Depth(a), at_b = Depth(b);
+  const double size = std::abs(v_[0].z) +
+                      std::abs(gradient_.x) * std::max(std::abs(a.x - v_[0].xy.x), std::abs(b.x - v_[0].xy.x)) +
+                      std::abs(gradient_.y * (a.y - v_[0].xy.y)) + std::max(at_a[1] - at_a[0], at_b[1] - at_b[0]);
+  const double margin = 0x1p-40 * size;
+  return {std::min(at_a[0], at_b[0]) - margin, std::max(at_a[1], at_b[1]) + margin};
+}
+
+ColourRange TriangleShape::LitColour(glm::dvec2 p) const {
   glm::dvec3 lo(1.0), hi(0.0);
   const auto take = [&](glm::dvec3 c) {
     lo = glm::min(lo, c);
@@ -264,7 +268,7 @@ LineShape::LineShape(const WindowVertex& a, const WindowVertex& b, bool from_cli
   // Depth is interpolated along the line; which pixel gets which fraction may shift by up to a
   // pixel (plus the vertices' movement).
   const double depth_slope = along > 0 ? std::abs(b.z - a.z) / along : std::abs(b.z - a.z);
-  depth_error_ = std::max(a.z_error, b.z_error) + depth_slope * (1 + 2 * radius_) + 4 * kUnit * z_max;
+  depth_error_ = std::max(a.z_error, b.z_error) + depth_slope * (1 + 2 * radius_) + 4 * kFloatUnit * z_max;
 }
 
 PixelBox LineShape::Box(std::uint32_t width, std::uint32_t height) const {

@@ -9,11 +9,16 @@
 #include <glm/vec2.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace twinraster::verify {
 
 enum class Coverage : std::uint8_t { kOut, kMaybe, kIn };
+
+// The relative error of one rounding to float (unit roundoff): what each float operation of the
+// device's may add.
+inline constexpr double kFloatUnit = 0x1p-24;
 
 struct PixelBox {
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive
@@ -28,11 +33,21 @@ class TriangleShape {
   TriangleShape(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, bool lit);
   PixelBox Box(std::uint32_t width, std::uint32_t height) const;
   Coverage Covers(glm::dvec2 p) const;
-  // [lo, hi] of the depth a fragment at p may get (float interpolation, D32).
-  std::array<double, 2> Depth(glm::dvec2 p) const;
-  ColourRange Colour(glm::dvec2 p, Rgb8 flat) const;
+  // [lo, hi] of the depth a fragment at p may get (float interpolation, D32). Inline, as Colour:
+  // the verifier asks both at nearly every pixel it judges.
+  std::array<double, 2> Depth(glm::dvec2 p) const {
+    if (orientation_ == 0 || !std::isfinite(radius_)) return DepthAnywhere();
+    const glm::dvec2 d = p - v_[0].xy;
+    const double gx = gradient_.x * d.x, gy = gradient_.y * d.y;
+    const double z = v_[0].z + gx + gy;
+    const double e = depth_error_ + depth_relative_ * (std::abs(gx) + std::abs(gy)) + 4 * kFloatUnit * std::abs(z);
+    return {z - e, z + e};
+  }
+  ColourRange Colour(glm::dvec2 p, Rgb8 flat) const { return lit_ ? LitColour(p) : ColourRange::Exactly(flat); }
   // Bounds on the depth of any fragment it may make, anywhere.
   std::array<double, 2> DepthRange() const;
+  // Bounds on Depth(p) at every centre of row y's pixels x0..x1.
+  std::array<double, 2> DepthAlong(int y, int x0, int x1) const;
   // The pixels of row y whose centres are inside by more than any edge can move (Covers says kIn),
   // as {first, last}; first > last when there are none. Scanning skips the edge tests there.
   std::array<int, 2> InsideSpan(int y) const;
@@ -55,6 +70,8 @@ class TriangleShape {
     std::array<double, 3> outside_radius{};  // any vertex's movement along edge i's normal
   };
   const Edges& edges() const;
+  std::array<double, 2> DepthAnywhere() const;  // Depth where the plane is unknown: its corners' range
+  ColourRange LitColour(glm::dvec2 p) const;
 
   std::array<WindowVertex, 3> v_;
   bool lit_ = false;

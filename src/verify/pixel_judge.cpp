@@ -23,8 +23,7 @@ FrameJudge::FrameJudge(const Image& image, Rgb8 background, bool reversed_z, int
   state_ = BufferPool<State>::TakeAsLeft(pixels);
 }
 
-void FrameJudge::Use(std::size_t tile) {
-  if (used_[tile]) return;
+void FrameJudge::UseFirst(std::size_t tile) {
   used_[tile] = 1;
   const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
   const int x0 = tx * kTile, x1 = std::min(int(image_->width), x0 + kTile);
@@ -37,6 +36,12 @@ void FrameJudge::Use(std::size_t tile) {
 FrameJudge::~FrameJudge() {
   BufferPool<double>::Give(std::move(gap_));
   BufferPool<State>::Give(std::move(state_));
+}
+
+PixelBox FrameJudge::TileBox(std::size_t tile) const {
+  const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
+  return {tx * kTile, row0_ + ty * kTile, std::min(int(image_->width), (tx + 1) * kTile) - 1,
+          std::min(row1_, row0_ + (ty + 1) * kTile) - 1};
 }
 
 PixelBox FrameJudge::Clip(PixelBox box) const {
@@ -70,54 +75,22 @@ void FrameJudge::RefreshTiles() {
     is_dirty_[tile] = 0;
   }
   dirty_.clear();
+  lowered_ = 0;
 }
 
-Rgb8 FrameJudge::ImageColour(int x, int y) const {
-  const std::uint8_t* p = image_->pixel(std::uint32_t(x), std::uint32_t(y));
-  return {p[0], p[1], p[2]};
-}
-
-// Depth keys: the depth itself for LESS, its negation for GREATER, so that nearer is smaller.
-void FrameJudge::Occlude(int x, int y, std::array<double, 2> depth) {
-  const double far_key = reversed_ ? -depth[0] : depth[1];
-  // Written for sure only if it passes against the clear value whatever its depth.
-  if (!(clear_key_ - far_key > Gap(x, y))) return;
-  const std::size_t tile = TileOf(x, y);
-  Use(tile);
-  gap_[Index(x, y)] = clear_key_ - far_key;
-  if (!is_dirty_[tile]) is_dirty_[tile] = 1, dirty_.push_back(std::uint32_t(tile));
-}
-
-bool FrameJudge::MayShow(int x, int y, std::array<double, 2> depth) const {
-  const double near_key = reversed_ ? -depth[1] : depth[0];
-  const double near_gap = clear_key_ - near_key;
-  return near_gap > 0 && near_gap >= Gap(x, y);
-}
-
-void FrameJudge::Offer(int x, int y, const ColourRange& colours, bool certain_line) {
-  Use(TileOf(x, y));
-  State& s = state_[Index(x, y)];
-  const auto gap = [](std::uint8_t g, std::uint8_t hi) { return std::max<std::uint8_t>(g, std::uint8_t(255 - hi)); };
-  s.max_lo = {std::max(s.max_lo.r, colours.lo.r), std::max(s.max_lo.g, colours.lo.g),
-              std::max(s.max_lo.b, colours.lo.b)};
-  s.hi_gap = {gap(s.hi_gap.r, colours.hi.r), gap(s.hi_gap.g, colours.hi.g), gap(s.hi_gap.b, colours.hi.b)};
-  s.offers = std::uint8_t(std::min(2, s.offers + 1));
-  s.closeness = std::max<std::uint8_t>(s.closeness, std::uint8_t(255 - colours.Distance(ImageColour(x, y))));
-  s.background_closeness =
-      std::max<std::uint8_t>(s.background_closeness, std::uint8_t(255 - colours.Distance(background_)));
-  if (!certain_line) s.not_certain_line = 1;
-}
-
-void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels) {
+void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels, const SettledRun& settled) {
   int worst_distance = 0;
+  std::array<ColourRange, kTile> colours;
   for (int y = row0_; y < row1_; ++y) {  // in row order, for the first violation and the worst
     for (int x0 = 0; x0 < int(image_->width); x0 += kTile) {
       const int x1 = std::min(int(image_->width), x0 + kTile);
       if (!used_[TileOf(x0, y)]) {
         FinishUnused(x0, x1, y, v, worst_distance, pixels);
-        continue;
+      } else if (settled && settled(y, x0, x1 - 1, colours.data())) {
+        FinishSettled(x0, x1, y, colours.data(), v, worst_distance, pixels);
+      } else {
+        for (int x = x0; x < x1; ++x) FinishUsed(x, y, v, worst_distance, pixels);
       }
-      for (int x = x0; x < x1; ++x) FinishUsed(x, y, v, worst_distance, pixels);
     }
   }
 }
@@ -140,13 +113,43 @@ void FrameJudge::FinishUsed(int x, int y, Verification& v, int& worst_distance, 
 // background and a violation by its distance from it otherwise (what FinishUsed finds there too).
 void FrameJudge::FinishUnused(int x0, int x1, int y, Verification& v, int& worst_distance,
                               std::vector<PixelClass>& pixels) const {
+  PixelClass* out = pixels.data() + std::size_t(y) * image_->width;
+  if (ShowsOnly(x0, x1, y, background_)) {  // the usual case, without classing pixel by pixel
+    std::fill(out + x0, out + x1, PixelClass::kCertain);
+    v.certain += std::uint64_t(x1 - x0);
+    return;
+  }
   const ColourRange background = ColourRange::Exactly(background_);
   for (int x = x0; x < x1; ++x) {
     const int distance = background.Distance(ImageColour(x, y));
     const PixelClass c = distance > 0 ? PixelClass::kViolation : PixelClass::kCertain;
-    pixels[std::size_t(y) * image_->width + std::size_t(x)] = c;
+    out[x] = c;
     Count(x, y, c, distance, worst_distance, v);
   }
+}
+
+// Pixels one surface settles: its offer, `colours`, is the only one and no background is offered
+// (a surface is certain at each), so each is covered, never uncertain, and a violation by its
+// distance from that offer (what FinishUsed finds after the surface's offers).
+void FrameJudge::FinishSettled(int x0, int x1, int y, const ColourRange* colours, Verification& v, int& worst_distance,
+                               std::vector<PixelClass>& pixels) const {
+  PixelClass* out = pixels.data() + std::size_t(y) * image_->width;
+  v.covered += std::uint64_t(x1 - x0);
+  for (int x = x0; x < x1; ++x) {
+    const ColourRange& colour = colours[x - x0];
+    if (colour.Distance(background_) > 0) ++v.background_excluded;
+    const int distance = colour.Distance(ImageColour(x, y));
+    const PixelClass c = distance > 0 ? PixelClass::kViolation : PixelClass::kCertain;
+    out[x] = c;
+    Count(x, y, c, distance, worst_distance, v);
+  }
+}
+
+bool FrameJudge::ShowsOnly(int x0, int x1, int y, Rgb8 colour) const {
+  const std::uint8_t* p = image_->pixel(std::uint32_t(x0), std::uint32_t(y));
+  bool same = true;
+  for (int x = x0; x < x1; ++x, p += 4) same &= p[0] == colour.r && p[1] == colour.g && p[2] == colour.b;
+  return same;
 }
 
 void FrameJudge::Count(int x, int y, PixelClass c, int distance, int& worst_distance, Verification& v) const {

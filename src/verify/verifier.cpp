@@ -3,6 +3,7 @@
 #include "truth/truth_renderer.hpp"
 #include "verify/coverage_shapes.hpp"
 #include "verify/pixel_judge.hpp"
+#include "verify/sole_surfaces.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -37,10 +38,11 @@ void CheckInputs(const Scene& scene, const DrawList& list, const Image& image, c
 }
 
 // visit(x, y, centre, coverage) for each pixel of `box` the shape may cover. A triangle's rows
-// are inside in their middle: those pixels are visited without testing the edges. `keep(y, x0, x1)`
-// is asked first for each row's run of pixels within one tile, which is skipped when it says no.
-template <class Shape, class Keep, class Visit>
-void Scan(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit) {
+// are inside in their middle: those pixels are visited without testing the edges, a run of them
+// within one tile at a time, by inside(y, x0, x1). `keep(y, x0, x1)` is asked first for each row's
+// run of pixels within one tile, which is skipped when it says no.
+template <class Shape, class Keep, class Visit, class Inside>
+void ScanRuns(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit, Inside&& inside) {
   constexpr int kTile = FrameJudge::kTile;
   for (int y = box.y0; y <= box.y1; ++y) {
     int in0 = box.x1 + 1, in1 = box.x1, x0 = box.x0, x1 = box.x1;
@@ -50,29 +52,56 @@ void Scan(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit) {
       const std::array<int, 2> span = shape.InsideSpan(y);
       if (span[0] <= span[1]) in0 = std::max(span[0], box.x0), in1 = std::min(span[1], box.x1);
     }
-    for (int run0 = x0; run0 <= x1; run0 = (run0 / kTile + 1) * kTile) {
-      const int run1 = std::min(x1, (run0 / kTile + 1) * kTile - 1);
-      if (!keep(y, run0, run1)) continue;
-      for (int x = run0; x <= run1; ++x) {
+    const auto tested = [&](int from, int to) {
+      for (int x = from; x <= to; ++x) {
         const glm::dvec2 centre(x + 0.5, y + 0.5);
-        if (x >= in0 && x <= in1) {
-          visit(x, y, centre, Coverage::kIn);
-          continue;
-        }
         const Coverage c = shape.Covers(centre);
         if (c != Coverage::kOut) visit(x, y, centre, c);
       }
+    };
+    for (int run0 = x0; run0 <= x1; run0 = (run0 / kTile + 1) * kTile) {
+      const int run1 = std::min(x1, (run0 / kTile + 1) * kTile - 1);
+      if (!keep(y, run0, run1)) continue;
+      const int a = std::max(run0, in0), b = std::min(run1, in1);  // the run's inside part
+      if (a > b) {
+        tested(run0, run1);
+        continue;
+      }
+      tested(run0, a - 1);
+      inside(y, a, b);
+      tested(b + 1, run1);
     }
   }
 }
 
+// ScanRuns visiting the inside pixels one by one too.
+template <class Shape, class Keep, class Visit>
+void Scan(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visit) {
+  ScanRuns(shape, box, keep, visit, [&](int y, int x0, int x1) {
+    for (int x = x0; x <= x1; ++x) visit(x, y, glm::dvec2(x + 0.5, y + 0.5), Coverage::kIn);
+  });
+}
+
 // Scan's `keep` for a surface whose depth lies in `range` everywhere: skips the runs of tiles where
 // it can matter at no pixel (FrameJudge::CouldMatter on the tile), unless the options turn that off.
+// A triangle wider or taller than a tile is asked again with its depth along the run alone, so that
+// a face behind another in most tiles is skipped there, not wherever its whole range overlaps.
+template <class Shape>
 struct TileCull {
   const FrameJudge& judge;
+  const Shape& shape;
+  const PixelBox& box;
   std::array<double, 2> range;
   bool showing, on;
-  bool operator()(int y, int x0, int x1) const { return !on || judge.CouldMatter({x0, y, x1, y}, range, showing); }
+  bool operator()(int y, int x0, int x1) const {
+    if (!on) return true;
+    if (!judge.CouldMatter({x0, y, x1, y}, range, showing)) return false;
+    if constexpr (std::is_same_v<Shape, TriangleShape>) {
+      if (box.x1 - box.x0 >= FrameJudge::kTile || box.y1 - box.y0 >= FrameJudge::kTile)
+        return judge.CouldMatter({x0, y, x1, y}, shape.DepthAlong(y, x0, x1), showing);
+    }
+    return true;
+  }
 };
 
 // For each triangle's edge i (tri[i] -> tri[i + 1]), the one other triangle of the mesh sharing it
@@ -234,6 +263,7 @@ class Primitives {
     DrawReach reach;
     reach.draw = d;
     VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+      if (fast_ && judge.TilesWorthRefreshing()) judge.RefreshTiles(), since_refresh = 0;
       const PixelBox box = judge.Clip(shape.Box(w, h));
       if (box.Empty()) return;
       const std::array<double, 2> range = shape.DepthRange();
@@ -241,13 +271,18 @@ class Primitives {
       if (!judge.CouldMatter(box, range, false)) return;
       if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
         if (unclipped) {
-          OccludeWithNeighbours(judge, shape, box, TileCull{judge, range, false, fast_}, mesh, *nb, t, g);
+          OccludeWithNeighbours(judge, shape, box, TileCull<TriangleShape>{judge, shape, box, range, false, fast_},
+                                mesh, *nb, t, g);
           return;
         }
       }
-      Scan(shape, box, TileCull{judge, range, false, fast_}, [&](int x, int y, glm::dvec2 p, Coverage c) {
-        if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
-      });
+      const auto depth = [&](glm::dvec2 p) { return shape.Depth(p); };
+      ScanRuns(
+          shape, box, TileCull<std::decay_t<decltype(shape)>>{judge, shape, box, range, false, fast_},
+          [&](int x, int y, glm::dvec2 p, Coverage c) {
+            if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
+          },
+          [&](int y, int x0, int x1) { judge.OccludeRun(y, x0, x1, depth); });
     });
     if (!reach.box.Empty()) reaching.push_back(reach);
     if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
@@ -291,43 +326,48 @@ class Primitives {
   }
 
   static void OccludeWithNeighbours(FrameJudge& judge, const TriangleShape& shape, const PixelBox& box,
-                                    const TileCull& keep, const DrawMesh& mesh,
+                                    const TileCull<TriangleShape>& keep, const DrawMesh& mesh,
                                     const std::vector<std::array<Neighbour, 3>>& nb, std::size_t t,
                                     const DrawGeometry& g) {
     std::array<std::optional<TriangleShape>, 3> across;
-    Scan(shape, box, keep, [&](int x, int y, glm::dvec2 p, Coverage c) {
-      if (c == Coverage::kIn) {
-        judge.Occlude(x, y, shape.Depth(p));
-        return;
-      }
-      if (shape.Degenerate()) return;
-      const std::array<double, 3> dt = shape.EdgeDistances(p);
-      std::size_t near = 3;  // the one edge it lies within reach of
-      for (std::size_t j = 0; j < 3; ++j) {
-        if (dt[j] < 0) return;  // outside: the neighbour decides from its side
-        if (dt[j] <= shape.EdgeRadius(int(j))) {
-          if (near < 3) return;  // near a corner
-          near = j;
-        }
-      }
-      if (near == 3) return;
-      const Neighbour n = nb[t][near];
-      if (n.triangle < 0) return;
-      const auto& nt = mesh.triangles[std::size_t(n.triangle)];
-      if (!g.inside[nt[0]] || !g.inside[nt[1]] || !g.inside[nt[2]]) return;
-      if (!across[near]) across[near].emplace(g.window[nt[0]], g.window[nt[1]], g.window[nt[2]], false);
-      const TriangleShape& other = *across[near];
-      if (other.Degenerate()) return;
-      // The other triangle must lie across the shared edge, not folded over this one.
-      const double r = std::max(shape.radius(), other.radius());
-      if (shape.EdgeDistances(g.window[nt[std::size_t((n.edge + 2) % 3)]].xy)[near] >= -r) return;
-      const std::array<double, 3> dn = other.EdgeDistances(p);
-      for (std::size_t j = 0; j < 3; ++j) {
-        if (int(j) != n.edge && dn[j] <= other.EdgeRadius(int(j))) return;
-      }
-      const std::array<double, 2> a = shape.Depth(p), b = other.Depth(p);
-      judge.Occlude(x, y, {std::min(a[0], b[0]), std::max(a[1], b[1])});
-    });
+    const auto depth = [&](glm::dvec2 p) { return shape.Depth(p); };
+    const auto inside = [&](int y, int x0, int x1) { judge.OccludeRun(y, x0, x1, depth); };
+    ScanRuns(
+        shape, box, keep,
+        [&](int x, int y, glm::dvec2 p, Coverage c) {
+          if (c == Coverage::kIn) {
+            judge.Occlude(x, y, shape.Depth(p));
+            return;
+          }
+          if (shape.Degenerate()) return;
+          const std::array<double, 3> dt = shape.EdgeDistances(p);
+          std::size_t near = 3;  // the one edge it lies within reach of
+          for (std::size_t j = 0; j < 3; ++j) {
+            if (dt[j] < 0) return;  // outside: the neighbour decides from its side
+            if (dt[j] <= shape.EdgeRadius(int(j))) {
+              if (near < 3) return;  // near a corner
+              near = j;
+            }
+          }
+          if (near == 3) return;
+          const Neighbour n = nb[t][near];
+          if (n.triangle < 0) return;
+          const auto& nt = mesh.triangles[std::size_t(n.triangle)];
+          if (!g.inside[nt[0]] || !g.inside[nt[1]] || !g.inside[nt[2]]) return;
+          if (!across[near]) across[near].emplace(g.window[nt[0]], g.window[nt[1]], g.window[nt[2]], false);
+          const TriangleShape& other = *across[near];
+          if (other.Degenerate()) return;
+          // The other triangle must lie across the shared edge, not folded over this one.
+          const double r = std::max(shape.radius(), other.radius());
+          if (shape.EdgeDistances(g.window[nt[std::size_t((n.edge + 2) % 3)]].xy)[near] >= -r) return;
+          const std::array<double, 3> dn = other.EdgeDistances(p);
+          for (std::size_t j = 0; j < 3; ++j) {
+            if (int(j) != n.edge && dn[j] <= other.EdgeRadius(int(j))) return;
+          }
+          const std::array<double, 2> a = shape.Depth(p), b = other.Depth(p);
+          judge.Occlude(x, y, {std::min(a[0], b[0]), std::max(a[1], b[1])});
+        },
+        inside);
   }
 
   const DrawList& list_;
@@ -343,9 +383,12 @@ struct Band {
   Band(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0, int row1)
       : primitives(scene, list, options),
         judge(image, list.background, list.reversed_z, row0, row1),
+        sole(judge),
         fast(options.fast_paths) {}
   Primitives primitives;
   FrameJudge judge;
+  SoleSurfaces sole;  // pass 2's tiles one surface settles (a fast path)
+  std::uint64_t shapes_offered = 0;
   std::vector<DrawReach> reaching;
   Verification counts;
   bool fast = true;
@@ -485,16 +528,30 @@ void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) 
     const std::array<double, 2> range = shape.DepthRange();
     if (!judge.CouldMatter(box, range, true)) return;
     constexpr bool kLine = std::is_same_v<std::decay_t<decltype(shape)>, LineShape>;
-    Scan(shape, box, TileCull{judge, range, true, band.fast}, [&](int x, int y, glm::dvec2 p, Coverage c) {
-      if (judge.MayShow(x, y, shape.Depth(p))) judge.Offer(x, y, shape.Colour(p, flat), kLine && c == Coverage::kIn);
-    });
+    const TileCull<std::decay_t<decltype(shape)>> cull{judge, shape, box, range, true, band.fast};
+    const std::uint64_t serial = ++band.shapes_offered;
+    const auto keep = [&](int y, int x0, int x1) {
+      return cull(y, x0, x1) && (!band.fast || band.sole.Keep(shape, flat, box, x0, y, serial));
+    };
+    const auto depth = [&](glm::dvec2 p) { return shape.Depth(p); };
+    const auto colour = [&](glm::dvec2 p) { return shape.Colour(p, flat); };
+    ScanRuns(
+        shape, box, keep,
+        [&](int x, int y, glm::dvec2 p, Coverage c) {
+          if (judge.MayShow(x, y, shape.Depth(p)))
+            judge.Offer(x, y, shape.Colour(p, flat), kLine && c == Coverage::kIn);
+        },
+        [&](int y, int x0, int x1) { judge.OfferRun(y, x0, x1, depth, colour, kLine); });
   };
   DrawGeometry g;
   for (const DrawReach& reach : band.reaching) {
     if (!band.fast || judge.CouldMatter(reach.box, reach.range, true))
       band.primitives.ForEachInDraw(reach.draw, true, g, offer);
   }
-  judge.Finish(band.counts, pixels);
+  FrameJudge::SettledRun settled;
+  if (band.fast)
+    settled = [&](int y, int x0, int x1, ColourRange* colours) { return band.sole.Settled(y, x0, x1, colours); };
+  judge.Finish(band.counts, pixels, settled);
 }
 
 // The bands' counts summed; the first violation is the first band's, the worst the first of the
