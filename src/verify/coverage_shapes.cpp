@@ -1,5 +1,7 @@
 #include "verify/coverage_shapes.hpp"
 
+#include <glm/vec4.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -79,6 +81,7 @@ const TriangleShape::Edges& TriangleShape::edges() const {
     const double along_normal = std::abs(edges_.normal[i].x) + std::abs(edges_.normal[i].y);
     edges_.edge_radius[i] = std::max(v_[i].xy_error, v_[(i + 1) % 3].xy_error) * along_normal;
     edges_.outside_radius[i] = error * along_normal;
+    edges_.inverse_x[i] = edges_.normal[i].x != 0 ? 1.0 / edges_.normal[i].x : 0.0;
   }
   return edges_;
 }
@@ -128,22 +131,10 @@ std::array<double, 2> TriangleShape::DepthRange() const {
 
 namespace {
 
-// The centres X = x + 0.5 of row y with normal[i] . (X, y) + offset[i] + bias[i] > 0 for every edge
-// (>= when `closed`), shrunk (inner) or grown (outer) by a margin against rounding, as {first,
-// last}; first > last when there are none.
-std::array<int, 2> RowSpan(const std::array<glm::dvec2, 3>& normal, const std::array<double, 3>& offset,
-                           const std::array<double, 3>& bias, int y, bool inner) {
-  const double centre_y = y + 0.5;
-  double lo = -1e9, hi = 1e9;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double a = normal[i].x, rest = normal[i].y * centre_y + offset[i] + bias[i];
-    if (a > 0)
-      lo = std::max(lo, -rest / a);
-    else if (a < 0)
-      hi = std::min(hi, -rest / a);
-    else if (inner ? !(rest > 0) : rest < 0)
-      return {1, 0};
-  }
+// The pixels whose centres lie in [lo, hi] of a row, shrunk (inner) or grown (outer) by a margin
+// far above the rounding of the arithmetic that found lo and hi, as {first, last}; first > last
+// when there are none.
+std::array<int, 2> PixelsWithin(double lo, double hi, bool inner) {
   const double margin = 1e-6 * (1.0 + std::max(std::abs(lo), std::abs(hi)));
   lo = inner ? lo + margin : lo - margin;
   hi = inner ? hi - margin : hi + margin;
@@ -155,18 +146,29 @@ std::array<int, 2> RowSpan(const std::array<glm::dvec2, 3>& normal, const std::a
 
 }  // namespace
 
-std::array<int, 2> TriangleShape::InsideSpan(int y) const {
-  if (orientation_ == 0 || !std::isfinite(radius_)) return {1, 0};
-  // Inside by more than each edge can move: every pixel in it is one Covers finds inside too; the
-  // margin leaves the pixels at its ends to Covers.
-  const Edges& e = edges();
-  return RowSpan(e.normal, e.offset, {-e.edge_radius[0], -e.edge_radius[1], -e.edge_radius[2]}, y, true);
-}
-
-std::array<int, 2> TriangleShape::ReachSpan(int y) const {
+TriangleShape::RowSpans TriangleShape::Spans(int y) const {
   if (orientation_ == 0 || !std::isfinite(radius_))
-    return {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
-  return RowSpan(edges().normal, edges().offset, edges().outside_radius, y, false);
+    return {{std::numeric_limits<int>::min(), std::numeric_limits<int>::max()}, {1, 0}};
+  // Per edge, the centres X = x + 0.5 with normal . (X, y) + offset + bias > 0 (inside: bias the
+  // edge's own radius, negated) or >= 0 (reach: bias the radius outside it).
+  const Edges& e = edges();
+  const double centre_y = y + 0.5;
+  double in_lo = -1e9, in_hi = 1e9, out_lo = -1e9, out_hi = 1e9;
+  bool in_none = false, out_none = false;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double a = e.normal[i].x, base = e.normal[i].y * centre_y + e.offset[i];
+    const double inner = base - e.edge_radius[i], outer = base + e.outside_radius[i];
+    if (a > 0) {
+      in_lo = std::max(in_lo, -inner * e.inverse_x[i]), out_lo = std::max(out_lo, -outer * e.inverse_x[i]);
+    } else if (a < 0) {
+      in_hi = std::min(in_hi, -inner * e.inverse_x[i]), out_hi = std::min(out_hi, -outer * e.inverse_x[i]);
+    } else {
+      in_none = in_none || !(inner > 0), out_none = out_none || outer < 0;
+    }
+  }
+  // The inside span's margin leaves the pixels at its ends to Covers.
+  return {out_none ? std::array<int, 2>{1, 0} : PixelsWithin(out_lo, out_hi, false),
+          in_none ? std::array<int, 2>{1, 0} : PixelsWithin(in_lo, in_hi, true)};
 }
 
 std::array<double, 3> TriangleShape::EdgeDistances(glm::dvec2 p) const {
@@ -195,6 +197,24 @@ std::array<double, 2> TriangleShape::DepthAlong(int y, int x0, int x1) const {
   return {std::min(at_a[0], at_b[0]) - margin, std::max(at_a[1], at_b[1]) + margin};
 }
 
+const TriangleShape::Perspective& TriangleShape::perspective() const {
+  if (perspective_made_) return perspective_;
+  perspective_made_ = true;
+  // Each barycentric coordinate is affine in the point, l_k(q) = l_k(v0) + grad l_k . (q - v0), and so
+  // are both sums, taken from v0 where l0 is 1 and the others 0.
+  const std::array<glm::dvec2, 3> grad{glm::dvec2(v_[1].xy.y - v_[2].xy.y, v_[2].xy.x - v_[1].xy.x) / area2_,
+                                       glm::dvec2(v_[2].xy.y - v_[0].xy.y, v_[0].xy.x - v_[2].xy.x) / area2_,
+                                       glm::dvec2(v_[0].xy.y - v_[1].xy.y, v_[1].xy.x - v_[0].xy.x) / area2_};
+  Perspective& s = perspective_;
+  s.colour0 = v_[0].colour / v_[0].w, s.weight0 = 1.0 / v_[0].w;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const glm::dvec2 g = grad[k] / v_[k].w;
+    s.colour_dx += g.x * v_[k].colour, s.colour_dy += g.y * v_[k].colour;
+    s.weight_dx += g.x, s.weight_dy += g.y;
+  }
+  return s;
+}
+
 ColourRange TriangleShape::LitColour(glm::dvec2 p) const {
   glm::dvec3 lo(1.0), hi(0.0);
   const auto take = [&](glm::dvec3 c) {
@@ -204,20 +224,24 @@ ColourRange TriangleShape::LitColour(glm::dvec2 p) const {
   if (orientation_ == 0 || !std::isfinite(radius_)) {
     for (const WindowVertex& v : v_) take(v.colour);
   } else {
-    // Perspective-correct interpolation at p and where p may lie relative to moved vertices.
+    // Perspective-correct interpolation, sum(l_k c_k / w_k) / sum(l_k / w_k), at p and where p may
+    // lie relative to moved vertices.
+    const Perspective& s = perspective();
     const double r = radius_;
-    for (const glm::dvec2 q :
-         {p, p + glm::dvec2(r, 0), p - glm::dvec2(r, 0), p + glm::dvec2(0, r), p - glm::dvec2(0, r)}) {
-      const double l0 = Cross(v_[1].xy - q, v_[2].xy - q) / area2_;
-      const double l1 = Cross(v_[2].xy - q, v_[0].xy - q) / area2_;
-      const double l2 = 1.0 - l0 - l1;
-      const double w0 = l0 / v_[0].w, w1 = l1 / v_[1].w, w2 = l2 / v_[2].w;
-      const double sum = w0 + w1 + w2;
-      if (!(std::abs(sum) > 0)) {
+    const glm::dvec2 d = p - v_[0].xy;
+    const glm::dvec3 colour = s.colour0 + s.colour_dx * d.x + s.colour_dy * d.y;
+    const double weight = s.weight0 + s.weight_dx * d.x + s.weight_dy * d.y;
+    const std::array<glm::dvec4, 5> at{glm::dvec4(colour, weight),
+                                       glm::dvec4(colour + r * s.colour_dx, weight + r * s.weight_dx),
+                                       glm::dvec4(colour - r * s.colour_dx, weight - r * s.weight_dx),
+                                       glm::dvec4(colour + r * s.colour_dy, weight + r * s.weight_dy),
+                                       glm::dvec4(colour - r * s.colour_dy, weight - r * s.weight_dy)};
+    for (const glm::dvec4& q : at) {
+      if (!(std::abs(q.w) > 0)) {
         for (const WindowVertex& v : v_) take(v.colour);
         continue;
       }
-      take((w0 * v_[0].colour + w1 * v_[1].colour + w2 * v_[2].colour) / sum);
+      take(glm::dvec3(q) * (1.0 / q.w));
     }
   }
   lo -= kColourSlack, hi += kColourSlack;

@@ -7,6 +7,7 @@
 #include "verify/bounded_geometry.hpp"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <array>
 #include <cmath>
@@ -48,11 +49,13 @@ class TriangleShape {
   std::array<double, 2> DepthRange() const;
   // Bounds on Depth(p) at every centre of row y's pixels x0..x1.
   std::array<double, 2> DepthAlong(int y, int x0, int x1) const;
-  // The pixels of row y whose centres are inside by more than any edge can move (Covers says kIn),
-  // as {first, last}; first > last when there are none. Scanning skips the edge tests there.
-  std::array<int, 2> InsideSpan(int y) const;
-  // The pixels of row y that it may cover at all: Covers says kOut for every other one.
-  std::array<int, 2> ReachSpan(int y) const;
+  // Row y's pixels as {first, last} (first > last when none): `reach`, those it may cover at all
+  // (Covers says kOut for every other one), and `inside`, those whose centres are inside by more
+  // than any edge can move (Covers says kIn). Scanning skips the edge tests inside.
+  struct RowSpans {
+    std::array<int, 2> reach, inside;
+  };
+  RowSpans Spans(int y) const;
   // Signed distances from p to the edges v[i] -> v[i + 1], positive inside; degenerate: not valid.
   std::array<double, 3> EdgeDistances(glm::dvec2 p) const;
   bool Degenerate() const { return orientation_ == 0; }
@@ -68,8 +71,16 @@ class TriangleShape {
     std::array<double, 3> offset{};
     std::array<double, 3> edge_radius{};     // edge i's endpoints' movement along its normal
     std::array<double, 3> outside_radius{};  // any vertex's movement along edge i's normal
+    std::array<double, 3> inverse_x{};       // 1 / normal.x, 0 where that is 0
   };
   const Edges& edges() const;
+  // Perspective-correct colour's numerator and denominator, both affine in the pixel: their values
+  // at v0 and their slopes. Made on first use, as only lit triangles that may show need them.
+  struct Perspective {
+    glm::dvec3 colour0{0.0}, colour_dx{0.0}, colour_dy{0.0};
+    double weight0 = 0, weight_dx = 0, weight_dy = 0;
+  };
+  const Perspective& perspective() const;
   std::array<double, 2> DepthAnywhere() const;  // Depth where the plane is unknown: its corners' range
   ColourRange LitColour(glm::dvec2 p) const;
 
@@ -79,6 +90,8 @@ class TriangleShape {
   int orientation_ = 0;  // sign of the area; 0: degenerate
   mutable bool edges_made_ = false;
   mutable Edges edges_;
+  mutable bool perspective_made_ = false;
+  mutable Perspective perspective_;
   double area2_ = 0;          // twice the signed area
   glm::dvec2 gradient_{0.0};  // of depth
   double depth_error_ = 0, depth_relative_ = 0;

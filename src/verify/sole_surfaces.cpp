@@ -8,7 +8,8 @@ bool SoleSurfaces::CoversWhole(const TriangleShape& shape, const PixelBox& box, 
   if (tile.x0 < box.x0 || tile.x1 > box.x1 || tile.y0 < box.y0 || tile.y1 > box.y1) return false;
   for (int y = tile.y0; y <= tile.y1; ++y) {
     // As Scan: its pixels within the row's reach and its inside span are visited as covered.
-    const std::array<int, 2> reach = shape.ReachSpan(y), inside = shape.InsideSpan(y);
+    const TriangleShape::RowSpans spans = shape.Spans(y);
+    const std::array<int, 2> reach = spans.reach, inside = spans.inside;
     if (tile.x0 < std::max(reach[0], inside[0]) || tile.x1 > std::min(reach[1], inside[1])) return false;
   }
   return true;

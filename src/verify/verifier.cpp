@@ -2,6 +2,7 @@
 
 #include "truth/truth_renderer.hpp"
 #include "verify/coverage_shapes.hpp"
+#include "verify/frame_shared.hpp"
 #include "verify/pixel_judge.hpp"
 #include "verify/sole_surfaces.hpp"
 
@@ -16,7 +17,6 @@
 #include <string>
 #include <thread>
 #include <type_traits>
-#include <unordered_map>
 
 namespace twinraster::verify {
 
@@ -47,9 +47,9 @@ void ScanRuns(const Shape& shape, const PixelBox& box, Keep&& keep, Visit&& visi
   for (int y = box.y0; y <= box.y1; ++y) {
     int in0 = box.x1 + 1, in1 = box.x1, x0 = box.x0, x1 = box.x1;
     if constexpr (std::is_same_v<Shape, TriangleShape>) {
-      const std::array<int, 2> reach = shape.ReachSpan(y);
-      x0 = std::max(x0, reach[0]), x1 = std::min(x1, reach[1]);
-      const std::array<int, 2> span = shape.InsideSpan(y);
+      const TriangleShape::RowSpans spans = shape.Spans(y);
+      x0 = std::max(x0, spans.reach[0]), x1 = std::min(x1, spans.reach[1]);
+      const std::array<int, 2> span = spans.inside;
       if (span[0] <= span[1]) in0 = std::max(span[0], box.x0), in1 = std::min(span[1], box.x1);
     }
     const auto tested = [&](int from, int to) {
@@ -104,36 +104,6 @@ struct TileCull {
   }
 };
 
-// For each triangle's edge i (tri[i] -> tri[i + 1]), the one other triangle of the mesh sharing it
-// and that triangle's edge index, or -1 where the edge is a border or shared by more than two.
-struct Neighbour {
-  std::int32_t triangle = -1;
-  std::int32_t edge = -1;
-};
-std::vector<std::array<Neighbour, 3>> MeshNeighbours(const DrawMesh& mesh) {
-  struct Sharing {
-    Neighbour first, second;
-    int count = 0;
-  };
-  std::unordered_map<std::uint64_t, Sharing> edges;
-  edges.reserve(mesh.triangles.size() * 2);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      const std::uint32_t a = mesh.triangles[t][i], b = mesh.triangles[t][(i + 1) % 3];
-      Sharing& s = edges[(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b)];
-      (s.count == 0 ? s.first : s.second) = {std::int32_t(t), std::int32_t(i)};
-      ++s.count;
-    }
-  }
-  std::vector<std::array<Neighbour, 3>> out(mesh.triangles.size());
-  for (const auto& [key, s] : edges) {
-    if (s.count != 2) continue;
-    out[std::size_t(s.first.triangle)][std::size_t(s.first.edge)] = s.second;
-    out[std::size_t(s.second.triangle)][std::size_t(s.second.edge)] = s.first;
-  }
-  return out;
-}
-
 // A draw that reaches a band: the union of its primitives' boxes there and of their depth ranges
 // (NaN when any range is), so that one test can skip a draw only when it would skip each of them.
 struct DrawReach {
@@ -173,14 +143,12 @@ struct PreparedDraw {
 // or in wireframe each clipped polygon's edges.
 class Primitives {
  public:
-  Primitives(const Scene& scene, const DrawList& list, const VerifyOptions& options)
+  Primitives(const FrameShared& shared, const DrawList& list, const VerifyOptions& options)
       : list_(list),
+        shared_(shared),
         subpixel_bits_(options.subpixel_bits),
         fast_(options.fast_paths),
-        line_rules_(options.strict_lines ? LineRules::kStrict : LineRules::kNotStrict),
-        neighbours_(list.meshes.size()) {
-    if (list.lighting && !list.wireframe) light_.emplace(scene);
-  }
+        line_rules_(options.strict_lines ? LineRules::kStrict : LineRules::kNotStrict) {}
 
   // visit(shape, flat colour, triangle index, whether unclipped) for each primitive of draw d, with
   // a TriangleShape or a LineShape; `colours` asks for lit corner colours (pass 2 only).
@@ -194,9 +162,9 @@ class Primitives {
   template <class Visit>
   void VisitDraw(std::size_t d, bool colours, const DrawGeometry& g, Visit&& visit) const {
     const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
-    const bool lit = mesh.shading != Shading::kUnlit && light_;
-    std::vector<std::array<glm::dvec3, 3>> corner;
-    if (lit && colours) corner = light_->CornerColours(d);
+    const bool lit = mesh.shading != Shading::kUnlit && shared_.lit();
+    FrameShared::Corners scratch;
+    const FrameShared::Corners& corner = lit && colours ? shared_.CornerColours(d, scratch) : scratch;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];
       if (!list_.wireframe && g.inside[tri[0]] && g.inside[tri[1]] && g.inside[tri[2]]) {
@@ -257,8 +225,6 @@ class Primitives {
     const PixelBox rows = judge.Clip({0, 0, 0, int(h) - 1});
     const auto& extent = prepared.rows;
     if (fast_ && extent && ((*extent)[1] < rows.y0 + 0.5 || (*extent)[0] > rows.y1 + 0.5)) return;
-    auto& nb = neighbours_[list_.draws[d].mesh];
-    if (!nb && !list_.wireframe) nb = MeshNeighbours(mesh);
     const DrawGeometry& g = prepared.g;
     DrawReach reach;
     reach.draw = d;
@@ -272,7 +238,7 @@ class Primitives {
       if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
         if (unclipped) {
           OccludeWithNeighbours(judge, shape, box, TileCull<TriangleShape>{judge, shape, box, range, false, fast_},
-                                mesh, *nb, t, g);
+                                mesh, shared_.Neighbours(list_.draws[d].mesh), t, g);
           return;
         }
       }
@@ -371,17 +337,17 @@ class Primitives {
   }
 
   const DrawList& list_;
+  const FrameShared& shared_;
   int subpixel_bits_;
   bool fast_;  // VerifyOptions::fast_paths
   LineRules line_rules_;
-  std::optional<ExactLight> light_;
-  std::vector<std::optional<std::vector<std::array<Neighbour, 3>>>> neighbours_;  // per mesh, when needed
 };
 
 // One band of rows: its own primitives' state, its judge, and the draws that reach it.
 struct Band {
-  Band(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options, int row0, int row1)
-      : primitives(scene, list, options),
+  Band(const FrameShared& shared, const DrawList& list, const Image& image, const VerifyOptions& options, int row0,
+       int row1)
+      : primitives(shared, list, options),
         judge(image, list.background, list.reversed_z, row0, row1),
         sole(judge),
         fast(options.fast_paths) {}
@@ -584,8 +550,9 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   result.width = image.width, result.height = image.height, result.options = options;
   result.pixels.resize(std::size_t{image.width} * image.height);
   // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
-  // its own pixels, so they share only the read-only inputs, the draws prepared for pass 1
-  // (SharedPass1) and the pixel classes.
+  // its own pixels, so they share only the read-only inputs, what each draw's light and mesh make
+  // once for all (FrameShared), the draws prepared for pass 1 (SharedPass1) and the pixel classes.
+  const FrameShared frame(scene, list);
   const int rows = int(image.height);
   const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
   const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
@@ -599,7 +566,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
     try {
       running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
         try {
-          bands[b] = std::make_unique<Band>(scene, list, image, options, row0, row1);  // its set-up on its thread
+          bands[b] = std::make_unique<Band>(frame, list, image, options, row0, row1);  // its set-up on its thread
           OccludeShared(*bands[b], shared ? &*shared : nullptr, list.draws.size());
         } catch (...) {
           if (shared) shared->Fail();
