@@ -3,6 +3,7 @@
 #include "verify/buffer_pool.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace twinraster::verify {
@@ -134,7 +135,17 @@ void FrameJudge::FinishUnused(int x0, int x1, int y, Verification& v, int& worst
 void FrameJudge::FinishSettled(int x0, int x1, int y, const ColourRange* colours, Verification& v, int& worst_distance,
                                std::vector<PixelClass>& pixels) const {
   PixelClass* out = pixels.data() + std::size_t(y) * image_->width;
-  v.covered += std::uint64_t(x1 - x0);
+  const int n = x1 - x0;
+  v.covered += std::uint64_t(n);
+  // One exact colour over the run (a flat surface's), shown at every pixel: all certain at once.
+  const ColourRange first = colours[0];
+  if (first.lo == first.hi && std::all_of(colours, colours + n, [&](const ColourRange& c) { return c == first; }) &&
+      ShowsOnly(x0, x1, y, first.lo)) {
+    std::fill(out + x0, out + x1, PixelClass::kCertain);
+    v.certain += std::uint64_t(n);
+    if (first.Distance(background_) > 0) v.background_excluded += std::uint64_t(n);
+    return;
+  }
   for (int x = x0; x < x1; ++x) {
     const ColourRange& colour = colours[x - x0];
     if (colour.Distance(background_) > 0) ++v.background_excluded;
@@ -146,10 +157,18 @@ void FrameJudge::FinishSettled(int x0, int x1, int y, const ColourRange* colours
 }
 
 bool FrameJudge::ShowsOnly(int x0, int x1, int y, Rgb8 colour) const {
+  // Whole pixels compared at once, alpha masked off, so that the compiler can vectorize the loop.
+  const std::uint8_t rgb[4] = {colour.r, colour.g, colour.b, 0}, mask_bytes[4] = {255, 255, 255, 0};
+  std::uint32_t expected = 0, mask = 0;
+  std::memcpy(&expected, rgb, 4), std::memcpy(&mask, mask_bytes, 4);
   const std::uint8_t* p = image_->pixel(std::uint32_t(x0), std::uint32_t(y));
-  bool same = true;
-  for (int x = x0; x < x1; ++x, p += 4) same &= p[0] == colour.r && p[1] == colour.g && p[2] == colour.b;
-  return same;
+  std::uint32_t differ = 0;
+  for (int x = x0; x < x1; ++x, p += 4) {
+    std::uint32_t word = 0;
+    std::memcpy(&word, p, 4);
+    differ |= (word & mask) ^ expected;
+  }
+  return differ == 0;
 }
 
 void FrameJudge::Count(int x, int y, PixelClass c, int distance, int& worst_distance, Verification& v) const {

@@ -52,7 +52,7 @@ class FrameJudge {
   void RefreshTiles();
   // Whether refreshing now pays: the pixels lowered since the last refresh outnumber what it reads.
   // Large triangles then cull the ones behind them in the same draw, not only in later ones.
-  bool TilesWorthRefreshing() const { return lowered_ > std::size_t{kTile} * 2 * dirty_.size(); }
+  bool TilesWorthRefreshing() const { return lowered_ > std::size_t{kTile} * kTile / 2 * dirty_.size(); }
   static constexpr int kTile = 16;  // the side of the tiles CouldMatter decides by
   std::size_t TileOf(int x, int y) const { return std::size_t(((y - row0_) / kTile) * tiles_x_ + x / kTile); }
   std::size_t Tiles() const { return tile_gap_.size(); }

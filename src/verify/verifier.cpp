@@ -228,7 +228,7 @@ class Primitives {
     const DrawGeometry& g = prepared.g;
     DrawReach reach;
     reach.draw = d;
-    VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+    const auto occlude = [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
       if (fast_ && judge.TilesWorthRefreshing()) judge.RefreshTiles(), since_refresh = 0;
       const PixelBox box = judge.Clip(shape.Box(w, h));
       if (box.Empty()) return;
@@ -249,7 +249,12 @@ class Primitives {
             if (c == Coverage::kIn) judge.Occlude(x, y, shape.Depth(p));
           },
           [&](int y, int x0, int x1) { judge.OccludeRun(y, x0, x1, depth); });
-    });
+    };
+    if (fast_ && !list_.wireframe && mesh.triangles.size() <= kNearFirst) {
+      OccludeNearFirst(d, g, occlude);
+    } else {
+      VisitDraw(d, false, g, occlude);
+    }
     if (!reach.box.Empty()) reaching.push_back(reach);
     if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
   }
@@ -273,6 +278,28 @@ class Primitives {
   }
 
  private:
+  // Pass 1's bounds do not depend on the order of the triangles. A small draw's are taken nearest
+  // first, so that those behind are passed over by their tiles' refreshed bounds (a cube's back
+  // faces, a sphere's far side), not written pixel by pixel and then overwritten.
+  static constexpr std::size_t kNearFirst = 4096;  // triangles
+  template <class Occlude>
+  void OccludeNearFirst(std::size_t d, const DrawGeometry& g, Occlude&& occlude) {
+    near_first_.clear(), order_.clear();
+    VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
+        const std::array<double, 2> range = shape.DepthRange();
+        const double key = list_.reversed_z ? -range[1] : range[0];
+        order_.push_back(
+            {std::isnan(key) ? -std::numeric_limits<double>::infinity() : key, near_first_.size(), unclipped});
+        near_first_.push_back({shape, t});
+      }
+    });
+    std::stable_sort(order_.begin(), order_.end(),
+                     [](const Nearness& a, const Nearness& b) { return a.near_key < b.near_key; });
+    for (const Nearness& k : order_)
+      occlude(near_first_[k.kept].first, Rgb8{}, near_first_[k.kept].second, k.unclipped);
+  }
+
   // The extent in y of the rows the prepared draw's triangles may reach (a box's rows are those
   // whose centres y + 0.5 lie in it): each triangle's Box lies within its draw's vertices' extent
   // widened by the largest radius any of them has. None for wireframes and draws that clipping
@@ -338,6 +365,14 @@ class Primitives {
 
   const DrawList& list_;
   const FrameShared& shared_;
+  // OccludeNearFirst's triangles (with their indices in the mesh) and their order, kept for reuse.
+  struct Nearness {
+    double near_key;
+    std::size_t kept;
+    bool unclipped;
+  };
+  std::vector<std::pair<TriangleShape, std::size_t>> near_first_;
+  std::vector<Nearness> order_;
   int subpixel_bits_;
   bool fast_;  // VerifyOptions::fast_paths
   LineRules line_rules_;
@@ -559,26 +594,30 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   std::vector<std::unique_ptr<Band>> bands(std::size_t((rows + band_rows - 1) / band_rows));
   std::optional<SharedPass1> shared;
   if (SharedPass1::Fits(list)) shared.emplace(bands.size(), list.draws.size());
-  std::vector<std::future<void>> running;
-  running.reserve(bands.size());  // so that only std::async can throw below
-  for (std::size_t b = 0; b < bands.size(); ++b) {
+  const auto judge_band = [&](std::size_t b) {
     const int row0 = int(b) * band_rows, row1 = std::min(rows, row0 + band_rows);
     try {
-      running.push_back(std::async(std::launch::async, [&, b, row0, row1] {
-        try {
-          bands[b] = std::make_unique<Band>(frame, list, image, options, row0, row1);  // its set-up on its thread
-          OccludeShared(*bands[b], shared ? &*shared : nullptr, list.draws.size());
-        } catch (...) {
-          if (shared) shared->Fail();
-          throw;
-        }
-        JudgeBand(*bands[b], image, result.pixels);
-      }));
-    } catch (...) {  // no thread for band b: the others must not wait for it
+      bands[b] = std::make_unique<Band>(frame, list, image, options, row0, row1);  // its set-up on its thread
+      OccludeShared(*bands[b], shared ? &*shared : nullptr, list.draws.size());
+    } catch (...) {
+      if (shared) shared->Fail();  // the other bands must not wait for this one
+      throw;
+    }
+    JudgeBand(*bands[b], image, result.pixels);
+  };
+  // The first band on this thread, each other on one of its own. A band that throws, or one that
+  // gets no thread, fails the others; the futures wait for their threads when unwinding.
+  std::vector<std::future<void>> running;
+  running.reserve(bands.size());  // so that only std::async can throw below
+  for (std::size_t b = 1; b < bands.size(); ++b) {
+    try {
+      running.push_back(std::async(std::launch::async, judge_band, b));
+    } catch (...) {
       if (shared) shared->Fail();
       throw;
     }
   }
+  judge_band(0);
   for (auto& r : running) r.get();  // rethrows a band's exception
   Merge(bands, result);
   return result;
