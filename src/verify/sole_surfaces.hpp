@@ -31,7 +31,7 @@ class SoleSurfaces {
     const std::size_t tile = judge_.TileOf(x, y);
     if (reached_[tile] == 2) return true;
     if (reached_[tile] == 1) {
-      if (held_[std::size_t(held_at_[tile])].serial == serial) return false;
+      if (HeldBy(tile, serial)) return false;
       Release(tile);
       return true;
     }
@@ -43,6 +43,11 @@ class SoleSurfaces {
       }
     }
     return true;
+  }
+
+  // Whether the tile holds back the shape `serial`: its runs there need no other test.
+  bool HeldBy(std::size_t tile, std::uint64_t serial) const {
+    return reached_[tile] == 1 && held_[std::size_t(held_at_[tile])].serial == serial;
   }
 
   // FrameJudge::SettledRun: the colours of the run's one surface, if a surface settles its tile.

@@ -532,7 +532,9 @@ void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) 
     const TileCull<std::decay_t<decltype(shape)>> cull{judge, shape, box, range, true, band.fast};
     const std::uint64_t serial = ++band.shapes_offered;
     const auto keep = [&](int y, int x0, int x1) {
-      return cull(y, x0, x1) && (!band.fast || band.sole.Keep(shape, flat, box, x0, y, serial));
+      if (!band.fast) return true;
+      if (band.sole.HeldBy(judge.TileOf(x0, y), serial)) return false;
+      return cull(y, x0, x1) && band.sole.Keep(shape, flat, box, x0, y, serial);
     };
     const auto depth = [&](glm::dvec2 p) { return shape.Depth(p); };
     const auto colour = [&](glm::dvec2 p) { return shape.Colour(p, flat); };
