@@ -59,6 +59,7 @@ class TriangleShape {
   // Signed distances from p to the edges v[i] -> v[i + 1], positive inside; degenerate: not valid.
   std::array<double, 3> EdgeDistances(glm::dvec2 p) const;
   bool Degenerate() const { return orientation_ == 0; }
+  bool lit() const { return lit_; }  // its colour varies over it (else its flat colour everywhere)
   double radius() const { return radius_; }
   // How far edge i itself may move along its normal at a centre beside it.
   double EdgeRadius(int i) const { return edges().edge_radius[std::size_t(i)]; }

@@ -1,44 +1,45 @@
 #include "verify/sole_surfaces.hpp"
 
+#include "verify/scan.hpp"
+
 #include <algorithm>
 
 namespace twinraster::verify {
 
-bool SoleSurfaces::CoversWhole(const TriangleShape& shape, const PixelBox& box, const PixelBox& tile) {
-  if (tile.x0 < box.x0 || tile.x1 > box.x1 || tile.y0 < box.y0 || tile.y1 > box.y1) return false;
-  for (int y = tile.y0; y <= tile.y1; ++y) {
-    // As Scan: its pixels within the row's reach and its inside span are visited as covered.
-    const TriangleShape::RowSpans spans = shape.Spans(y);
-    const std::array<int, 2> reach = spans.reach, inside = spans.inside;
-    if (tile.x0 < std::max(reach[0], inside[0]) || tile.x1 > std::min(reach[1], inside[1])) return false;
-  }
-  return true;
-}
-
-void SoleSurfaces::Hold(std::size_t tile, const TriangleShape& shape, Rgb8 flat, std::uint64_t serial) {
-  held_at_[tile] = std::int32_t(held_.size());
-  held_.push_back({shape, flat, serial});
-  reached_[tile] = 1;
-}
-
 void SoleSurfaces::Release(std::size_t tile) {
-  const Held& held = held_[std::size_t(held_at_[tile])];
-  const PixelBox box = judge_.TileBox(tile);
-  for (int y = box.y0; y <= box.y1; ++y) {
-    for (int x = box.x0; x <= box.x1; ++x) {
-      const glm::dvec2 centre(x + 0.5, y + 0.5);
-      if (judge_.MayShow(x, y, held.shape.Depth(centre))) judge_.Offer(x, y, held.shape.Colour(centre, held.flat));
-    }
+  Tile& t = tiles_[tile];
+  const PixelBox whole = judge_.TileBox(tile);
+  for (std::uint8_t i = 0; i < t.count; ++i) {
+    const Held& held = held_[t.held[i]];
+    const PixelBox box{std::max(whole.x0, held.box.x0), std::max(whole.y0, held.box.y0),
+                       std::min(whole.x1, held.box.x1), std::min(whole.y1, held.box.y1)};
+    // What pass 2 would have offered, less the runs its depth test skips: there it may show nowhere.
+    std::visit(
+        [&](const auto& shape) {
+          constexpr bool kLine = std::is_same_v<std::decay_t<decltype(shape)>, LineShape>;
+          Scan(
+              shape, box, [](int, int, int) { return true; },
+              [&](int x, int y, glm::dvec2 p, Coverage c) {
+                if (judge_.MayShow(x, y, shape.Depth(p)))
+                  judge_.Offer(x, y, shape.Colour(p, held.flat), kLine && c == Coverage::kIn);
+              });
+        },
+        held.shape);
   }
-  held_at_[tile] = -1;
-  reached_[tile] = 2;
+  t.count = 0;
+  t.mixed = true;
 }
 
 bool SoleSurfaces::Settled(int y, int x0, int x1, ColourRange* colours) const {
-  const std::size_t tile = judge_.TileOf(x0, y);
-  if (reached_[tile] != 1) return false;
-  const Held& held = held_[std::size_t(held_at_[tile])];
-  for (int x = x0; x <= x1; ++x) colours[x - x0] = held.shape.Colour(glm::dvec2(x + 0.5, y + 0.5), held.flat);
+  const Tile& t = tiles_[judge_.TileOf(x0, y)];
+  if (t.mixed || t.count == 0) return false;
+  const Held& held = held_[t.held[0]];
+  if (held.exact) {
+    std::fill(colours, colours + (x1 - x0 + 1), ColourRange::Exactly(held.flat));
+    return true;
+  }
+  const TriangleShape& shape = std::get<TriangleShape>(held.shape);  // the one way to vary: light
+  for (int x = x0; x <= x1; ++x) colours[x - x0] = shape.Colour(glm::dvec2(x + 0.5, y + 0.5), held.flat);
   return true;
 }
 

@@ -184,11 +184,7 @@ class Primitives {
           },
           [&](int y, int x0, int x1) { judge.OccludeRun(y, x0, x1, depth); });
     };
-    if (fast_ && !list_.wireframe && mesh.triangles.size() <= kNearFirst) {
-      OccludeNearFirst(d, g, occlude);
-    } else {
-      VisitDraw(d, false, g, occlude);
-    }
+    VisitDraw(d, false, g, occlude);
     if (!reach.box.Empty()) reaching.push_back(reach);
     if (since_refresh >= 1024) judge.RefreshTiles(), since_refresh = 0;
   }
@@ -212,28 +208,6 @@ class Primitives {
   }
 
  private:
-  // Pass 1's bounds do not depend on the order of the triangles. A small draw's are taken nearest
-  // first, so that those behind are passed over by their tiles' refreshed bounds (a cube's back
-  // faces, a sphere's far side), not written pixel by pixel and then overwritten.
-  static constexpr std::size_t kNearFirst = 4096;  // triangles
-  template <class Occlude>
-  void OccludeNearFirst(std::size_t d, const DrawGeometry& g, Occlude&& occlude) {
-    near_first_.clear(), order_.clear();
-    VisitDraw(d, false, g, [&](const auto& shape, Rgb8, std::size_t t, bool unclipped) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, TriangleShape>) {
-        const std::array<double, 2> range = shape.DepthRange();
-        const double key = list_.reversed_z ? -range[1] : range[0];
-        order_.push_back(
-            {std::isnan(key) ? -std::numeric_limits<double>::infinity() : key, near_first_.size(), unclipped});
-        near_first_.push_back({shape, t});
-      }
-    });
-    std::stable_sort(order_.begin(), order_.end(),
-                     [](const Nearness& a, const Nearness& b) { return a.near_key < b.near_key; });
-    for (const Nearness& k : order_)
-      occlude(near_first_[k.kept].first, Rgb8{}, near_first_[k.kept].second, k.unclipped);
-  }
-
   // The extent in y of the rows the prepared draw's triangles may reach (a box's rows are those
   // whose centres y + 0.5 lie in it): each triangle's Box lies within its draw's vertices' extent
   // widened by the largest radius any of them has. None for wireframes and draws that clipping
@@ -299,14 +273,6 @@ class Primitives {
 
   const DrawList& list_;
   const FrameShared& shared_;
-  // OccludeNearFirst's triangles (with their indices in the mesh) and their order, kept for reuse.
-  struct Nearness {
-    double near_key;
-    std::size_t kept;
-    bool unclipped;
-  };
-  std::vector<std::pair<TriangleShape, std::size_t>> near_first_;
-  std::vector<Nearness> order_;
   int subpixel_bits_;
   bool fast_;  // VerifyOptions::fast_paths
   LineRules line_rules_;
