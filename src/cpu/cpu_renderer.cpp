@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -28,6 +29,7 @@ struct BandTarget {
   int height;
   cpu::Framebuffer& fb;
   cpu::DepthTiles& tiles;
+  std::optional<std::uint32_t> clear;  // the colour each band is cleared to before it is drawn, if any
 };
 
 // Each part rasterizes its own bands, each band's primitives in list order; hidden[part] counts
@@ -80,6 +82,10 @@ void DrawChunk(const BandTarget& target, const cpu::RasterRules& rules, unsigned
       if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
     };
     for (unsigned band = part; band < bands; band += threads) {
+      if (target.clear) {
+        const int band_begin = static_cast<int>(band) * kBandRows;
+        ClearRows(fb, band_begin, std::min(height, band_begin + kBandRows), *target.clear);
+      }
       switch (scratch.kind) {
         case PrimitiveKind::kLines:
           draw_band(band, scratch.lines,
@@ -125,10 +131,12 @@ void ClearFrame(cpu::Framebuffer& fb, unsigned threads, std::uint32_t height, st
   });
 }
 
-// Left to choose (threads 0), the twin draws a small frame with few triangles on one thread:
-// handing parts to another costs more than that thread's share, and in a batch the other core is
-// busy with the GPU process or the last scene's files. Any count gives the same image.
-constexpr std::uint64_t kOneThreadPixels = 256 * 256;
+// Left to choose (threads 0), the twin draws a frame of up to a megapixel with few triangles on one
+// thread: starting another and handing it parts costs more than its share (a one-scene process
+// pays the thread's start, and its later unmappings then interrupt the other core), and in a batch
+// the other core is busy with the GPU process or the last scene's files. Any count gives the same
+// image.
+constexpr std::uint64_t kOneThreadPixels = 1024 * 1024;
 constexpr std::uint64_t kOneThreadTriangles = 4096;
 
 unsigned ThreadsFor(const DrawList& list, unsigned requested, unsigned bands) {
@@ -161,17 +169,22 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   Stopwatch clock;
   double setup_ms = 0, draw_ms = 0;
   Framebuffer fb(list.width, list.height, list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
-  ClearFrame(fb, threads, list.height, PackRgba(list.background));
+  // One chunk clears each band just before drawing it, while its rows are in the cache; several
+  // chunks (or none) clear the whole frame first.
+  const std::optional<std::uint32_t> clear_in_draw =
+      chunks.size() == 1 ? std::optional(PackRgba(list.background)) : std::nullopt;
+  if (!clear_in_draw) ClearFrame(fb, threads, list.height, PackRgba(list.background));
   draw_ms += clock.Lap();
 
   DepthTiles tiles(list.width, list.height, fb.compare);
   std::vector<std::uint64_t> hidden(threads, 0);  // per part
-  const BandTarget target{scratch, options, static_cast<int>(list.height), fb, tiles};
+  BandTarget target{scratch, options, static_cast<int>(list.height), fb, tiles, clear_in_draw};
   for (const GeometryChunk& chunk : chunks) {
     // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
     ProcessGeometry(list, chunk, threads, options.rules, scratch, clip, bands);
     setup_ms += clock.Lap();
     DrawChunk(target, options.rules, threads, bands, hidden);
+    target.clear.reset();
     draw_ms += clock.Lap();
   }
 

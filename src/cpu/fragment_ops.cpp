@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace twinraster::cpu {
 
@@ -11,35 +12,23 @@ namespace {
 
 // One cached depth allocation per thread, at most 64 MiB of it.
 constexpr std::size_t kMaxCachedDepth = std::size_t{16} << 20;
-struct CachedDepth {
-  std::unique_ptr<float[]> data;
-  std::size_t capacity = 0;
-};
-thread_local CachedDepth t_cached_depth;
+thread_local FrameVector<float> t_cached_depth;
 
 }  // namespace
 
 DepthBuffer::DepthBuffer(std::size_t size) {
-  if (t_cached_depth.capacity >= size) {
-    data_ = std::move(t_cached_depth.data);
-    capacity_ = t_cached_depth.capacity;
-    t_cached_depth.capacity = 0;
+  if (t_cached_depth.size() >= size) {
+    data_ = std::exchange(t_cached_depth, {});
   } else {
-    data_.reset(new float[size]);
-    capacity_ = size;
+    data_.resize(size);  // uninitialized (FrameAllocator): ClearRows writes every row
   }
 }
 
 DepthBuffer::~DepthBuffer() {
-  if (data_ && capacity_ <= kMaxCachedDepth && capacity_ > t_cached_depth.capacity) {
-    t_cached_depth.data = std::move(data_);
-    t_cached_depth.capacity = capacity_;
-  }
+  if (data_.size() <= kMaxCachedDepth && data_.size() > t_cached_depth.size()) t_cached_depth = std::move(data_);
 }
 
-DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept : data_(std::move(other.data_)), capacity_(other.capacity_) {
-  other.capacity_ = 0;
-}
+DepthBuffer::DepthBuffer(DepthBuffer&& other) noexcept : data_(std::exchange(other.data_, {})) {}
 
 namespace {
 

@@ -9,17 +9,17 @@
 #include "cpu/colour_planes.hpp"
 #include "cpu/depth_plane.hpp"
 #include "cpu/rasterize.hpp"
+#include "image/frame_memory.hpp"
 #include "image/image.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <memory>
 
 namespace twinraster::cpu {
 
-// Depth memory, reused between renders on the same thread: fresh memory costs a page fault per
-// 4 KiB, which for a simple scene is as much as drawing it.
+// Depth memory, reused between renders on the same thread: fresh memory costs page faults, which
+// for a simple scene are as much as drawing it (frame_memory.hpp makes them few).
 class DepthBuffer {
  public:
   explicit DepthBuffer(std::size_t size);  // not cleared
@@ -29,14 +29,13 @@ class DepthBuffer {
   DepthBuffer(const DepthBuffer&) = delete;
   DepthBuffer& operator=(const DepthBuffer&) = delete;
 
-  float* data() { return data_.get(); }
-  const float* data() const { return data_.get(); }
+  float* data() { return data_.data(); }
+  const float* data() const { return data_.data(); }
   float& operator[](std::size_t i) { return data_[i]; }
   float operator[](std::size_t i) const { return data_[i]; }
 
  private:
-  std::unique_ptr<float[]> data_;
-  std::size_t capacity_ = 0;
+  FrameVector<float> data_;  // at least the frame's size
 };
 
 // The depth test's VkCompareOp. Both are strict: of two fragments at equal depth the first stays.
@@ -56,7 +55,7 @@ struct Framebuffer {
 
   // Allocates without clearing: call ClearRows on every row before drawing.
   Framebuffer(std::uint32_t width, std::uint32_t height, DepthCompare op = DepthCompare::kLess)
-      : colour(width, height), depth(std::size_t{width} * height), compare(op) {}
+      : colour(width, height, Image::Uncleared{}), depth(std::size_t{width} * height), compare(op) {}
 
   std::uint32_t width() const { return colour.width; }
   std::uint32_t height() const { return colour.height; }
