@@ -26,9 +26,12 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
                   r.verify_ms, r.Ratio(), uncertain, static_cast<unsigned long long>(r.violations));
     s << line;
   }
-  s << "(twin: RenderOnCpu on " << (result.rows.empty() ? 0 : result.rows.front().twin_threads)
-    << " thread(s); verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware thread; "
-       "uncertain: of the covered pixels)\n";
+  // The twin chooses its threads per scene (one for a small frame), so each row's are given.
+  std::string threads;
+  for (const VerifyBenchRow& r : result.rows) threads += (threads.empty() ? "" : ", ") + std::to_string(r.twin_threads);
+  s << "(twin: RenderOnCpu as render runs it, on " << threads
+    << " thread(s) row by row; verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware "
+       "thread; uncertain: of the covered pixels)\n";
   return s.str();
 }
 
