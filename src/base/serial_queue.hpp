@@ -17,7 +17,7 @@ class SerialQueue {
  public:
   // At most `waiting` tasks wait at once; Push blocks beyond that, which bounds the memory that
   // pushed work (whole images) holds.
-  explicit SerialQueue(std::size_t waiting) : waiting_(waiting), worker_([this] { Work(); }) {}
+  explicit SerialQueue(std::size_t waiting) : waiting_(waiting) {}
   // Runs what is queued, then joins; a task's exception is dropped here (call Finish to see it).
   ~SerialQueue() { Stop(); }
   SerialQueue(const SerialQueue&) = delete;
@@ -25,6 +25,10 @@ class SerialQueue {
 
   // Queues `task`; rethrows a task's exception instead, once one has thrown.
   void Push(std::function<void()> task) {
+    // The thread starts with the first task, not before: a batch forks its GPU child at its first
+    // draw, and a thread starting at that moment may hold a lock of the allocator's that the child
+    // inherits held (under ASan the child then hung).
+    if (!worker_.joinable()) worker_ = std::thread([this] { Work(); });
     std::unique_lock lock(mutex_);
     room_.wait(lock, [&] { return tasks_.size() < waiting_ || failed_; });
     if (failed_) std::rethrow_exception(failed_);
@@ -75,7 +79,7 @@ class SerialQueue {
   std::deque<std::function<void()>> tasks_;
   bool stopping_ = false;
   std::exception_ptr failed_;
-  std::thread worker_;  // last: started once everything it reads exists
+  std::thread worker_;  // started by the first Push
 };
 
 }  // namespace twinraster
