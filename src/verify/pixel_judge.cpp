@@ -129,9 +129,9 @@ void FrameJudge::FinishUnused(int x0, int x1, int y, Verification& v, int& worst
   }
 }
 
-// Pixels one surface settles: its offer, `colours`, is the only one and no background is offered
-// (a surface is certain at each), so each is covered, never uncertain, and a violation by its
-// distance from that offer (what FinishUsed finds after the surface's offers).
+// Pixels of a settled tile: `colours` is the only colour range offered at each and no background
+// is (a surface is certain at each), so each is covered, never uncertain, and a violation by its
+// distance from that range (what FinishUsed finds after the same offers).
 void FrameJudge::FinishSettled(int x0, int x1, int y, const ColourRange* colours, Verification& v, int& worst_distance,
                                std::vector<PixelClass>& pixels) const {
   PixelClass* out = pixels.data() + std::size_t(y) * image_->width;

@@ -60,14 +60,14 @@ class FrameJudge {
   // Whether pass 1 found a surface certain to be written at every pixel of the tile.
   bool TileCertain(std::size_t tile) const { return tile_gap_[tile] > 0; }
 
-  // The colours, pixel by pixel, of a row run x0..x1 within one tile that a single surface settles
-  // (sole_surfaces.hpp), or false when none does: its pixels got no offers, and that surface's are
-  // the only ones allowed there.
+  // The colours allowed, pixel by pixel, in a row run x0..x1 within one settled tile
+  // (sole_surfaces.hpp), or false when the tile is not settled: its pixels got no offers, and the
+  // colours given are the only ones its surfaces offer there.
   using SettledRun = std::function<bool(int y, int x0, int x1, ColourRange* colours)>;
 
   // The background where no surface is certain, then every pixel's class, written into `pixels`
   // (the whole frame's, row by row) and counted into `counts`, with the band's first and worst.
-  // `settled` gives the runs that one surface settles (none when empty).
+  // `settled` gives the settled tiles' runs (none when empty).
   void Finish(Verification& counts, std::vector<PixelClass>& pixels, const SettledRun& settled = {});
   Rgb8 ImageColour(int x, int y) const {
     const std::uint8_t* p = image_->pixel(std::uint32_t(x), std::uint32_t(y));
