@@ -26,11 +26,12 @@ FrameJudge::FrameJudge(const Image& image, Rgb8 background, bool reversed_z, int
 
 void FrameJudge::UseFirst(std::size_t tile) {
   used_[tile] = 1;
-  const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
-  const int x0 = tx * kTile, x1 = std::min(int(image_->width), x0 + kTile);
-  for (int y = row0_ + ty * kTile; y < std::min(row1_, row0_ + (ty + 1) * kTile); ++y) {
-    std::fill(gap_.begin() + std::ptrdiff_t(Index(x0, y)), gap_.begin() + std::ptrdiff_t(Index(x1, y)), 0.0);
-    std::fill(state_.begin() + std::ptrdiff_t(Index(x0, y)), state_.begin() + std::ptrdiff_t(Index(x1, y)), State{});
+  const PixelBox box = TileBox(tile);
+  for (int y = box.y0; y <= box.y1; ++y) {
+    std::fill(gap_.begin() + std::ptrdiff_t(Index(box.x0, y)), gap_.begin() + std::ptrdiff_t(Index(box.x1, y)) + 1,
+              0.0);
+    std::fill(state_.begin() + std::ptrdiff_t(Index(box.x0, y)), state_.begin() + std::ptrdiff_t(Index(box.x1, y)) + 1,
+              State{});
   }
 }
 
@@ -65,12 +66,11 @@ bool FrameJudge::CouldMatter(const PixelBox& box, std::array<double, 2> range, b
 }
 
 void FrameJudge::RefreshTiles() {
-  const int w = int(image_->width);
   for (const std::uint32_t tile : dirty_) {
-    const int tx = int(tile) % tiles_x_, ty = int(tile) / tiles_x_;
+    const PixelBox box = TileBox(tile);
     double gap = std::numeric_limits<double>::infinity();
-    for (int y = row0_ + ty * kTile; y < std::min(row1_, row0_ + (ty + 1) * kTile); ++y) {
-      for (int x = tx * kTile; x < std::min(w, (tx + 1) * kTile); ++x) gap = std::min(gap, gap_[Index(x, y)]);
+    for (int y = box.y0; y <= box.y1; ++y) {
+      for (int x = box.x0; x <= box.x1; ++x) gap = std::min(gap, gap_[Index(x, y)]);
     }
     tile_gap_[tile] = gap;
     is_dirty_[tile] = 0;

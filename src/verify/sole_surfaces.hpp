@@ -27,15 +27,14 @@ class SoleSurfaces {
   explicit SoleSurfaces(FrameJudge& judge) : judge_(judge), tiles_(judge.Tiles()) {}
 
   // Pass 2's word on the row run of `shape` at (x, y) in one tile, which the tile's depth bound
-  // already lets it reach: whether the shape must offer there pixel by pixel (false: the tile holds
-  // it back). `serial` numbers the shapes of the frame, one each, in the order they are offered;
-  // `box` is the part of the frame the shape is scanned in.
+  // already lets it reach and which the tile does not hold yet (HeldBy is asked first): whether the shape must offer
+  // there pixel by pixel (false: the tile holds it back). `serial` numbers the shapes of the frame, one each, in the
+  // order they are offered; `box` is the part of the frame the shape is scanned in.
   template <class Shape>
   bool Keep(const Shape& shape, Rgb8 flat, const PixelBox& box, int x, int y, std::uint64_t serial) {
     const std::size_t tile = judge_.TileOf(x, y);
     Tile& t = tiles_[tile];
     if (t.mixed) return true;
-    if (HeldBy(tile, serial)) return false;
     bool exact = true;  // whether every pixel gets the one colour `flat`
     if constexpr (std::is_same_v<Shape, TriangleShape>) exact = !shape.lit();
     const bool holds =
