@@ -168,11 +168,13 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
 
   Stopwatch clock;
   double setup_ms = 0, draw_ms = 0;
-  Framebuffer fb(list.width, list.height, list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess);
-  // One chunk clears each band just before drawing it, while its rows are in the cache; several
-  // chunks (or none) clear the whole frame first.
-  const std::optional<std::uint32_t> clear_in_draw =
-      chunks.size() == 1 ? std::optional(PackRgba(list.background)) : std::nullopt;
+  // One chunk clears each band just before drawing it, while its rows are in the cache, and needs
+  // depth only for the band each thread is drawing; several chunks (or none) clear the whole frame
+  // first and keep its whole depth, which the next chunk tests against.
+  const bool one_chunk = chunks.size() == 1;
+  const std::optional<std::uint32_t> clear_in_draw = one_chunk ? std::optional(PackRgba(list.background)) : std::nullopt;
+  Framebuffer fb(list.width, list.height, list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess,
+                 one_chunk ? threads * kBandRows : list.height);
   if (!clear_in_draw) ClearFrame(fb, threads, list.height, PackRgba(list.background));
   draw_ms += clock.Lap();
 

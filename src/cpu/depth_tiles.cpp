@@ -10,9 +10,9 @@ namespace {
 // The largest (kLess) or smallest (kGreater) depth stored in a rectangle.
 template <bool kLargest>
 float Farthest(const Framebuffer& fb, int x_begin, int x_end, int row_begin, int row_end) {
-  float farthest = fb.depth[fb.index(x_begin, row_begin)];
+  float farthest = fb.depth_row(row_begin)[x_begin];
   for (int py = row_begin; py < row_end; ++py) {
-    const float* row = fb.depth.data() + fb.index(0, py);
+    const float* row = fb.depth_row(py);
     for (int px = x_begin; px < x_end; ++px) {
       farthest = kLargest ? (row[px] > farthest ? row[px] : farthest) : (row[px] < farthest ? row[px] : farthest);
     }

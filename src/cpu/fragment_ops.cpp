@@ -120,8 +120,8 @@ void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float 
 
 void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_colour) {
   const float clear_depth = ClearDepth(fb.compare);
+  for (int py = row_begin; py < row_end; ++py) std::fill_n(fb.depth_row(py), fb.width(), clear_depth);
   const std::size_t begin = fb.index(0, row_begin), end = fb.index(0, row_end);
-  std::fill(fb.depth.data() + begin, fb.depth.data() + end, clear_depth);
   std::uint8_t* rgba = fb.colour.rgba.data();
   for (std::size_t i = begin; i < end; ++i) std::memcpy(rgba + 4 * i, &clear_colour, 4);
 }
@@ -129,8 +129,9 @@ void ClearRows(Framebuffer& fb, int row_begin, int row_end, std::uint32_t clear_
 bool ShadeFragment(Framebuffer& fb, int px, int py, const DepthPlane& plane, std::uint32_t colour) {
   const std::size_t i = fb.index(px, py);
   const float z = DepthAt(plane, px, py);
-  if (!DepthTest(fb.compare, z, fb.depth[i])) return false;
-  fb.depth[i] = z;
+  float& stored = fb.depth_row(py)[px];
+  if (!DepthTest(fb.compare, z, stored)) return false;
+  stored = z;
   std::memcpy(fb.colour.rgba.data() + 4 * i, &colour, 4);
   return true;
 }
@@ -139,30 +140,30 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
   const std::size_t row = fb.index(0, py);
   const bool greater = fb.compare == DepthCompare::kGreater;
   if (plane.fused) {
-    ShadeRowFused(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+    ShadeRowFused(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                   plane.a0, plane.dzdx, plane.dzdy, greater, colour);
   } else {
-    ShadeRowSeparate(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end,
+    ShadeRowSeparate(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end,
                      static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);
   }
 }
 
 void ShadeSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane, std::uint32_t colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeAnchoredRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+  ShadeAnchoredRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                    plane, fb.compare == DepthCompare::kGreater, colour);
 }
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeSmoothRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                  plane, colour, fb.compare == DepthCompare::kGreater);
 }
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane,
                      const AnchoredColourPlanes& colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeSmoothRow(fb.depth.data() + row, fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                  plane, colour, fb.compare == DepthCompare::kGreater);
 }
 
