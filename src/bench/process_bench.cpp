@@ -2,6 +2,7 @@
 
 #include "base/stopwatch.hpp"
 #include "bench/bench_suite.hpp"
+#include "gpu/driver_files.hpp"
 
 #include <fcntl.h>
 #include <nlohmann/json.hpp>
@@ -20,10 +21,7 @@ extern char** environ;
 
 namespace twinraster {
 
-namespace {
-
-// Runs `args` (args[0] the executable) with its output thrown away; the wall time, in ms.
-double TimedProcess(const std::vector<std::string>& args) {
+double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
   std::vector<char*> argv;
   for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
@@ -40,33 +38,26 @@ double TimedProcess(const std::vector<std::string>& args) {
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   const double ms = clock.Milliseconds();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != expected_exit) {
     std::string command;
     for (const std::string& arg : args) command += (command.empty() ? "" : " ") + arg;
-    throw std::runtime_error("bench: `" + command + "` did not exit 0");
+    throw std::runtime_error("bench: `" + command + "` did not exit " + std::to_string(expected_exit));
   }
   return ms;
 }
 
-// A fresh directory under the system's temporary one, removed with this object.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "twinraster-bench-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("bench: cannot make a temporary directory");
-    path_ = pattern;
-  }
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
+TemporaryDirectory::TemporaryDirectory() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "twinraster-bench-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) throw std::runtime_error("bench: cannot make a temporary directory");
+  path_ = pattern;
+}
 
- private:
-  std::filesystem::path path_;
-};
+TemporaryDirectory::~TemporaryDirectory() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+namespace {
 
 // The chapter's scene at side x side, the camera stepped sideways through ten places, `count`
 // times: the batch, as a test suite of small scenes has it.
@@ -92,10 +83,14 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options) {
   const TemporaryDirectory work;
   const std::string exe = options.executable.string(), scene = options.chapter_scene.string();
   const std::string out = (work.path() / "out.png").string();
-  std::vector<double> floor, version, cpu, gpu;
+  std::vector<double> floor, version, driver_floor, cpu, gpu;
   for (int run = 0; run < options.runs; ++run) {  // in turn, so that the machine's drift is shared
     floor.push_back(TimedProcess({exe, "--help"}));
     version.push_back(TimedProcess({exe, "--version"}));
+    {
+      const gpu::LavapipeAlone alone;  // in this process's environment, which the child inherits
+      if (!alone.manifest().empty()) driver_floor.push_back(TimedProcess({exe, "--version"}));
+    }
     cpu.push_back(TimedProcess({exe, "render", "-q", scene, "--backend", "cpu", "-o", out}));
     gpu.push_back(TimedProcess({exe, "render", "-q", scene, "--backend", "gpu", "-o", out}));
   }
@@ -118,6 +113,7 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options) {
   }
   return {.floor_ms = Median(floor),
           .version_ms = Median(version),
+          .driver_floor_ms = driver_floor.empty() ? 0 : Median(driver_floor),
           .cpu_scene_ms = Median(cpu),
           .gpu_scene_ms = Median(gpu),
           .batch_ms = batch.empty() ? 0 : Median(batch),

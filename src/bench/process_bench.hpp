@@ -1,7 +1,8 @@
 // What a scene costs beyond its drawing, timed as a user meets it: whole twinraster processes
 // (started, waited for, wall time), side by side in rounds, medians. The process floor
 // (`--help`), the chapter's scene rendered on each backend, and a batch of small scenes on both
-// backends with its page and JUnit file. It does not time stages inside a process (scale_bench
+// backends with its page and JUnit file; and the helpers bench --verify times its processes with.
+// It does not time stages inside a process (scale_bench
 // does), and it checks only that each process exits 0.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace twinraster {
 
@@ -23,8 +25,12 @@ struct ProcessBenchOptions {
 
 struct ProcessTimes {
   // Medians, milliseconds, each a whole process.
-  double floor_ms = 0;                        // twinraster --help: starting and ending the program
-  double version_ms = 0;                      // twinraster --version, which asks the Vulkan loader for every device
+  double floor_ms = 0;    // twinraster --help: starting and ending the program
+  double version_ms = 0;  // twinraster --version, which asks the Vulkan loader for every device
+  // twinraster --version with lavapipe's driver alone offered to the loader: the Vulkan floor under
+  // a gpu render (the driver loaded and its device found, nothing drawn); 0 when not measured
+  // (lavapipe not installed, or the user's loader variables choose the drivers).
+  double driver_floor_ms = 0;
   double cpu_scene_ms = 0, gpu_scene_ms = 0;  // render SCENE --backend cpu / gpu -o OUT.png
   double batch_ms = 0;                        // render of batch_scenes scenes, --backend both, --report and --junit
   int runs = 0, batch_runs = 0;
@@ -35,5 +41,23 @@ struct ProcessTimes {
 // Works in a temporary directory, removed afterwards. Throws std::runtime_error when a process
 // cannot start or exits other than 0.
 ProcessTimes RunProcessBench(const ProcessBenchOptions& options);
+
+// Runs `args` (args[0] the executable) with its output thrown away, and returns its wall time in
+// milliseconds, from start to exit. Throws std::runtime_error when it cannot start, or when it does
+// not exit with `expected_exit`.
+double TimedProcess(const std::vector<std::string>& args, int expected_exit = 0);
+
+// A fresh directory under the system's temporary one, removed with this object.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory();
+  ~TemporaryDirectory();
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 }  // namespace twinraster

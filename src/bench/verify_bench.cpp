@@ -1,6 +1,9 @@
 #include "bench/verify_bench.hpp"
 
 #include "bench/bench_suite.hpp"
+#include "bench/process_bench.hpp"
+#include "image/image_compare.hpp"
+#include "image/png_file.hpp"
 #include "run/run_scene.hpp"
 #include "scene/obj_scene.hpp"
 
@@ -8,11 +11,39 @@
 
 namespace twinraster {
 
+namespace {
+
+// `render` and `verify` of one scene as a user runs them, in turn, so that the machine's drift
+// falls on each alike. The failing image keeps the passing one's notes, so that both are judged
+// by the same device's rules.
+VerifyProcessRow TimeProcesses(const std::filesystem::path& executable, const std::filesystem::path& scene, int runs) {
+  const TemporaryDirectory work;
+  const std::string exe = executable.string(), file = scene.string();
+  const std::string drawn = (work.path() / "twin.png").string(), shifted = (work.path() / "shifted.png").string();
+  const std::string out = (work.path() / "out.png").string();
+  TimedProcess({exe, "render", "-q", file, "--backend", "cpu", "-o", drawn});
+  WritePng(shifted, ShiftedRight(ReadPng(drawn)), kPngFastest, ReadPngNotes(drawn));
+  constexpr int kViolations = 1;  // verify's exit code for an image with violations
+  std::vector<double> render, passing, failing;
+  for (int i = 0; i < runs; ++i) {
+    render.push_back(TimedProcess({exe, "render", "-q", file, "--backend", "cpu", "-o", out}));
+    passing.push_back(TimedProcess({exe, "verify", file, drawn}));
+    failing.push_back(TimedProcess({exe, "verify", file, shifted}, kViolations));
+  }
+  return {.scene = file,
+          .render_ms = Median(render),
+          .verify_passing_ms = Median(passing),
+          .verify_failing_ms = Median(failing)};
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesystem::path& scenes_dir) {
   return {scenes_dir / "cgfs-transforms.json", scenes_dir / "lit-gouraud.json", scenes_dir / "one-million-cubes.json"};
 }
 
-VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs) {
+VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs,
+                                 const std::filesystem::path& executable) {
   VerifyBenchResult result;
   result.runs = runs;
   result.machine = MachineDescription("not used");
@@ -39,6 +70,9 @@ VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scene
     }
     row.twin_ms = Median(twin), row.verify_ms = Median(verify);
     result.rows.push_back(row);
+  }
+  if (!executable.empty()) {
+    for (const auto& file : scenes) result.processes.push_back(TimeProcesses(executable, file, runs));
   }
   return result;
 }

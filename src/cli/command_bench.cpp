@@ -108,7 +108,8 @@ int BenchVerify(const BenchArguments& a) {
   Progress progress = Progress::OnStandardError(a.quiet);
   progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) +
                   " run(s)...");
-  const VerifyBenchResult result = RunVerifyBench(scenes, a.runs);
+  // The whole processes are this very executable, started as a user starts it.
+  const VerifyBenchResult result = RunVerifyBench(scenes, a.runs, std::filesystem::read_symlink("/proc/self/exe"));
   progress.Clear();
   WriteTogether(a,
                 {{"verify.json", report::VerifyBenchJson(result).dump(2) + "\n"},
@@ -205,11 +206,12 @@ CommandRun AddBenchCommand(CLI::App& app) {
                     "instead of the suite: cubes written out one instance each, at growing counts,\n"
                     "every stage timed (the verifier too), with peak memory; each size's frame by\n"
                     "every PNG encoder; and first a scene's fixed costs as whole processes (scale.csv/\n"
-                    ".svg/.html/.json/.txt with --out; JSON twinraster.bench-scale/3)");
+                    ".svg/.html/.json/.txt with --out; JSON twinraster.bench-scale/4)");
   command->add_flag("--verify", a->verify,
                     "instead of the suite: the CPU twin's render against the verifier's judgement\n"
-                    "of that image, on the chapter's scene, lit-gouraud and the million cubes\n"
-                    "(verify.json/.txt with --out; JSON twinraster.bench-verify/1)");
+                    "of that image, on the chapter's scene, lit-gouraud and the million cubes, in\n"
+                    "process and as whole processes (render, then verify of an image that passes and\n"
+                    "of one that fails) (verify.json/.txt with --out; JSON twinraster.bench-verify/2)");
   command->add_option("--counts", a->counts, "with --scale: the instance counts (default: 1000,10000,100000,1000000)")
       ->type_name("N,N")
       ->delimiter(',');

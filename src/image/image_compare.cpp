@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 
 namespace twinraster {
 
@@ -33,6 +34,14 @@ Image DiffImage(const Image& a, const Image& b) {
     diff.rgba[i + 3] = 255;
   }
   return diff;
+}
+
+Image ShiftedRight(const Image& image) {
+  Image out = image;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    if (image.width > 1) std::memmove(out.pixel(1, y), image.pixel(0, y), 4 * std::size_t{image.width - 1});
+  }
+  return out;
 }
 
 }  // namespace twinraster

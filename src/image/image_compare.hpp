@@ -1,5 +1,6 @@
 // Compares two images pixel by pixel: how many pixels differ, by how much at most, and a diff
-// image that shows where.
+// image that shows where; and makes the image one pixel off that the verifier's tests and bench
+// judge as failing. It does not judge whether a difference is allowed (verify/ does).
 #pragma once
 
 #include "image/image.hpp"
@@ -20,5 +21,9 @@ Comparison CompareImages(const Image& a, const Image& b);
 
 // Differing pixels in red over a faded grey copy of `a`; images must have the same size.
 Image DiffImage(const Image& a, const Image& b);
+
+// The image moved one pixel right, the left column keeping its colour: what a device drawing one
+// pixel off would write.
+Image ShiftedRight(const Image& image);
 
 }  // namespace twinraster

@@ -29,7 +29,7 @@ nlohmann::ordered_json BenchJson(const BenchResult& result);
 std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t total);
 
 // bench --scale (scale_tables.cpp).
-inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/3";
+inline constexpr const char* kScaleJsonFormat = "twinraster.bench-scale/4";
 std::string ScaleTable(const ScaleResult& result);
 std::string ScaleCsv(const ScaleResult& result);
 nlohmann::ordered_json ScaleJson(const ScaleResult& result);

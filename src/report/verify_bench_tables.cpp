@@ -8,6 +8,29 @@
 
 namespace twinraster::report {
 
+namespace {
+
+// The same scenes as whole processes: what a user running `render` and then `verify` waits for.
+void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
+  s << "\nWhole processes, medians of " << result.runs
+    << " run(s) in turn: render SCENE --backend cpu -o OUT.png; verify SCENE IMAGE.png of the twin's image "
+       "(passes) and of it shifted one pixel right (fails)\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-36s | %9s | %12s %6s | %12s %6s\n", "scene", "render ms", "verify ms",
+                "ratio", "verify ms", "ratio");
+  s << line;
+  std::snprintf(line, sizeof line, "%-36s | %9s | %19s | %19s\n", "", "", "passing", "failing");
+  s << line;
+  for (const VerifyProcessRow& r : result.processes) {
+    std::snprintf(line, sizeof line, "%-36s | %9.1f | %12.1f %6.2f | %12.1f %6.2f\n",
+                  std::filesystem::path(r.scene).filename().string().c_str(), r.render_ms, r.verify_passing_ms,
+                  r.PassingRatio(), r.verify_failing_ms, r.FailingRatio());
+    s << line;
+  }
+}
+
+}  // namespace
+
 std::string VerifyBenchTable(const VerifyBenchResult& result) {
   std::ostringstream s;
   s << "Verify: the twin's render against the verifier's judgement of it, medians of " << result.runs << " run(s); "
@@ -32,6 +55,7 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   s << "(twin: RenderOnCpu as render runs it, on " << threads
     << " thread(s) row by row; verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware "
        "thread; uncertain: of the covered pixels)\n";
+  if (!result.processes.empty()) PutProcesses(s, result);
   return s.str();
 }
 
@@ -50,7 +74,20 @@ nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
                     {"covered", r.covered},
                     {"violations", r.violations}});
   }
-  return {{"format", "twinraster.bench-verify/1"}, {"machine", result.machine}, {"runs", result.runs}, {"rows", rows}};
+  nlohmann::ordered_json processes = nlohmann::ordered_json::array();
+  for (const VerifyProcessRow& r : result.processes) {
+    processes.push_back({{"scene", r.scene},
+                         {"render_ms", r.render_ms},
+                         {"verify_passing_ms", r.verify_passing_ms},
+                         {"passing_ratio", r.PassingRatio()},
+                         {"verify_failing_ms", r.verify_failing_ms},
+                         {"failing_ratio", r.FailingRatio()}});
+  }
+  return {{"format", "twinraster.bench-verify/2"},
+          {"machine", result.machine},
+          {"runs", result.runs},
+          {"rows", rows},
+          {"processes", processes}};
 }
 
 }  // namespace twinraster::report

@@ -2,6 +2,7 @@
 // the judgement of testing every primitive and pixel one by one: each pixel's class, the counts,
 // and the first and worst violation with the colours allowed there, on the twin's image and on the
 // same image shifted by one pixel (which fails), for random and shipped scenes.
+#include "image/image_compare.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
@@ -14,20 +15,6 @@
 using namespace twinraster;
 
 namespace {
-
-// The image moved one pixel right (the left column keeps its colour): what a device drawing one
-// pixel off would write.
-Image ShiftedRight(const Image& image) {
-  Image out = image;
-  for (std::uint32_t y = 0; y < image.height; ++y) {
-    for (std::uint32_t x = 1; x < image.width; ++x) {
-      const std::uint8_t* from = image.pixel(x - 1, y);
-      std::uint8_t* to = out.pixel(x, y);
-      for (int c = 0; c < 4; ++c) to[c] = from[c];
-    }
-  }
-  return out;
-}
 
 void CheckSameViolation(const std::optional<verify::Violation>& fast, const std::optional<verify::Violation>& slow) {
   REQUIRE(fast.has_value() == slow.has_value());
