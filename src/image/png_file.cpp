@@ -36,19 +36,9 @@ void AppendChunk(std::string& out, const char (&type)[5], const std::uint8_t* da
 }
 
 constexpr std::size_t kMaxNotes = 64;
-constexpr std::size_t kMaxKey = 79;
+constexpr std::size_t kMaxKey = png_format::kMaxKeyword;
 constexpr std::size_t kMaxValue = 1024;
 constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;  // PNG spec, 5.3
-
-// A tEXt keyword (PNG spec, 11.3.4.3): Latin-1 printable characters, spaces single and inside.
-bool IsValidKeyword(std::string_view key) {
-  if (key.empty() || key.size() > kMaxKey || key.front() == ' ' || key.back() == ' ') return false;
-  if (key.find("  ") != std::string_view::npos) return false;
-  return std::all_of(key.begin(), key.end(), [](char c) {
-    const auto b = static_cast<unsigned char>(c);
-    return (b >= 0x20 && b <= 0x7e) || b >= 0xa1;
-  });
-}
 
 bool HasControlCharacter(std::string_view text) {
   return std::any_of(text.begin(), text.end(), [](char c) {
@@ -61,7 +51,7 @@ bool HasControlCharacter(std::string_view text) {
 std::string TextChunks(const PngNotes& notes) {
   std::string chunks;
   for (const auto& [key, value] : notes) {
-    if (!IsValidKeyword(key)) {
+    if (!png_format::IsValidKeyword(key)) {
       throw std::invalid_argument("PNG note key \"" + key + "\" is not 1-" + std::to_string(kMaxKey) +
                                   " printable Latin-1 characters without leading, trailing or double spaces");
     }
@@ -193,7 +183,7 @@ std::optional<std::pair<std::string, std::string>> ReadNote(std::istream& in, st
   const std::size_t nul = data.find('\0');
   if (nul == std::string::npos) return std::nullopt;
   std::string key = data.substr(0, nul), value = data.substr(nul + 1);
-  if (!IsValidKeyword(key) || value.size() > kMaxValue || HasControlCharacter(value)) return std::nullopt;
+  if (!png_format::IsValidKeyword(key) || value.size() > kMaxValue || HasControlCharacter(value)) return std::nullopt;
   return std::pair{std::move(key), std::move(value)};
 }
 

@@ -1,8 +1,11 @@
 // ReadPng and DecodePng: PNG files from anywhere (any GPU, any engine, a bug report), read with
-// libspng, which checks every chunk's CRC and the zlib stream's Adler-32 and has limits. Nothing is
+// libspng, which checks every chunk's CRC and the zlib stream's Adler-32 and has limits, unless
+// the file is of the narrow form renderers write, which png_fast_reader.hpp reads faster. Nothing is
 // decoded before the declared size passes kMaxPngSide and the caller's check; the only large
-// allocation is the RGBA image itself; a file is streamed, never read whole.
+// allocation is the RGBA image itself (and, read by the fast reader, the image data, at most 8 MiB
+// of it); a file is otherwise streamed, never read whole.
 #include "image/png_bytes.hpp"
+#include "image/png_fast_reader.hpp"
 #include "image/png_file.hpp"
 
 #include <spng.h>
@@ -15,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -275,6 +279,9 @@ void CheckPaletteIndices(const Source& source, const std::string& name, const sp
 }
 
 Image Decode(std::istream& chunks, const Source& source, const std::string& name, const PngSizeCheck& check) {
+  if (std::optional<Image> image = png_fast::Decode(chunks, check)) return std::move(*image);
+  chunks.clear();
+  chunks.seekg(0);
   CheckStructure(chunks, name, check);
   const Context ctx = NewDecoder(source, name);
   spng_ihdr ihdr{};
