@@ -15,10 +15,10 @@
 namespace twinraster::png_fast {
 namespace {
 
-constexpr std::size_t kMaxNotes = 64;                                      // as ReadPngNotes keeps
+constexpr std::size_t kMaxNotes = 64;                                        // as ReadPngNotes keeps
 constexpr std::uint32_t kMaxNoteBytes = png_format::kMaxKeyword + 1 + 1024;  // keyword, NUL, value
 constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;                        // PNG spec, 5.3
-constexpr std::size_t kMaxImageData = std::size_t{8} << 20;  // bytes of IDAT held at once
+constexpr std::size_t kMaxImageData = std::size_t{8} << 20;                  // bytes of IDAT held at once
 
 struct DecompressorFree {
   void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
@@ -83,7 +83,7 @@ bool UnfilterRow(int filter, const std::uint8_t* in, std::uint8_t* out, const st
       for (std::size_t i = 4; i < stride; ++i) out[i] = std::uint8_t(in[i] + (out[i - 4] + (up ? up[i] : 0)) / 2);
       return true;
     case 4:
-      if (!up) return UnfilterRow(1, in, out, up, stride);  // Paeth(a, 0, 0) is a
+      if (!up) return UnfilterRow(1, in, out, up, stride);                           // Paeth(a, 0, 0) is a
       for (std::size_t i = 0; i < first; ++i) out[i] = std::uint8_t(in[i] + up[i]);  // Paeth(0, b, 0) is b
       for (std::size_t i = 4; i < stride; ++i) out[i] = std::uint8_t(in[i] + Paeth(out[i - 4], up[i], up[i - 4]));
       return true;
@@ -97,9 +97,9 @@ bool UnfilterRow(int filter, const std::uint8_t* in, std::uint8_t* out, const st
 bool Unfilter(std::uint8_t* bytes, std::uint32_t width, std::uint32_t height) {
   const std::size_t stride = std::size_t{width} * 4;
   for (std::size_t y = 0; y < height; ++y) {
+    const std::uint8_t* in = bytes + y * (stride + 1);  // the row's filter type, then its bytes
     std::uint8_t* out = bytes + y * stride;
-    if (!UnfilterRow(bytes[y * (stride + 1)], bytes + y * (stride + 1) + 1, out, y > 0 ? out - stride : nullptr, stride))
-      return false;
+    if (!UnfilterRow(in[0], in + 1, out, y > 0 ? out - stride : nullptr, stride)) return false;
   }
   return true;
 }
@@ -117,8 +117,8 @@ std::optional<Image> Inflate(const std::string& stream, std::uint32_t width, std
     return std::nullopt;  // the full reader says how much was needed
   }
   std::size_t used = 0, made = 0;
-  const libdeflate_result r = libdeflate_zlib_decompress_ex(d.get(), stream.data(), stream.size(), image.rgba.data(),
-                                                            filtered, &used, &made);
+  const libdeflate_result r =
+      libdeflate_zlib_decompress_ex(d.get(), stream.data(), stream.size(), image.rgba.data(), filtered, &used, &made);
   if (r != LIBDEFLATE_SUCCESS || used != stream.size() || made != filtered) return std::nullopt;
   if (!Unfilter(image.rgba.data(), width, height)) return std::nullopt;
   image.rgba.resize(std::size_t{width} * height * 4);
@@ -147,10 +147,8 @@ std::optional<Image> Decode(std::istream& in, const PngSizeCheck& check) {
     } else if (type == "IDAT") {
       // Renderers' images deflate to far less than a quarter, and 8 MiB holds a 1080p frame's many
       // times over: more is held in memory beside the image only by the full reader, which streams.
-      const std::size_t limit =
-          std::min(std::size_t{height} * (std::size_t{width} * 4 + 1) / 4 + 1024, kMaxImageData);
-      if (stream.size() + length > limit || !ReadChunkData(in, type, length, data))
-        return std::nullopt;
+      const std::size_t limit = std::min(std::size_t{height} * (std::size_t{width} * 4 + 1) / 4 + 1024, kMaxImageData);
+      if (stream.size() + length > limit || !ReadChunkData(in, type, length, data)) return std::nullopt;
       stream += data;
       image_data = true;
     } else if (type == "IEND") {

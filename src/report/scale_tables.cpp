@@ -160,17 +160,18 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
   }
   j["processes"] = nullptr;
   if (const auto& p = result.processes) {
-    j["processes"] = {{"runs", p->runs},
-                      {"floor_ms", p->floor_ms},
-                      {"version_ms", p->version_ms},
-                      {"driver_floor_ms", p->driver_floor_ms > 0 ? nlohmann::ordered_json(p->driver_floor_ms) : nullptr},
-                      {"cpu_scene_ms", p->cpu_scene_ms},
-                      {"gpu_scene_ms", p->gpu_scene_ms},
-                      {"cpu_scene_over_floor", p->floor_ms > 0 ? p->cpu_scene_ms / p->floor_ms : 0.0},
-                      {"batch_scenes", p->batch_scenes},
-                      {"batch_side", p->batch_side},
-                      {"batch_runs", p->batch_runs},
-                      {"batch_ms", p->batch_ms}};
+    j["processes"] = {
+        {"runs", p->runs},
+        {"floor_ms", p->floor_ms},
+        {"version_ms", p->version_ms},
+        {"driver_floor_ms", p->driver_floor_ms > 0 ? nlohmann::ordered_json(p->driver_floor_ms) : nullptr},
+        {"cpu_scene_ms", p->cpu_scene_ms},
+        {"gpu_scene_ms", p->gpu_scene_ms},
+        {"cpu_scene_over_floor", p->floor_ms > 0 ? p->cpu_scene_ms / p->floor_ms : 0.0},
+        {"batch_scenes", p->batch_scenes},
+        {"batch_side", p->batch_side},
+        {"batch_runs", p->batch_runs},
+        {"batch_ms", p->batch_ms}};
   }
   return j;
 }

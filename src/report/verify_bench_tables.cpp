@@ -16,8 +16,8 @@ void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
     << " run(s) in turn: render SCENE --backend cpu -o OUT.png; verify SCENE IMAGE.png of the twin's image "
        "(passes) and of it shifted one pixel right (fails)\n";
   char line[256];
-  std::snprintf(line, sizeof line, "%-36s | %9s | %12s %6s | %12s %6s\n", "scene", "render ms", "verify ms",
-                "ratio", "verify ms", "ratio");
+  std::snprintf(line, sizeof line, "%-36s | %9s | %12s %6s | %12s %6s\n", "scene", "render ms", "verify ms", "ratio",
+                "verify ms", "ratio");
   s << line;
   std::snprintf(line, sizeof line, "%-36s | %9s | %19s | %19s\n", "", "", "passing", "failing");
   s << line;

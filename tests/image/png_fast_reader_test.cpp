@@ -3,6 +3,7 @@
 // for bit by the fast reader and by libspng (the same bytes with an extra chunk, which only libspng
 // reads); and every file outside its narrow form is left to libspng.
 #include "image/png_fast_reader.hpp"
+
 #include "image/png_file.hpp"
 #include "support/catch.hpp"
 
@@ -74,7 +75,7 @@ struct Form {
   int colour = 6, depth = 8, interlace = 0;
   std::string before{}, after{};  // chunks before the image data, and after it before IEND
   int level = 9;
-  int idats = 1;            // the image data cut into this many IDAT chunks
+  int idats = 1;           // the image data cut into this many IDAT chunks
   bool bad_adler = false;  // the zlib stream's checksum one bit off
 };
 

@@ -2,8 +2,8 @@
 // the judgement of testing every primitive and pixel one by one: each pixel's class, the counts,
 // and the first and worst violation with the colours allowed there, on the twin's image and on the
 // same image shifted by one pixel (which fails), for random and shipped scenes.
-#include "image/image_compare.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "image/image_compare.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 #include "verify/verifier.hpp"
