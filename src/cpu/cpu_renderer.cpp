@@ -172,7 +172,8 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   // depth only for the band each thread is drawing; several chunks (or none) clear the whole frame
   // first and keep its whole depth, which the next chunk tests against.
   const bool one_chunk = chunks.size() == 1;
-  const std::optional<std::uint32_t> clear_in_draw = one_chunk ? std::optional(PackRgba(list.background)) : std::nullopt;
+  const std::optional<std::uint32_t> clear_in_draw =
+      one_chunk ? std::optional(PackRgba(list.background)) : std::nullopt;
   Framebuffer fb(list.width, list.height, list.reversed_z ? DepthCompare::kGreater : DepthCompare::kLess,
                  one_chunk ? threads * kBandRows : list.height);
   if (!clear_in_draw) ClearFrame(fb, threads, list.height, PackRgba(list.background));

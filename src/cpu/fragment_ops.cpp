@@ -143,8 +143,8 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, std:
     ShadeRowFused(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
                   plane.a0, plane.dzdx, plane.dzdy, greater, colour);
   } else {
-    ShadeRowSeparate(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end,
-                     static_cast<float>(py), plane.a0, plane.dzdx, plane.dzdy, greater, colour);
+    ShadeRowSeparate(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
+                     plane.a0, plane.dzdx, plane.dzdy, greater, colour);
   }
 }
 
@@ -156,15 +156,15 @@ void ShadeSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane, s
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const DepthPlane& plane, const ColourPlanes& colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
-                 plane, colour, fb.compare == DepthCompare::kGreater);
+  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py), plane,
+                 colour, fb.compare == DepthCompare::kGreater);
 }
 
 void ShadeSmoothSpan(Framebuffer& fb, int py, Span span, const AnchoredPlane& plane,
                      const AnchoredColourPlanes& colour) {
   const std::size_t row = fb.index(0, py);
-  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py),
-                 plane, colour, fb.compare == DepthCompare::kGreater);
+  ShadeSmoothRow(fb.depth_row(py), fb.colour.rgba.data() + 4 * row, span.begin, span.end, static_cast<float>(py), plane,
+                 colour, fb.compare == DepthCompare::kGreater);
 }
 
 }  // namespace twinraster::cpu
