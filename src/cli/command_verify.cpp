@@ -10,6 +10,7 @@
 #include "run/judge_image.hpp"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <iostream>

@@ -1,5 +1,7 @@
 #include "report/verify_report.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <sstream>
 
 namespace twinraster::report {

@@ -7,7 +7,7 @@
 #include "verify/drawn_by.hpp"
 #include "verify/verification.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <optional>
