@@ -30,6 +30,7 @@ struct BandTarget {
   cpu::Framebuffer& fb;
   cpu::DepthTiles& tiles;
   std::optional<std::uint32_t> clear;  // the colour each band is cleared to before it is drawn, if any
+  bool refresh_tiles = true;           // false for the last chunk: no later one tests against them
 };
 
 // Each part rasterizes its own bands, each band's primitives in list order; hidden[part] counts
@@ -79,7 +80,7 @@ void DrawChunk(const BandTarget& target, const cpu::RasterRules& rules, unsigned
           });
         }
       }
-      if (options.depth_tiles) tiles.Refresh(fb, static_cast<int>(band));
+      if (options.depth_tiles && target.refresh_tiles) tiles.Refresh(fb, static_cast<int>(band));
     };
     for (unsigned band = part; band < bands; band += threads) {
       if (target.clear) {
@@ -183,6 +184,7 @@ Image Render(const DrawList& list, const ClipPositions* clip, const CpuOptions& 
   std::vector<std::uint64_t> hidden(threads, 0);  // per part
   BandTarget target{scratch, options, static_cast<int>(list.height), fb, tiles, clear_in_draw};
   for (const GeometryChunk& chunk : chunks) {
+    target.refresh_tiles = &chunk != &chunks.back();
     // Setup: vertex stage, clipping, viewport transform, triangle (or line) setup, binning into bands.
     ProcessGeometry(list, chunk, threads, options.rules, scratch, clip, bands);
     setup_ms += clock.Lap();
