@@ -1,9 +1,9 @@
 // What a scene costs beyond its drawing, timed as a user meets it: whole twinraster processes
 // (started, waited for, wall time), side by side in rounds, medians. The process floor
-// (`--help`), the chapter's scene rendered on each backend, and a batch of small scenes on both
-// backends with its page and JUnit file; and the helpers bench --verify times its processes with.
-// It does not time stages inside a process (scale_bench
-// does), and it checks only that each process exits 0.
+// (`--help`), the Vulkan floor, the chapter's scene rendered on each backend, and a batch of small
+// scenes on both backends with its page and JUnit file; and the helpers bench --verify times its
+// processes with. It does not time stages inside a process (scale_bench does), and it checks only
+// that each process exits as expected.
 #pragma once
 
 #include <cstddef>
