@@ -104,7 +104,8 @@ std::optional<Image> Fast(const std::string& png) {
 Image Noise(std::uint32_t width, std::uint32_t height, std::uint32_t seed, int levels) {
   Image image(width, height);
   std::mt19937 random(seed);
-  for (std::uint8_t& b : image.rgba) b = static_cast<std::uint8_t>(random() % unsigned(levels) * (255 / (levels - 1)));
+  for (std::uint8_t& b : image.rgba)
+    b = static_cast<std::uint8_t>(random() % unsigned(levels) * unsigned(255 / (levels - 1)));
   return image;
 }
 
