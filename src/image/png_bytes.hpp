@@ -1,9 +1,11 @@
 // The byte-level facts of the PNG format that the writer, the notes walker and the readers share:
-// the signature, big-endian 32-bit fields (PNG spec 5.2, 5.3) and what a tEXt keyword may hold
-// (11.3.4.3). It reads and writes no chunk.
+// the signature, big-endian 32-bit fields and the longest chunk (PNG spec 5.2, 5.3), what a tEXt
+// keyword may hold (11.3.4.3), and how much of the notes twinraster keeps. It reads and writes no
+// chunk.
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -17,7 +19,12 @@ inline std::uint32_t BigEndian(const char* bytes) {
   return value;
 }
 
+inline constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;
+
 inline constexpr std::size_t kMaxKeyword = 79;
+// The notes kept: the first 64, each value at most 1024 bytes (png_file.hpp).
+inline constexpr std::size_t kMaxNotes = 64;
+inline constexpr std::size_t kMaxNoteValue = 1024;
 
 // Latin-1's printable characters, the space included: what a keyword is made of.
 inline bool IsPrintableLatin1(char c) {

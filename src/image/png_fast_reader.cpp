@@ -15,10 +15,9 @@
 namespace twinraster::png_fast {
 namespace {
 
-constexpr std::size_t kMaxNotes = 64;                                        // as ReadPngNotes keeps
-constexpr std::uint32_t kMaxNoteBytes = png_format::kMaxKeyword + 1 + 1024;  // keyword, NUL, value
-constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;                        // PNG spec, 5.3
-constexpr std::size_t kMaxImageData = std::size_t{8} << 20;                  // bytes of IDAT held at once
+using png_format::kMaxChunkLength, png_format::kMaxNotes, png_format::kMaxNoteValue;
+constexpr std::size_t kMaxNoteBytes = png_format::kMaxKeyword + 1 + kMaxNoteValue;  // keyword, NUL, value
+constexpr std::size_t kMaxImageData = std::size_t{8} << 20;                         // bytes of IDAT held at once
 
 struct DecompressorFree {
   void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
@@ -45,7 +44,7 @@ bool PlainNote(std::string_view data) {
   const std::size_t nul = data.find('\0');
   if (nul == std::string_view::npos || !png_format::IsValidKeyword(data.substr(0, nul))) return false;
   const std::string_view value = data.substr(nul + 1);
-  return value.size() <= 1024 && std::all_of(value.begin(), value.end(), png_format::IsPrintableLatin1);
+  return value.size() <= kMaxNoteValue && std::all_of(value.begin(), value.end(), png_format::IsPrintableLatin1);
 }
 
 // What the header declares, when it is the one form this reader decodes: 8-bit RGBA (colour type

@@ -35,10 +35,9 @@ void AppendChunk(std::string& out, const char (&type)[5], const std::uint8_t* da
   AppendBigEndian(out, crc);
 }
 
-constexpr std::size_t kMaxNotes = 64;
+using png_format::kMaxChunkLength, png_format::kMaxNotes;
 constexpr std::size_t kMaxKey = png_format::kMaxKeyword;
-constexpr std::size_t kMaxValue = 1024;
-constexpr std::uint32_t kMaxChunkLength = 0x7fffffff;  // PNG spec, 5.3
+constexpr std::size_t kMaxValue = png_format::kMaxNoteValue;
 
 bool HasControlCharacter(std::string_view text) {
   return std::any_of(text.begin(), text.end(), [](char c) {
