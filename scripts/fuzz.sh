@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets (clang, ASan, UBSan; the fuzz preset, in build-fuzz/) and runs each
 # for a bounded time (default 60 s each; FUZZ_SECONDS=N to change):
 #   scene_loader_fuzzer on a copy of the shipped scenes, with fuzz/scene.dict;
+#   gltf_fuzzer (bytes -> glTF reader -> scene) on assimp-testmodels' glTF files;
 #   png_reader_fuzzer (bytes -> PNG reader -> verify -> map) on the project's own render of a
 #   scene at 64 x 64 written in every PNG encoding (scripts/make-test-pngs.py --encodings-of),
 #   plus tests/image/pngs/ (every valid encoding, and one malformed file per known class).
@@ -43,6 +44,16 @@ while IFS= read -r scene; do
   cp "$scene" "$scenes/$(echo "$scene" | tr / _)"
 done < <(find scenes -name '*.json' -size -64k | sort)
 run scene_loader_fuzzer "$scenes" -dict=fuzz/scene.dict -timeout=30 -rss_limit_mb=4096 -max_len=65536
+
+# The glTF reader, on the .gltf and .glb files of Debian's assimp-testmodels that fit -max_len
+# (those whose buffers are separate files reach only the JSON: the fuzzer reads no other file).
+# The bounds are GltfLimits' defaults: a finding is what escapes them.
+gltfs=build-fuzz/run/gltf
+rm -rf "$gltfs" && mkdir -p "$gltfs"
+while IFS= read -r file; do
+  cp "$file" "$gltfs/$(echo "${file#/usr/share/assimp/models/}" | tr / _)"
+done < <(find /usr/share/assimp/models/glTF2 \( -name '*.gltf' -o -name '*.glb' \) -size -256k | sort)
+run gltf_fuzzer "$gltfs" -timeout=30 -rss_limit_mb=4096 -max_len=262144
 
 # The image path. A PNG may declare up to 16384 x 16384 (1 GiB of RGBA) only where no canvas is
 # given; here the canvas is 64 x 64 and checked before decoding, so one allocation over 64 MB is

@@ -30,6 +30,7 @@ test_packages=(
   chromium chromium-driver python3-selenium  # tests open every kind of page in headless Chromium
   libxml2-utils                  # xmllint: render --junit's XML against docs/schemas/junit.xsd
   clang-format                   # scripts/check-format.sh: the code as .clang-format writes it
+  assimp-testmodels              # glTF files no one here wrote (docs/gltf-assets.md)
 )
 case "${1:-}" in
   "") ;;

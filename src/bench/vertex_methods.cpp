@@ -49,6 +49,7 @@ glm::vec4 StepsInFloat(glm::vec3 v, const Transform& t, const Scene& scene, cons
         case TransformStep::Kind::kScale: v = v * ToFloat(step.vector); break;
         case TransformStep::Kind::kRotation: v = ToFloat(step.rotation) * v; break;
         case TransformStep::Kind::kTranslation: v = v + ToFloat(step.vector); break;
+        case TransformStep::Kind::kMatrix: v = glm::vec3(ToFloat(step.matrix) * glm::vec4(v, 1.0f)); break;
       }
     }
   }

@@ -51,7 +51,7 @@ void Factor(const Transform& t, InstanceExplanation& x) {
   x.translation = Translation(t.translation);
   if (t.steps) {
     x.steps.emplace();
-    for (const TransformStep& step : *t.steps) x.steps->push_back({step.kind, StepMatrix(step)});
+    for (const TransformStep& step : *t.steps) x.steps->push_back({step.kind, StepMatrix(step), step.label});
   } else {
     x.scale = Scale(t.scale);
     x.rotation = Rotation4(t.rotation);

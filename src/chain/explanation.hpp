@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace twinraster {
@@ -59,6 +60,7 @@ struct GridCopy {
 struct StepExplanation {
   TransformStep::Kind kind = TransformStep::Kind::kScale;
   glm::dmat4 matrix{1.0};
+  std::string label;  // TransformStep::label: a glTF node's name, or the chapter's mirror
 };
 
 struct InstanceExplanation {

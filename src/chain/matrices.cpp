@@ -31,6 +31,7 @@ glm::dmat4 StepMatrix(const TransformStep& step) {
     case TransformStep::Kind::kScale: return Scale(step.vector);
     case TransformStep::Kind::kRotation: return Rotation4(step.rotation);
     case TransformStep::Kind::kTranslation: return Translation(step.vector);
+    case TransformStep::Kind::kMatrix: return step.matrix;
   }
   return glm::dmat4(1.0);
 }
@@ -49,9 +50,11 @@ glm::dmat4 CameraMatrix(const Camera& camera) {
 
 glm::dmat4 PerspectiveMatrix(const Viewport& viewport, const Depth& depth) {
   const double d = viewport.distance, n = depth.near, f = depth.far;
-  // depth = A + B/z: 0 at near and 1 at far, or reversed, 1 at near and 0 at far.
-  const double a = depth.reversed ? -n / (f - n) : f / (f - n);
-  const double b = depth.reversed ? f * n / (f - n) : -f * n / (f - n);
+  // depth = A + B/z: 0 at near and 1 at far, or reversed, 1 at near and 0 at far. An infinite far
+  // (a glTF camera without zfar) takes the limit: A = 1, B = -near (reversed: A = 0, B = near).
+  const bool infinite = std::isinf(f);
+  const double a = infinite ? (depth.reversed ? 0.0 : 1.0) : depth.reversed ? -n / (f - n) : f / (f - n);
+  const double b = infinite ? (depth.reversed ? n : -n) : depth.reversed ? f * n / (f - n) : -f * n / (f - n);
   return FromRows({{d, 0, 0, 0}, {0, d, 0, 0}, {0, 0, a, b}, {0, 0, 1, 0}});
 }
 

@@ -24,7 +24,7 @@ glm::dmat4 Translation(glm::dvec3 t);       // I_T, C_T
 glm::dmat4 Rotation4(const glm::dmat3& r);  // I_R, C_R: the 3x3 with w kept
 glm::dmat4 Scale(glm::dvec3 s);             // I_S
 
-// One step of a transform written as a list: its I_S, I_R or I_T.
+// One step of a transform written as a list: its I_S, I_R or I_T, or a glTF node's local matrix.
 glm::dmat4 StepMatrix(const TransformStep& step);
 // M_Model = I_T · I_R · I_S: scale, then rotate, then translate (Listing 10-4's order). For a
 // transform written as a list, its steps come first, in the order written:

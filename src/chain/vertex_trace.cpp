@@ -31,6 +31,7 @@ glm::dvec3 ApplyStep(glm::dvec3 vertex, const TransformStep& step) {
     case TransformStep::Kind::kScale: return vertex * step.vector;
     case TransformStep::Kind::kRotation: return step.rotation * vertex;
     case TransformStep::Kind::kTranslation: return vertex + step.vector;
+    case TransformStep::Kind::kMatrix: return glm::dvec3(step.matrix * glm::dvec4(vertex, 1.0));
   }
   return vertex;
 }

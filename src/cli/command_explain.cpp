@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
+#include "cli/scene_choice_options.hpp"
 #include "image/staged_file.hpp"
 #include "report/chain_page.hpp"
 #include "report/explain_json.hpp"
@@ -26,6 +27,7 @@ struct ExplainArguments {
   bool all_vertices = false;
   bool json = false;
   std::optional<std::string> html;
+  SceneChoiceArguments choice;  // --camera, --scene, --size
 };
 
 // The text traces one vertex per instance unless asked for all; the JSON, read by tools rather
@@ -49,7 +51,8 @@ int RunExplain(const ExplainArguments& a) {
   if (a.all_vertices && a.vertex) {
     throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
   }
-  const Scene scene = LoadSceneArgument(a.scene);
+  const Scene scene = LoadSceneArgument(a.scene, ChoiceOf(a.choice));
+  PrintSceneNotes(scene, a.scene);
   if (a.html) {
     // The page draws every vertex's edges, and follows the vertex asked for or the first in view.
     // Explain checks --instance and --vertex before the file is written.
@@ -99,6 +102,7 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "space, NDC and the canvas, each with its matrix and the traced vertex\n"
                    "(--instance, --vertex; default: instance 0's first vertex in view)")
       ->type_name("FILE");
+  AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("--json", a->json,
                     "print one JSON object (twinraster.explain/3, docs/json-output.md), also\n"
                     "with --html");

@@ -10,6 +10,7 @@
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
+#include "cli/scene_choice_options.hpp"
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
@@ -48,6 +49,7 @@ struct RenderArguments {
   bool quiet = false;
   std::optional<std::string> report;  // --report DIR: index.html and thumbnails
   std::optional<std::string> junit;   // --junit FILE
+  SceneChoiceArguments choice;        // --camera, --scene, --size
   run::RunOptions run;                // the words above as the run stage takes them (ResolveOptions)
 };
 
@@ -187,7 +189,8 @@ DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument
   progress.Status("reading " + scene_argument + "...");
   DrawnScene drawn;
   const std::string source = IsStandardStream(scene_argument) ? "<stdin>" : scene_argument;
-  Scene scene = LoadSceneArgument(scene_argument);
+  Scene scene = LoadSceneArgument(scene_argument, ChoiceOf(a.choice));
+  if (!a.quiet) PrintSceneNotes(scene, source);
   const double load_ms = drawn.clock.Milliseconds();
   if (a.wireframe) scene.wireframe = true;
   drawn.out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
@@ -405,6 +408,7 @@ CommandRun AddRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   ExpectIndex(
       command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
+  AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
   command
       ->add_option("--report", a->report,

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
+#include "cli/scene_choice_options.hpp"
 #include "image/png_file.hpp"
 #include "report/image_notes.hpp"
 #include "report/verify_report.hpp"
@@ -29,6 +30,7 @@ struct VerifyArguments {
   std::string strict_lines = "false";
   bool bits_given = false, strict_given = false;
   bool json = false;
+  SceneChoiceArguments choice;  // --camera, --scene, --size
 };
 
 // The device's rules: each option given, else what the image's notes say, else the loosest.
@@ -41,7 +43,8 @@ verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<
 
 int Verify(const VerifyArguments& a) {
   if (a.map) ExpectPngName("--map", *a.map);
-  Scene scene = LoadSceneArgument(a.scene);
+  Scene scene = LoadSceneArgument(a.scene, ChoiceOf(a.choice));
+  PrintSceneNotes(scene, a.scene);
   if (a.wireframe) scene.wireframe = true;
   // The canvas is the size the image must declare, checked before any pixel is decoded.
   const Image image = ReadPng(a.image, [&](std::uint32_t width, std::uint32_t height) {
@@ -99,6 +102,7 @@ CommandRun AddVerifyCommand(CLI::App& app) {
   command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")
       ->type_name("MAP.png");
   command->add_flag("--no-map", a->no_map, "write no map");
+  AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/2, docs/json-output.md)");
   return [a] { return Verify(*a); };
 }

@@ -32,8 +32,8 @@ std::string Suffixed(const std::string& out, const std::string& suffix) {
 
 bool IsStandardStream(std::string_view argument) { return argument == "-"; }
 
-Scene LoadSceneArgument(const std::string& argument) {
-  if (!IsStandardStream(argument)) return LoadSceneOrObj(argument);
+Scene LoadSceneArgument(const std::string& argument, const SceneChoice& choice) {
+  if (!IsStandardStream(argument)) return LoadSceneOrObj(argument, choice);
   std::string text;
   char buffer[1 << 16];
   for (;;) {
@@ -43,7 +43,9 @@ Scene LoadSceneArgument(const std::string& argument) {
     if (n < sizeof buffer) break;
   }
   if (std::ferror(stdin)) throw SceneError(kStdinName, "(file)", std::string("read error: ") + std::strerror(errno));
-  return ParseScene(text, kStdinName);
+  Scene scene = ParseScene(text, kStdinName);
+  ApplyChoice(scene, kStdinName, choice);
+  return scene;
 }
 
 void ExpectPngName(const std::string& option, const std::string& name) {

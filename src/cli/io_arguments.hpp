@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/scene.hpp"
+#include "scene/scene_choice.hpp"
 
 #include <string>
 #include <string_view>
@@ -13,10 +14,11 @@ namespace twinraster {
 // "-" as SCENE or as an output: the standard stream, as in most command-line tools.
 bool IsStandardStream(std::string_view argument);
 
-// Reads the scene file, the OBJ file (a name ending in .obj, in any case: SceneForObj), or a scene
+// Reads the scene file, the OBJ file (a name ending in .obj, in any case: SceneForObj), the glTF
+// file (.gltf or .glb: SceneForGltf), with `choice` applied, or a scene
 // on standard input for "-" (named <stdin> in errors, its OBJ paths relative to the current
 // directory); throws SceneError.
-Scene LoadSceneArgument(const std::string& argument);
+Scene LoadSceneArgument(const std::string& argument, const SceneChoice& choice = {});
 
 // Throws UsageError unless `name` ends in .png (in any case): "<option> <name>: ...".
 void ExpectPngName(const std::string& option, const std::string& name);

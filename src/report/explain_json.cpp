@@ -34,6 +34,7 @@ const char* StepKind(TransformStep::Kind kind) {
     case TransformStep::Kind::kScale: return "scale";
     case TransformStep::Kind::kRotation: return "rotation";
     case TransformStep::Kind::kTranslation: return "translation";
+    case TransformStep::Kind::kMatrix: return "matrix";
   }
   return "?";
 }
@@ -115,7 +116,8 @@ Json InstanceJson(const InstanceExplanation& x) {
   if (x.steps) {
     entry["transform_steps"] = Json::array();
     for (const StepExplanation& step : *x.steps) {
-      entry["transform_steps"].push_back({{"kind", StepKind(step.kind)}, {"matrix", Rows(step.matrix)}});
+      entry["transform_steps"].push_back(
+          {{"kind", StepKind(step.kind)}, {"matrix", Rows(step.matrix)}, {"label", step.label}});
     }
   }
   entry["model_matrix"] = Rows(x.model_matrix);

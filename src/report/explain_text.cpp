@@ -2,6 +2,7 @@
 
 #include "scene/model_reader.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -46,6 +47,7 @@ std::string StepName(TransformStep::Kind kind) {
     case TransformStep::Kind::kScale: return "I_S";
     case TransformStep::Kind::kRotation: return "I_R";
     case TransformStep::Kind::kTranslation: return "I_T";
+    case TransformStep::Kind::kMatrix: return "N";  // a glTF node's local matrix
   }
   return "?";
 }
@@ -118,12 +120,21 @@ void PrintInstanceCount(std::ostream& out, const Explanation& e) {
 void PrintInstanceMatrices(std::ostream& out, const InstanceExplanation& x) {
   if (x.steps) {
     const std::size_t n = x.steps->size();
-    out << "): the transform is a list of " << n << " step" << (n == 1 ? "" : "s")
-        << ", applied in the order written\n";
+    const bool nodes = std::any_of(x.steps->begin(), x.steps->end(),
+                                   [](const StepExplanation& s) { return s.kind == TransformStep::Kind::kMatrix; });
+    if (nodes) {
+      out << "): a glTF node chain of " << n << " steps, applied in order: the mesh's node, its parents up "
+          << "to the root, then the chapter's mirror\n";
+    } else {
+      out << "): the transform is a list of " << n << " step" << (n == 1 ? "" : "s")
+          << ", applied in the order written\n";
+    }
     std::string product;
     for (std::size_t k = 0; k < n; ++k) {
       const std::string name = StepName((*x.steps)[k].kind) + std::to_string(k + 1);
-      PrintMatrix(out, "step " + std::to_string(k + 1) + ": " + name, (*x.steps)[k].matrix);
+      const std::string& label = (*x.steps)[k].label;
+      PrintMatrix(out, "step " + std::to_string(k + 1) + ": " + name + (label.empty() ? "" : ", " + label),
+                  (*x.steps)[k].matrix);
       product = k == 0 ? name : name + " · " + product;
     }
     if (x.grid_copy) {

@@ -1,5 +1,7 @@
 #include "scene/model_reader.hpp"
 
+#include "scene/gltf_document.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/obj_file.hpp"
 
 #include <algorithm>
@@ -134,8 +136,30 @@ const char* ShadingName(Shading shading) {
   return "?";
 }
 
+// "gltf": a glTF file's default scene as one model, each node's meshes moved by its chain.
+Model ReadGltfModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory, bool lit) {
+  for (const char* key : {"vertices", "triangles", "obj", "colour", "materials"}) {
+    if (auto found = r.Find(key))
+      found->Fail("a model read from \"gltf\" takes its geometry and colours from the file");
+  }
+  const JsonReader gltf = r.Required("gltf");
+  const std::string written = gltf.String();
+  if (written.empty()) gltf.Fail("expected the path of a .gltf or .glb file, found \"\"");
+  const std::filesystem::path file = directory / std::filesystem::path(written);
+  Model model = GltfModel(ReadGltf(file), name, lit);  // its errors name the file as opened
+  model.source = written;
+  return model;
+}
+
 Model ReadModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory, bool lit) {
-  r.ExpectObject({"vertices", "triangles", "obj", "colour", "materials", "shading"});
+  r.ExpectObject({"vertices", "triangles", "obj", "gltf", "colour", "materials", "shading"});
+  if (r.Find("gltf")) {
+    const std::optional<JsonReader> shading = r.Find("shading");
+    const std::optional<Shading> asked = shading ? std::optional(ReadShading(*shading, lit)) : std::nullopt;
+    Model model = ReadGltfModel(r, name, directory, lit);
+    if (asked) model.shading = *asked;
+    return model;
+  }
   const std::optional<JsonReader> obj = r.Find("obj");
   if (!obj) {
     for (const char* key : {"colour", "materials"}) {

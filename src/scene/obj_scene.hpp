@@ -1,11 +1,13 @@
 // An OBJ file on its own as a scene (`twinraster render mesh.obj`, as tinyrenderer's command line
 // draws a model): the mesh framed by a lookat camera, lit by a headlight; and the one entry point
-// for a command's input, a scene file or an OBJ file.
+// for a command's input, a scene file, an OBJ file or a glTF file.
 #pragma once
 
 #include "scene/scene.hpp"
+#include "scene/scene_choice.hpp"
 
 #include <filesystem>
+#include <string>
 
 namespace twinraster {
 
@@ -18,7 +20,12 @@ namespace twinraster {
 // when a face names normals (vn), flat otherwise. Scene::name is the file's stem.
 Scene SceneForObj(const std::filesystem::path& file);
 
-// SceneForObj for a path ending in .obj (in any case), LoadScene for any other.
-Scene LoadSceneOrObj(const std::filesystem::path& file);
+// SceneForObj for a path ending in .obj (in any case), SceneForGltf for .gltf and .glb, LoadScene
+// for any other; then the canvas size chosen, for any of them. A camera or scene chosen for a
+// file that is not glTF is a SceneError: such a file has none to choose from.
+Scene LoadSceneOrObj(const std::filesystem::path& file, const SceneChoice& choice = {});
+
+// The choice applied to a scene read from elsewhere (a JSON scene on standard input).
+void ApplyChoice(Scene& scene, const std::string& file, const SceneChoice& choice);
 
 }  // namespace twinraster

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -78,12 +79,15 @@ struct Model {
 };
 
 // One step of a transform written as a list, in the order written:
-// "transform": [{"rotation": {...}}, {"translation": [x, y, z]}, {"scale": s}].
+// "transform": [{"rotation": {...}}, {"translation": [x, y, z]}, {"scale": s}]; or, for an
+// instance of a glTF node, one node's local matrix (kMatrix), from the mesh's node up to its root.
 struct TransformStep {
-  enum class Kind { kScale, kRotation, kTranslation };
+  enum class Kind { kScale, kRotation, kTranslation, kMatrix };
   Kind kind = Kind::kScale;
   glm::dvec3 vector{1, 1, 1};  // the scale factors (kScale) or the offset (kTranslation)
   glm::dmat3 rotation{1.0};    // kRotation, in the chapter's convention
+  glm::dmat4 matrix{1.0};      // kMatrix: an affine matrix (last row 0 0 0 1), column-major
+  std::string label;           // kMatrix: whose matrix, e.g. "node 3 \"wheel\" (T·R·S)"
 };
 
 // An instance's transform. Written as an object it is applied scale first, then rotation, then
@@ -159,6 +163,9 @@ struct Scene {
   bool wireframe = false;           // draw triangle edges only, as the chapter's figures do
   // Absent: every model keeps its flat triangle colours, exactly as without this feature.
   std::optional<Lighting> lighting;
+  // What the file holds that is not drawn (a glTF file's textures, animations, lines, ...), one
+  // line each, for the commands to print: the image is still the file's geometry.
+  std::vector<std::string> notes;
 };
 
 }  // namespace twinraster

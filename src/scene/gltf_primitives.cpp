@@ -1,0 +1,117 @@
+// A glTF primitive as a model (gltf_build.hpp).
+#include "scene/gltf_accessors.hpp"
+#include "scene/gltf_build.hpp"
+#include "scene/scene_error.hpp"
+#include "scene/srgb.hpp"
+
+namespace twinraster::gltf {
+
+namespace {
+
+std::string PrimitivePath(std::size_t mesh, std::size_t primitive) {
+  return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]";
+}
+
+const char* ModeName(GltfMode mode) {
+  switch (mode) {
+    case GltfMode::kPoints: return "POINTS";
+    case GltfMode::kLines: return "LINES";
+    case GltfMode::kLineLoop: return "LINE_LOOP";
+    case GltfMode::kLineStrip: return "LINE_STRIP";
+    case GltfMode::kTriangles: return "TRIANGLES";
+    case GltfMode::kTriangleStrip: return "TRIANGLE_STRIP";
+    case GltfMode::kTriangleFan: return "TRIANGLE_FAN";
+  }
+  return "?";
+}
+
+const GltfAccessor& Unsparse(const GltfDocument& doc, std::size_t accessor, const std::string& where) {
+  const GltfAccessor& a = doc.accessors[accessor];
+  if (a.sparse) {
+    throw SceneError(doc.file, where,
+                     "accessor " + std::to_string(accessor) + " is sparse; twinraster does not read sparse accessors");
+  }
+  return a;
+}
+
+// The primitive's vertex indices in order: its index accessor's, each checked, or 0, 1, 2, ...
+std::vector<std::uint32_t> VertexOrder(const GltfDocument& doc, const GltfPrimitive& p, std::uint64_t vertices,
+                                       const std::string& where) {
+  if (!p.indices) {
+    std::vector<std::uint32_t> order(static_cast<std::size_t>(vertices));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+    return order;
+  }
+  std::vector<std::uint32_t> order = ReadIndices(doc, Unsparse(doc, *p.indices, where + ".indices"));
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (order[i] >= vertices) {
+      throw SceneError(doc.file, where + ".indices",
+                       "element " + std::to_string(i) + " is vertex " + std::to_string(order[i]) + ", past the " +
+                           std::to_string(vertices) + " vertices of POSITION");
+    }
+  }
+  return order;
+}
+
+// Triangle i of a list, strip or fan, as the spec (and Vulkan) orders its corners.
+std::vector<std::array<std::uint32_t, 3>> Assemble(GltfMode mode, const std::vector<std::uint32_t>& v) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  const std::size_t n = v.size();
+  if (mode == GltfMode::kTriangles) {
+    out.reserve(n / 3);
+    for (std::size_t i = 0; i + 2 < n; i += 3) out.push_back({v[i], v[i + 1], v[i + 2]});
+  } else if (mode == GltfMode::kTriangleStrip) {
+    out.reserve(n > 2 ? n - 2 : 0);
+    for (std::size_t i = 0; i + 2 < n; ++i) out.push_back({v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
+  } else if (mode == GltfMode::kTriangleFan) {
+    out.reserve(n > 2 ? n - 2 : 0);
+    for (std::size_t i = 0; i + 2 < n; ++i) out.push_back({v[i + 1], v[i + 2], v[0]});
+  }
+  return out;
+}
+
+std::string ModelName(const GltfDocument& doc, std::size_t mesh, std::size_t primitive) {
+  const GltfMesh& m = doc.meshes[mesh];
+  std::string name = m.name.empty() ? "mesh " + std::to_string(mesh) : m.name;
+  if (m.primitives.size() > 1) name += " primitive " + std::to_string(primitive);
+  return name;
+}
+
+}  // namespace
+
+std::optional<Model> PrimitiveModel(const GltfDocument& doc, std::size_t mesh, std::size_t primitive,
+                                    std::vector<std::string>& notes) {
+  const GltfPrimitive& p = doc.meshes[mesh].primitives[primitive];
+  const std::string where = PrimitivePath(mesh, primitive);
+  const bool triangles =
+      p.mode == GltfMode::kTriangles || p.mode == GltfMode::kTriangleStrip || p.mode == GltfMode::kTriangleFan;
+  if (!triangles) {
+    notes.push_back(where + ": " + ModeName(p.mode) + " not drawn (twinraster draws triangles only)");
+    return std::nullopt;
+  }
+  const GltfAccessor& positions = Unsparse(doc, p.position, where + ".attributes.POSITION");
+  const std::vector<std::array<std::uint32_t, 3>> corners =
+      Assemble(p.mode, VertexOrder(doc, p, positions.count, where));
+  if (corners.empty()) {
+    notes.push_back(where + ": " + ModeName(p.mode) + " of fewer than 3 vertices: nothing to draw");
+    return std::nullopt;
+  }
+  const GltfMaterial material = p.material ? doc.materials[*p.material] : GltfMaterial{};
+  Model model;
+  model.name = ModelName(doc, mesh, primitive);
+  model.source = doc.file;
+  model.vertices = ReadVec3s(doc, positions);
+  const Rgb8 colour = SrgbColour(material.base_colour);
+  model.triangles.reserve(corners.size());
+  for (const auto& c : corners) model.triangles.push_back(Triangle{c, colour});
+  if (p.normal) {
+    model.normals = ReadVec3s(doc, Unsparse(doc, *p.normal, where + ".attributes.NORMAL"));
+    model.triangle_normals = corners;  // a vertex's normal has the vertex's index
+  }
+  // Unlit materials keep their colour; the rest take the headlight, with their normals
+  // (Gouraud) or, as the spec asks of a primitive without normals, flat.
+  model.shading = material.unlit ? Shading::kUnlit : p.normal ? Shading::kGouraud : Shading::kFlat;
+  return model;
+}
+
+}  // namespace twinraster::gltf
