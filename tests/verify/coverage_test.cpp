@@ -269,45 +269,67 @@ TEST_CASE("coverage: the twin's image under any shading and clear colour passes;
 TEST_CASE("coverage: every transform bug is caught on every shipped scene it changes, under shading noise",
           "[verify][coverage]") {
   AppendTable("");
-  AppendTable("| defect | scene | px differing from the twin's coverage | spills | holes | verdict |");
-  AppendTable("|---|---|---|---|---|---|");
-  std::map<std::string, std::size_t> judged;
-  std::size_t total = 0;
+  AppendTable(
+      "| defect | scene | px whose coverage differs from the twin's | of them where coverage is certain | spills | "
+      "holes | verdict |");
+  AppendTable("|---|---|---|---|---|---|---|");
+  std::map<std::string, std::size_t> caught, unchanged;
+  std::size_t judged = 0;
   for (const std::string& file : kScenes) {
     const Scene scene = Load(file);
     const DrawList list = BuildDrawList(scene);
     const Image twin = RenderOnCpu(list);
     const Rgb8 bg = scene.canvas.background;
+    verify::VerifyOptions loosest;
+    loosest.reach = true;
+    const std::vector<verify::Reach> reach = verify::VerifyImage(scene, list, twin, loosest).reach;
     std::uint32_t seed = 7;
     for (const auto& [name, mutate] : Defects()) {
       const std::optional<Scene> bug = Mutated(scene, mutate);
       if (!bug) continue;  // the bug leaves this scene's chain as it was
       const Image image = Recolour(Twin(*bug), bg, bg, Shade::kNoise, ++seed);
-      std::uint64_t differing = 0;
+      // What the bug changes: pixels covered in one image and not the other, and of them those
+      // where the verifier is certain of the coverage (elsewhere a correct engine may differ too).
+      std::uint64_t differing = 0, certain = 0;
       for (std::uint32_t y = 0; y < twin.height; ++y) {
-        for (std::uint32_t x = 0; x < twin.width; ++x) differing += Is(twin.pixel(x, y), bg) != Is(image.pixel(x, y), bg);
+        for (std::uint32_t x = 0; x < twin.width; ++x) {
+          const bool d = Is(twin.pixel(x, y), bg) != Is(image.pixel(x, y), bg);
+          differing += d;
+          certain += d && reach[std::size_t{y} * twin.width + x] != verify::Reach::kMaybe;
+        }
       }
       const run::CoverageJudgement j = run::JudgeCoverage(scene, list, image);
-      INFO(file << ": " << name << ": " << differing << " px differ in coverage; " << j.coverage.spills << " spills, "
-                << j.coverage.holes << " holes");
-      CHECK(differing > 0);
-      CHECK(j.verdict == run::Verdict::kDiffering);
-      CHECK(j.coverage.Violations() > 0);
+      INFO(file << ": " << name << ": " << differing << " px differ in coverage, " << certain << " where it is certain; "
+                << j.coverage.spills << " spills, " << j.coverage.holes << " holes");
+      // Each certain pixel the bug changes is a violation, and nothing else is.
+      CHECK(j.coverage.Violations() == certain);
+      if (certain > 0) {
+        CHECK(j.verdict == run::Verdict::kDiffering);
+        ++caught[name];
+      } else {
+        CHECK(j.verdict != run::Verdict::kDiffering);
+        ++unchanged[name];  // a bug whose picture is the twin's, coverage-wise (a symmetric scene mirrored)
+      }
       std::ostringstream row;
-      row << "| " << name << " | " << file << " | " << differing << " | " << j.coverage.spills << " | "
-          << j.coverage.holes << " | " << run::VerdictName(j.verdict) << " |";
+      row << "| " << name << " | " << file << " | " << differing << " | " << certain << " | " << j.coverage.spills
+          << " | " << j.coverage.holes << " | " << run::VerdictName(j.verdict) << " |";
       AppendTable(row.str());
-      ++judged[name];
-      ++total;
+      ++judged;
     }
   }
-  // Every bug judged on at least two scenes, and none of the loops empty.
+  // Every bug caught on at least two scenes, none of the loops empty, and the few a bug leaves
+  // unchanged are counted, not passed over.
+  std::size_t all = 0;
   for (const auto& [name, mutate] : Defects()) {
     INFO(name);
-    CHECK(judged[name] >= 2);
+    CHECK(caught[name] >= 2);
+    all += caught[name] + unchanged[name];
   }
-  CHECK(judged.size() == Defects().size());
-  CHECK(total >= 2 * Defects().size());
+  CHECK(all == judged);
+  CHECK(judged >= 5 * Defects().size());
+  std::size_t none = 0;
+  for (const auto& [name, n] : unchanged) none += n;
+  CHECK(none * 10 < judged);  // at most a tenth of the variants leave the coverage as it was
 }
 
 TEST_CASE("coverage: shading that gives the clear colour fails unless a stated tolerance allows it",
