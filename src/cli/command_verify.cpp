@@ -34,7 +34,7 @@ struct VerifyArguments {
   std::string strict_lines = "false";
   bool bits_given = false, strict_given = false;
   bool json = false;
-  bool coverage = false;                                // judge coverage only
+  bool coverage = false;                                  // judge coverage only
   std::optional<std::string> background, hole_tolerance;  // --coverage's, parsed by colour_argument.hpp
 };
 
@@ -144,14 +144,16 @@ CommandRun AddVerifyCommand(CLI::App& app) {
   command->add_flag("--coverage", a->coverage,
                     "judge only which pixels are covered, not their colours: for images from engines whose\n"
                     "shading twinraster does not model (glTF viewers, game engines)");
-  command->add_option("--background", a->background,
-                      "with --coverage: the clear colour the engine used, as R,G,B or #rrggbb (default: the\n"
-                      "scene's canvas background); any other colour reads as covered")
+  command
+      ->add_option("--background", a->background,
+                   "with --coverage: the clear colour the engine used, as R,G,B or #rrggbb (default: the\n"
+                   "scene's canvas background); any other colour reads as covered")
       ->type_name("COLOUR");
-  command->add_option("--hole-tolerance", a->hole_tolerance,
-                      "with --coverage: pixels showing the clear colour where a primitive certainly covers that\n"
-                      "are allowed, as a percentage of those pixels, for shading that can produce the clear\n"
-                      "colour (default 0: none; better, a clear colour the shading never produces)")
+  command
+      ->add_option("--hole-tolerance", a->hole_tolerance,
+                   "with --coverage: pixels showing the clear colour where a primitive certainly covers that\n"
+                   "are allowed, as a percentage of those pixels, for shading that can produce the clear\n"
+                   "colour (default 0: none; better, a clear colour the shading never produces)")
       ->type_name("PERCENT");
   return [a] { return Verify(*a); };
 }

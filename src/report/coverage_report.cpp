@@ -35,9 +35,10 @@ std::string CoverageInconclusiveReason(const verify::CoverageVerification& c) {
 std::string CoverageText(const verify::CoverageVerification& c) {
   std::ostringstream s;
   const verify::Judgement verdict = c.Verdict();
-  s << "coverage " << (verdict == verify::Judgement::kPassed         ? "passes"
-                       : verdict == verify::Judgement::kInconclusive ? "is inconclusive"
-                                                                     : "fails")
+  s << "coverage "
+    << (verdict == verify::Judgement::kPassed         ? "passes"
+        : verdict == verify::Judgement::kInconclusive ? "is inconclusive"
+                                                      : "fails")
     << ": " << c.certainly_covered << " px certainly covered, " << c.certainly_uncovered << " certainly uncovered, "
     << c.uncertain << " uncertain (free); " << c.spills << " px covered where no primitive may reach";
   if (c.first_spill) {

@@ -41,8 +41,8 @@ struct CoveragePosition {
 struct CoverageVerification {
   std::uint32_t width = 0, height = 0;
   VerifyOptions rules;
-  Rgb8 background;                  // the clear colour judged by
-  bool background_given = false;    // by CoverageOptions::background, not the scene
+  Rgb8 background;                // the clear colour judged by
+  bool background_given = false;  // by CoverageOptions::background, not the scene
   double hole_tolerance_percent = 0;
   std::vector<CoveragePixel> pixels;  // row by row, top first
   // What the verifier says of each pixel; the three add up to width x height.
@@ -50,7 +50,7 @@ struct CoverageVerification {
   std::uint64_t image_covered = 0;      // pixels of the image not the clear colour
   std::uint64_t uncertain_covered = 0;  // of the uncertain pixels, those the image covers
   std::uint64_t spills = 0, holes = 0;
-  std::uint64_t holes_allowed = 0;  // floor(tolerance % of certainly_covered)
+  std::uint64_t holes_allowed = 0;                          // floor(tolerance % of certainly_covered)
   std::optional<CoveragePosition> first_spill, first_hole;  // in row order
 
   // Spills, and holes when there are more than holes_allowed.

@@ -4,6 +4,7 @@
 // --hole-tolerance is a usage error (exit 2) that writes nothing.
 #include "image/image.hpp"
 #include "image/png_file.hpp"
+#include "scene/scene.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 
@@ -60,12 +61,12 @@ TEST_CASE("verify --coverage: an engine's own shading and clear colour pass (exi
           "[cli][verify][coverage]") {
   const test::TempDir dir;
   const auto engine = Engine(TwinImage(dir, kScene, "twin.png"), kMagenta, dir / "engine.png");
-  for (const std::string& colour : {"255,0,255", "255, 0, 255", "#ff00FF"}) {
+  for (const char* colour : {"255,0,255", "255, 0, 255", "#ff00FF"}) {
     const test::CliResult r = test::RunCli({"verify", "--coverage", kScene, engine.string(), "--background", colour});
     INFO(colour << "\n" << r.out << r.err);
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.out, HasSubstring("coverage passes: "));
-    CHECK_THAT(r.out, HasSubstring(" 0 px covered where no primitive may reach, 0 px of the clear colour (255, 255, "
+    CHECK_THAT(r.out, HasSubstring(" 0 px covered where no primitive may reach, 0 px of the clear colour (255, 0, "
                                    "255) (--background)"));
     CHECK_THAT(r.out, HasSubstring("(subpixel bits 4)"));
   }
@@ -153,7 +154,8 @@ TEST_CASE("verify --coverage: a malformed --background or --hole-tolerance, or e
 TEST_CASE("verify --help documents --coverage, --background and --hole-tolerance", "[cli][verify][coverage]") {
   const test::CliResult r = test::RunCli({"verify", "--help"});
   CHECK(r.exit_code == 0);
-  for (const char* s : {"--coverage", "--background", "--hole-tolerance", "Judging coverage only", "alpha is not read"}) {
+  for (const char* s :
+       {"--coverage", "--background", "--hole-tolerance", "Judging coverage only", "alpha is not read"}) {
     INFO(s);
     CHECK_THAT(r.out, HasSubstring(s));
   }

@@ -29,8 +29,8 @@ namespace {
 // Scenes with several instances, rotations, scales, list transforms, a lookat camera, non-square
 // canvases and an OBJ mesh: what a transform bug can go wrong on.
 const std::vector<std::string> kScenes = {
-    "scenes/cgfs-instances.json",    "scenes/catlike-rotations.json", "scenes/lookat.json",
-    "scenes/cgfs-transforms.json",   "scenes/cgfs-figure-10-4.json",  "scenes/lit-mixed.json",
+    "scenes/cgfs-instances.json",  "scenes/catlike-rotations.json", "scenes/lookat.json",
+    "scenes/cgfs-transforms.json", "scenes/cgfs-figure-10-4.json",  "scenes/lit-mixed.json",
     "scenes/meshes/knot.obj",
 };
 
@@ -166,9 +166,13 @@ const std::vector<std::pair<std::string, Mutation>>& Defects() {
          s.camera.rotation = glm::transpose(s.camera.rotation);
        }},
       {"handedness mirrored: world x negated",
-       [](Scene& s) { EachInstance(s, [](auto& steps) { steps.push_back(Mirror({-1, 1, 1})); }); }},
+       [](Scene& s) { EachInstance(s, [](auto& steps) {
+                        steps.push_back(Mirror({-1, 1, 1}));
+                      }); }},
       {"handedness mirrored: world z negated",
-       [](Scene& s) { EachInstance(s, [](auto& steps) { steps.push_back(Mirror({1, 1, -1})); }); }},
+       [](Scene& s) { EachInstance(s, [](auto& steps) {
+                        steps.push_back(Mirror({1, 1, -1}));
+                      }); }},
       {"field of view off by 1 % (viewport x 1.01)",
        [](Scene& s) { s.viewport.width *= 1.01, s.viewport.height *= 1.01; }},
       {"aspect ratio ignored (square viewport, non-square canvas)",
@@ -221,7 +225,8 @@ TEST_CASE("coverage: the twin's image under any shading and clear colour passes;
           "[verify][coverage]") {
   std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-coverage.md");
   AppendTable(
-      "| scene | covered, certain | uncovered, certain | uncertain | of them covered by the twin | violations, 5 shadings "
+      "| scene | covered, certain | uncovered, certain | uncertain | of them covered by the twin | violations, 5 "
+      "shadings "
       "x 2 clear colours | violations shifted 1 px right |");
   AppendTable("|---|---|---|---|---|---|---|");
   std::size_t judged = 0;
@@ -299,8 +304,8 @@ TEST_CASE("coverage: every transform bug is caught on every shipped scene it cha
         }
       }
       const run::CoverageJudgement j = run::JudgeCoverage(scene, list, image);
-      INFO(file << ": " << name << ": " << differing << " px differ in coverage, " << certain << " where it is certain; "
-                << j.coverage.spills << " spills, " << j.coverage.holes << " holes");
+      INFO(file << ": " << name << ": " << differing << " px differ in coverage, " << certain
+                << " where it is certain; " << j.coverage.spills << " spills, " << j.coverage.holes << " holes");
       // Each certain pixel the bug changes is a violation, and nothing else is.
       CHECK(j.coverage.Violations() == certain);
       if (certain > 0) {
