@@ -1,13 +1,18 @@
 // `twinraster verify SCENE IMAGE.png`: judges any image of the scene by what a conformant Vulkan
 // implementation may draw (verify/verifier.hpp), by the rules of the device that drew it (the
-// image's own notes, or the options), writes the verification map, exits 0, 1 or 6.
+// image's own notes, or the options), writes the verification map, exits 0, 1 or 6. With --coverage
+// it judges only where the image is covered (run/judge_coverage.hpp).
+#include "base/usage_error.hpp"
+#include "cli/colour_argument.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
 #include "image/png_file.hpp"
+#include "report/coverage_report.hpp"
 #include "report/image_notes.hpp"
 #include "report/verify_report.hpp"
+#include "run/judge_coverage.hpp"
 #include "run/judge_image.hpp"
 
 #include <CLI/CLI.hpp>
@@ -30,7 +35,9 @@ struct VerifyArguments {
   std::string strict_lines = "false";
   bool bits_given = false, strict_given = false;
   bool json = false;
-  SceneChoiceArguments choice;  // --camera, --scene, --size
+  SceneChoiceArguments choice;                            // --camera, --scene, --size
+  bool coverage = false;                                  // judge coverage only
+  std::optional<std::string> background, hole_tolerance;  // --coverage's, parsed by colour_argument.hpp
 };
 
 // The device's rules: each option given, else what the image's notes say, else the loosest.
@@ -41,8 +48,31 @@ verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<
   return options;
 }
 
+// --coverage's run: the same image and rules, judged by where it is covered.
+int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& image,
+                   const std::optional<verify::DrawnBy>& drawn_by, const verify::CoverageOptions& options) {
+  const run::CoverageJudgement judgement = run::JudgeCoverage(scene, image, options, !a.no_map);
+  std::optional<std::string> map;
+  if (judgement.map) {
+    map = a.map.value_or(Suffixed(a.image, "map"));
+    StagePng(*map, *judgement.map).Commit();
+  }
+  const report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
+  if (a.json)
+    std::cout << report::CoverageJson(outputs).dump(2) << "\n";
+  else
+    std::cout << report::CoverageReportText(outputs);
+  return ExitCodeOf(judgement.verdict);
+}
+
 int Verify(const VerifyArguments& a) {
   if (a.map) ExpectPngName("--map", *a.map);
+  // --coverage's options are checked before the scene is read, so that a mistake costs nothing.
+  verify::CoverageOptions coverage;
+  if (!a.coverage && (a.background || a.hole_tolerance))
+    throw UsageError(std::string(a.background ? "--background" : "--hole-tolerance") + " needs --coverage");
+  if (a.background) coverage.background = ParseColourArgument("--background", *a.background);
+  if (a.hole_tolerance) coverage.hole_tolerance_percent = ParsePercentArgument("--hole-tolerance", *a.hole_tolerance);
   Scene scene = LoadSceneArgument(a.scene, ChoiceOf(a.choice));
   PrintSceneNotes(scene, a.scene);
   if (a.wireframe) scene.wireframe = true;
@@ -55,6 +85,10 @@ int Verify(const VerifyArguments& a) {
     }
   });
   const std::optional<verify::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
+  if (a.coverage) {
+    coverage.rules = DeviceRules(a, drawn_by);
+    return VerifyCoverage(a, scene, image, drawn_by, coverage);
+  }
   const run::ImageJudgement judgement = run::JudgeImage(scene, image, DeviceRules(a, drawn_by), !a.no_map);
   std::optional<std::string> map;
   if (judgement.map) {
@@ -80,7 +114,12 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                     "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
                     "The device's rules come from the image's PNG notes (render writes them), else the options.\n"
                     "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error,\n"
-                    "6 inconclusive (no violation, but too little is certain to tell a broken image).");
+                    "6 inconclusive (no violation, but too little is certain to tell a broken image).\n"
+                    "--coverage judges only where the image is covered, for engines with their own shading: each\n"
+                    "pixel is the clear colour (background) or covered (any other R, G, B; alpha is not read).\n"
+                    "Covered where no primitive may reach, or the clear colour where one certainly covers, is a\n"
+                    "violation; edge pixels within the device's sub-pixel precision are free. Render with a clear\n"
+                    "colour the shading never produces (docs/verify.md, \"Judging coverage only\").");
   command->add_option("SCENE", a->scene, "the scene file (JSON) or OBJ mesh the image is of, or - for standard input")
       ->required();
   command->add_option("IMAGE.png", a->image, "the image to judge, at the scene's canvas size")->required();
@@ -103,7 +142,23 @@ CommandRun AddVerifyCommand(CLI::App& app) {
       ->type_name("MAP.png");
   command->add_flag("--no-map", a->no_map, "write no map");
   AddSceneChoiceOptions(*command, a->choice);
-  command->add_flag("--json", a->json, "print one JSON object (twinraster.verify/2, docs/json-output.md)");
+  command->add_flag("--json", a->json,
+                    "print one JSON object (twinraster.verify/2, with --coverage twinraster.verify-coverage/1;\n"
+                    "docs/json-output.md)");
+  command->add_flag("--coverage", a->coverage,
+                    "judge only which pixels are covered, not their colours: for images from engines whose\n"
+                    "shading twinraster does not model (glTF viewers, game engines)");
+  command
+      ->add_option("--background", a->background,
+                   "with --coverage: the clear colour the engine used, as R,G,B or #rrggbb (default: the\n"
+                   "scene's canvas background); any other colour reads as covered")
+      ->type_name("COLOUR");
+  command
+      ->add_option("--hole-tolerance", a->hole_tolerance,
+                   "with --coverage: pixels showing the clear colour where a primitive certainly covers that\n"
+                   "are allowed, as a percentage of those pixels, for shading that can produce the clear\n"
+                   "colour (default 0: none; better, a clear colour the shading never produces)")
+      ->type_name("PERCENT");
   return [a] { return Verify(*a); };
 }
 

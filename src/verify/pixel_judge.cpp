@@ -96,6 +96,20 @@ void FrameJudge::Finish(Verification& v, std::vector<PixelClass>& pixels, const 
   }
 }
 
+void FrameJudge::WriteReach(std::vector<Reach>& reach) const {
+  for (int y = row0_; y < row1_; ++y) {
+    Reach* out = reach.data() + std::size_t(y) * image_->width;
+    for (int x = 0; x < int(image_->width); ++x) {
+      if (!used_[TileOf(x, y)]) {
+        out[x] = Reach::kNone;
+        continue;
+      }
+      const std::size_t i = Index(x, y);
+      out[x] = gap_[i] > 0 ? Reach::kCertain : state_[i].offers > 0 ? Reach::kMaybe : Reach::kNone;
+    }
+  }
+}
+
 void FrameJudge::FinishUsed(int x, int y, Verification& v, int& worst_distance, std::vector<PixelClass>& pixels) {
   const std::size_t i = Index(x, y);
   State& s = state_[i];

@@ -69,6 +69,10 @@ class FrameJudge {
   // (the whole frame's, row by row) and counted into `counts`, with the band's first and worst.
   // `settled` gives the settled tiles' runs (none when empty).
   void Finish(Verification& counts, std::vector<PixelClass>& pixels, const SettledRun& settled = {});
+  // Each pixel's Reach, into `reach` (the whole frame's, row by row), after pass 2 and before
+  // Finish (which offers the background): certain where pass 1 left a bound, maybe where any
+  // surface offered.
+  void WriteReach(std::vector<Reach>& reach) const;
   Rgb8 ImageColour(int x, int y) const {
     const std::uint8_t* p = image_->pixel(std::uint32_t(x), std::uint32_t(y));
     return {p[0], p[1], p[2]};

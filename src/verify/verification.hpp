@@ -18,6 +18,14 @@ enum class PixelClass : std::uint8_t {
   kViolation,  // the image's colour is not one a conformant implementation may write here
 };
 
+// Whether any primitive may cover a pixel's centre and pass the depth test against the clear
+// value, whatever the image shows: what coverage.hpp judges an image's coverage by.
+enum class Reach : std::uint8_t {
+  kNone,     // no primitive may (the background certainly shows)
+  kMaybe,    // some may, none certainly does (an edge within the device's snapping, a depth near a plane)
+  kCertain,  // some primitive certainly covers it (pass 1 found one)
+};
+
 struct Violation {
   std::uint32_t x = 0, y = 0;
   Rgb8 colour;
@@ -42,6 +50,8 @@ struct VerifyOptions {
   // a surface's box and depth range show it cannot matter. The judgement is the same either way;
   // false (every one tested) is for the tests that check so.
   bool fast_paths = true;
+  // Not the device's either: whether Verification::reach is filled (verify --coverage reads it).
+  bool reach = false;
 };
 
 struct Verification {
@@ -57,6 +67,7 @@ struct Verification {
   std::uint64_t background_excluded = 0;
   std::optional<Violation> worst;
   std::optional<Violation> first;  // in row order
+  std::vector<Reach> reach;        // row by row, when VerifyOptions::reach asks; else empty
 
   bool NoViolations() const { return violations == 0; }
   // Failed on any violation. Inconclusive when an empty image would pass as well, or when the

@@ -420,7 +420,7 @@ void OccludeShared(Band& band, SharedPass1* shared, std::size_t draws) {
 
 // One band of rows judged whole once pass 1 has run: pass 2, then each pixel's class into `pixels`
 // (the whole frame's; the band writes only its rows) and the band's counts.
-void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) {
+void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels, std::vector<Reach>& reaches) {
   FrameJudge& judge = band.judge;
   const std::uint32_t w = image.width, h = image.height;
   // Pass 2: every surface that may cover a pixel and is not surely behind that one may show.
@@ -451,6 +451,7 @@ void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels) 
     if (!band.fast || judge.CouldMatter(reach.box, reach.range, true))
       band.primitives.ForEachInDraw(reach.draw, true, g, offer);
   }
+  if (!reaches.empty()) judge.WriteReach(reaches);  // before Finish offers the background
   FrameJudge::SettledRun settled;
   if (band.fast)
     settled = [&](int y, int x0, int x1, ColourRange* colours) { return band.sole.Settled(y, x0, x1, colours); };
@@ -486,6 +487,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   Verification result;
   result.width = image.width, result.height = image.height, result.options = options;
   result.pixels.resize(std::size_t{image.width} * image.height);
+  if (options.reach) result.reach.resize(result.pixels.size());
   // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
   // its own pixels, so they share only the read-only inputs, what each draw's light and mesh make
   // once for all (FrameShared), the draws prepared for pass 1 (SharedPass1) and the pixel classes.
@@ -505,7 +507,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
       if (shared) shared->Fail();  // the other bands must not wait for this one
       throw;
     }
-    JudgeBand(*bands[b], image, result.pixels);
+    JudgeBand(*bands[b], image, result.pixels, result.reach);
   };
   // The first band on this thread, each other on one of its own. A band that throws, or one that
   // gets no thread, fails the others; the futures wait for their threads when unwinding.

@@ -138,6 +138,18 @@ def main():
              ["verify", transforms, out("other.png"), "--json", "--no-map"], None, 1,
              lambda d: not d["passed"] and d["verdict"] == "failed" and d["worst"]["distance"] > 0 and len(d["worst"]["allowed"]) >= 1
              and d["map"] is None),
+            ("verify --coverage of the twin's image, its clear colour given", "verify",
+             ["verify", transforms, out("c.png"), "--coverage", "--background", "255,255,255", "--json"], None, 0,
+             lambda d: d["format"] == "twinraster.verify-coverage/1" and d["passed"] and d["background_from"] == "option"
+             and d["pixels"]["violations"] == 0 and d["first_spill"] is None and d["map"] == out("c-map.png")
+             and d["pixels"]["certainly_covered"] + d["pixels"]["certainly_uncovered"] + d["pixels"]["uncertain"]
+             == 600 * 600),
+            ("verify --coverage of another scene's image: spills and holes", "verify",
+             ["verify", transforms, out("other.png"), "--coverage", "--hole-tolerance", "0.5", "--json", "--no-map"],
+             None, 1,
+             lambda d: d["verdict"] == "failed" and d["pixels"]["spills"] > 0 and d["pixels"]["holes"] > 0
+             and d["first_spill"]["colour"] != [255, 255, 255] and d["first_hole"]["colour"] == [255, 255, 255]
+             and d["pixels"]["holes_allowed"] > 0 and d["map"] is None),
             ("render --verify", "render", ["render", transforms, "--json", "--verify", "-o", out("v.png")], None, 0,
              lambda d: d["verify"]["image"] == "gpu" and d["verify"]["passed"] and d["verify"]["subpixel_bits"] == 8
              and d["verify"]["map"] == out("v-gpu-map.png")),
