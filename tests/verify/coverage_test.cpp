@@ -102,6 +102,7 @@ bool IsIdentity(const TransformStep& s) {
     case TransformStep::Kind::kScale: return s.vector == glm::dvec3(1, 1, 1);
     case TransformStep::Kind::kTranslation: return s.vector == glm::dvec3(0, 0, 0);
     case TransformStep::Kind::kRotation: return s.rotation == glm::dmat3(1.0);
+    case TransformStep::Kind::kMatrix: return s.matrix == glm::dmat4(1.0);
   }
   return false;
 }
