@@ -3,6 +3,9 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace twinraster {
 
 namespace {
@@ -16,11 +19,15 @@ std::array<glm::dvec3, 4> Corners(const Scene& scene, double z) {
 
 }  // namespace
 
+double DrawnFar(const Scene& scene) {
+  return std::isinf(scene.depth.far) ? 10 * std::max(scene.depth.near, scene.viewport.distance) : scene.depth.far;
+}
+
 Frustum CameraSpaceFrustum(const Scene& scene) {
   Frustum f;
   f.near = Corners(scene, scene.depth.near);
   f.viewport = Corners(scene, scene.viewport.distance);
-  f.far = Corners(scene, scene.depth.far);
+  f.far = Corners(scene, DrawnFar(scene));
   return f;
 }
 

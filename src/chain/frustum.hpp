@@ -18,6 +18,10 @@ struct Frustum {
   std::array<glm::dvec3, 4> near{}, viewport{}, far{};
 };
 
+// Where the far plane is drawn: at depth.far, or for an infinite far plane (a glTF camera without
+// zfar) at 10 times the larger of near and d, which the drawings can hold.
+double DrawnFar(const Scene& scene);
+
 // In camera space: perspective planes widen with z as the viewport does at d; orthographic ones
 // are the viewport's size at every z (its plane is drawn at d all the same).
 Frustum CameraSpaceFrustum(const Scene& scene);

@@ -251,7 +251,10 @@ Panel WorldPanel(const Trace& t, bool from_above) {
   } else {
     const Scene& scene = *t.e.scene;
     p.text = "near plane z = " + Num(scene.depth.near) + ", viewport at d = " + Num(scene.viewport.distance) +
-             ", far plane z = " + Num(scene.depth.far) + " (camera space)\n";
+             ", far plane z = " +
+             (std::isinf(scene.depth.far) ? std::string("infinite (drawn at ") + Num(DrawnFar(scene)) + ")"
+                                          : Num(scene.depth.far)) +
+             " (camera space)\n";
   }
   return p;
 }

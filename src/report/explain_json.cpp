@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace twinraster::report {
 
 namespace {
@@ -142,7 +144,9 @@ Json ExplainJson(const Explanation& e) {
                      {"height", scene.viewport.height},
                      {"distance", scene.viewport.distance},
                      {"projection", orthographic ? "orthographic" : "perspective"}};
-  out["depth"] = {{"near", scene.depth.near}, {"far", scene.depth.far}, {"reversed", scene.depth.reversed}};
+  // JSON has no infinity: an infinite far plane (a glTF camera without zfar) is null.
+  const Json far = std::isinf(scene.depth.far) ? Json(nullptr) : Json(scene.depth.far);
+  out["depth"] = {{"near", scene.depth.near}, {"far", far}, {"reversed", scene.depth.reversed}};
   out["perspective_matrix"] = orthographic ? Json(nullptr) : Rows(e.p);
   out["orthographic_matrix"] = orthographic ? Rows(e.p) : Json(nullptr);
   out["viewport_to_canvas"] = Rows(e.viewport_to_canvas);

@@ -7,9 +7,11 @@ Run as: check_json_schemas.py --exe build/bin/twinraster --source <repository>
 Exits 1 naming every failure; CTest runs it (tests/cli/CMakeLists.txt)."""
 
 import argparse
+import base64
 import copy
 import json
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -80,8 +82,30 @@ def main():
 
     with tempfile.TemporaryDirectory(prefix="twinraster-schemas-") as tmp:
         out = lambda name: os.path.join(tmp, name)
+        # A glTF triangle seen by a perspective camera without zfar: an infinite far plane.
+        triangle = base64.b64encode(struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)).decode()
+        with open(out("infinite.gltf"), "w") as f:
+            json.dump({"asset": {"version": "2.0"},
+                       "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64," + triangle}],
+                       "bufferViews": [{"buffer": 0, "byteLength": 36}],
+                       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+                       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+                       "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+                       "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.3, 0.3, 3]}],
+                       "scenes": [{"nodes": [0, 1]}]}, f)
+        engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
         # (what, schema, arguments, standard input, expected exit code, extra check on the document)
         cases = [
+            ("explain of a glTF file: the node chain of each instance, by name", "explain",
+             ["explain", engine, "--json", "--instance", "3", "--vertex", "0"], None, 0,
+             lambda d: d["instances"][0]["transform_steps"][0]["kind"] == "matrix"
+             and d["instances"][0]["transform_steps"][0]["label"].startswith("node ")
+             and d["instances"][0]["transform_steps"][-1]["kind"] == "scale"
+             and d["instances"][0]["transform_steps"][-1]["matrix"][2][2] == -1),
+            ("explain of a glTF camera without zfar: the far plane is infinite", "explain",
+             ["explain", out("infinite.gltf"), "--json"], None, 0,
+             lambda d: d["depth"]["far"] is None and d["depth"]["near"] == 0.1
+             and all(all(c is not None for c in corner) for corner in d["frustum"]["camera"]["far"])),
             ("explain", "explain", ["explain", transforms, "--json"], None, 0,
              lambda d: len(d["instances"]) == 2 and len(d["instances"][0]["vertices"]) == 8),
             ("explain --instance --vertex", "explain",

@@ -1,0 +1,139 @@
+// glTF files on the command line as a user meets them: render, explain and verify take .gltf and
+// .glb alone, --camera, --scene and --size work the same in all three, what is not drawn is a
+// note, and a hostile file is one line and exit code 2 that leaves an existing output as it was.
+#include "image/image.hpp"
+#include "image/png_file.hpp"
+#include "support/catch.hpp"
+#include "support/test_support.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace twinraster;
+
+namespace {
+
+const std::string kModels = "/usr/share/assimp/models/glTF2/";
+const std::string kCameras = kModels + "cameras/Cameras.gltf";
+const std::string kMorph = kModels + "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf";
+
+}  // namespace
+
+TEST_CASE("render, explain and verify take a glTF file with the same --camera and --size", "[cli][gltf]") {
+  const test::TempDir dir;
+  const std::string out = (dir / "cam.png").string();
+  const test::CliResult r = test::RunCli({"render", kCameras, "--camera", "1", "--size", "320x200", "-o", out});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("320 x 200") != std::string::npos);
+  CHECK(r.out.find("0 differing pixels") != std::string::npos);
+  CHECK(ReadPng(dir / "cam-gpu.png").width == 320);
+
+  const test::CliResult v =
+      test::RunCli({"verify", kCameras, (dir / "cam-gpu.png").string(), "--camera", "1", "--size", "320x200"});
+  INFO(v.out << v.err);
+  CHECK(v.exit_code == 0);
+  // Judged against another camera, the same image is wrong.
+  const test::CliResult wrong = test::RunCli(
+      {"verify", kCameras, (dir / "cam-gpu.png").string(), "--camera", "0", "--size", "320x200", "--no-map"});
+  CHECK(wrong.exit_code == 1);
+
+  const test::CliResult e = test::RunCli({"explain", kCameras, "--camera", "1", "--size", "320x200"});
+  INFO(e.err);
+  REQUIRE(e.exit_code == 0);
+  CHECK(e.out.find("canvas Cw x Ch = 320 x 200 px") != std::string::npos);
+  CHECK(e.out.find("orthographic") != std::string::npos);
+  CHECK(e.out.find("a glTF node chain of") != std::string::npos);
+  CHECK(e.out.find("the chapter's mirror") != std::string::npos);
+}
+
+TEST_CASE("What a glTF file holds that is not drawn is one note line each on standard error", "[cli][gltf]") {
+  const test::TempDir dir;
+  const test::CliResult r = test::RunCli({"render", kMorph, "--backend", "cpu", "-o", (dir / "m.png").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("note: " + kMorph + ": 1 primitive(s) with morph targets: drawn without them\n") !=
+        std::string::npos);
+  CHECK(r.err.find("note: " + kMorph + ": 1 animation(s): drawn at rest\n") != std::string::npos);
+  const test::CliResult quiet =
+      test::RunCli({"render", kMorph, "--backend", "cpu", "-q", "-o", (dir / "q.png").string()});
+  CHECK(quiet.err.empty());
+}
+
+TEST_CASE("Choosing a camera, a scene or a size wrongly is one line and exit code 2", "[cli][gltf][bad-input]") {
+  const test::TempDir dir;
+  const std::string out = (dir / "x.png").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"render", kCameras, "--camera", "nope", "-o", out},
+       "--camera nope names no camera; the file's cameras: camera 0, camera 1"},
+      {{"render", kCameras, "--scene", "4", "-o", out}, "--scene 4: the file has 1 scene(s)"},
+      {{"render", test::SourcePath("scenes/lookat.json").string(), "--camera", "0", "-o", out},
+       "--camera 0: only a glTF file has cameras to choose"},
+      {{"render", kCameras, "--size", "0x10", "-o", out}, "--size \"0x10\": expected WxH"},
+      {{"explain", kCameras, "--size", "20000x10"}, "--size \"20000x10\": expected WxH"},
+      {{"verify", kCameras, out, "--size", "abc"}, "--size \"abc\": expected WxH"},
+  };
+  for (const Case& c : cases) {
+    const test::CliResult r = test::RunCli(c.args);
+    INFO(c.args[0] << " " << c.says);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.says) != std::string::npos);
+  }
+}
+
+TEST_CASE("A hostile glTF file is refused with the file and the place, and an existing output is kept",
+          "[cli][gltf][bad-input]") {
+  const test::TempDir dir;
+  const std::string out = (dir / "golden.png").string();
+  test::WriteFile(out, "not touched");
+  struct Case {
+    std::string file, text, says;
+  };
+  const std::vector<Case> cases = {
+      {"cycle.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[1]},{"children":[0]}]})",
+       "nodes: node 0 is its own ancestor"},
+      {"escape.gltf", R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"../../etc/passwd"}]})",
+       "buffers[0].uri: the URI \"../../etc/passwd\" is refused: it leaves the model's folder"},
+      {"scheme.gltf", R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"http://example.com/a.bin"}]})",
+       "it has a scheme"},
+      {"old.gltf", R"({"asset":{"version":"1.0"}})", "asset.version: glTF \"1.0\": twinraster reads glTF 2.0 only"},
+      {"broken.gltf", R"({"asset":{"version":"2.0"},)", "line 1"},
+      {"short.glb", std::string("glTF\x02\0\0\0", 8), "byte 0: a .glb shorter than its headers"},
+  };
+  for (const Case& c : cases) {
+    test::WriteFile(dir / c.file, c.text);
+    const test::CliResult r = test::RunCli({"render", (dir / c.file).string(), "-o", out});
+    INFO(c.file << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find((dir / c.file).string() + ": ") != std::string::npos);
+    CHECK(r.err.find(c.says) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(test::ReadFile(out) == "not touched");
+  }
+}
+
+TEST_CASE("A scene file places a glTF file as a model, and --size widens any scene's view", "[cli][gltf]") {
+  const test::TempDir dir;
+  test::WriteFile(dir / "scene.json", R"({
+    "canvas": {"width": 200, "height": 200},
+    "viewport": {"width": 1, "height": 1, "distance": 1},
+    "camera": {"position": [0, 0, -4]},
+    "lighting": {"ambient": 0.2, "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 0.8}]},
+    "models": {"cube": {"gltf": ")" + kModels +
+                                          R"(glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"}},
+    "instances": [{"model": "cube", "transform": {"scale": 10}}, {"model": "cube", "transform": {"translation": [1, 0, 0], "scale": 5}}]
+  })");
+  const test::CliResult r =
+      test::RunCli({"render", (dir / "scene.json").string(), "--size", "300x200", "-o", (dir / "s.png").string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("2 instances, 24 triangles, 300 x 200") != std::string::npos);
+  CHECK(r.out.find("0 differing pixels") != std::string::npos);
+  const test::CliResult e = test::RunCli({"explain", (dir / "scene.json").string(), "--size", "300x200"});
+  CHECK(e.out.find("viewport Vw x Vh = 1.5 x 1 at distance d = 1") != std::string::npos);
+}
