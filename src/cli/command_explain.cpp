@@ -84,8 +84,8 @@ CommandRun AddExplainCommand(CLI::App& app) {
                     "Exit codes: 0 done, 2 bad input or usage, 4 internal error.");
   command
       ->add_option("SCENE", a->scene,
-                   "the scene file (JSON) or an OBJ mesh (.obj, in the scene render gives it),\n"
-                   "or - to read the scene from standard input")
+                   "the scene file (JSON), an OBJ mesh (.obj, in the scene render gives it), a glTF\n"
+                   "2.0 file (.gltf or .glb), or - to read the scene from standard input")
       ->required();
   ExpectIndex(command->add_option("--instance", a->instance, "only instance I (counted from 0)")->type_name("I"));
   ExpectIndex(command

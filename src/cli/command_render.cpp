@@ -362,8 +362,9 @@ CommandRun AddRenderCommand(CLI::App& app) {
       "verifier found no violation but could not tell a broken image (inconclusive).");
   command
       ->add_option("SCENE", a->scenes,
-                   "scene files (JSON) or OBJ meshes (.obj: framed, lit by a headlight), or - to\n"
-                   "read one scene from standard input")
+                   "scene files (JSON), OBJ meshes (.obj: framed, lit by a headlight), glTF 2.0\n"
+                   "files (.gltf, .glb: their camera, or framed), or - to read one scene from\n"
+                   "standard input")
       ->required();
   command
       ->add_option("-o,--output", a->output,

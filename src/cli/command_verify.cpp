@@ -120,7 +120,9 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                     "Covered where no primitive may reach, or the clear colour where one certainly covers, is a\n"
                     "violation; edge pixels within the device's sub-pixel precision are free. Render with a clear\n"
                     "colour the shading never produces (docs/verify.md, \"Judging coverage only\").");
-  command->add_option("SCENE", a->scene, "the scene file (JSON) or OBJ mesh the image is of, or - for standard input")
+  command
+      ->add_option("SCENE", a->scene,
+                   "the scene file (JSON), OBJ mesh or glTF file the image is of, or - for\nstandard input")
       ->required();
   command->add_option("IMAGE.png", a->image, "the image to judge, at the scene's canvas size")->required();
   command->add_flag("--wireframe", a->wireframe, "the image draws triangle edges only, as render --wireframe does");

@@ -24,14 +24,15 @@ std::optional<std::uint32_t> Side(std::string_view text) {
 void AddSceneChoiceOptions(CLI::App& command, SceneChoiceArguments& a) {
   command
       .add_option("--camera", a.camera,
-                  "a glTF file's camera: its index in \"cameras\", or its name (default: the first camera node)")
+                  "a glTF file's camera: its index in \"cameras\", or its name (default: the\n"
+                  "first camera node of the scene)")
       ->type_name("N|NAME");
-  ExpectIndex(
-      command.add_option("--scene", a.scene, "a glTF file's scene, counted from 0 (default: the file's \"scene\")")
-          ->type_name("N"));
+  ExpectIndex(command.add_option("--scene", a.scene, "a glTF file's scene, counted from 0 (default: its \"scene\")")
+                  ->type_name("N"));
   command
       .add_option("--size", a.size,
-                  "the canvas, W x H pixels, for any scene (the view widens to its shape, unstretched)")
+                  "the canvas, W x H pixels, for any scene; the view widens to the canvas's shape,\n"
+                  "never cropped or stretched")
       ->type_name("WxH");
 }
 
