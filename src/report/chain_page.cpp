@@ -237,6 +237,20 @@ Panel ModelPanel(const Trace& t, const std::string& instance_name, const std::st
   return p;
 }
 
+// A transform written as a list, or a glTF node chain: each step's matrix by its label, in the
+// order applied, before their product M_Model. Nothing for the object form, whose factors the
+// text explain prints.
+std::string ModelFactors(const InstanceExplanation& x) {
+  if (!x.steps) return "";
+  std::string s;
+  for (std::size_t k = 0; k < x.steps->size(); ++k) {
+    const StepExplanation& step = (*x.steps)[k];
+    s += Matrix("step " + std::to_string(k + 1) + (step.label.empty() ? "" : ": " + step.label), step.matrix);
+  }
+  return s + "M_Model = step " + std::to_string(x.steps->size()) + " · … · step 1" +
+         (x.grid_copy ? ", then the grid's offset" : "") + "\n";
+}
+
 // The world seen along -y (x right, z up the page) or along -x (z right, y up).
 Panel WorldPanel(const Trace& t, bool from_above) {
   const int u = from_above ? 0 : 2, w = from_above ? 2 : 1;
@@ -247,7 +261,8 @@ Panel WorldPanel(const Trace& t, bool from_above) {
   AddFrustum(p, t.e.world_frustum, u, w);
   p.marks.push_back({Pick(t.v.world, u, w), "M_Model·V", kTraced});
   if (from_above) {
-    p.text = Matrix("M_Model", t.traced.model_matrix) + "M_Model · V = " + Vec(t.v.world) + "\n";
+    p.text =
+        ModelFactors(t.traced) + Matrix("M_Model", t.traced.model_matrix) + "M_Model · V = " + Vec(t.v.world) + "\n";
   } else {
     const Scene& scene = *t.e.scene;
     p.text = "near plane z = " + Num(scene.depth.near) + ", viewport at d = " + Num(scene.viewport.distance) +
