@@ -226,7 +226,7 @@ Model GltfModel(const GltfDocument& doc, const std::string& name, bool lit) {
       out.triangles.push_back(triangle);
       std::array<std::uint32_t, 3> corners{kNoNormal, kNoNormal, kNoNormal};
       if (!model.triangle_normals.empty()) {
-        for (int k = 0; k < 3; ++k) corners[k] = model.triangle_normals[t][k] + first_normal;
+        for (std::size_t k = 0; k < 3; ++k) corners[k] = model.triangle_normals[t][k] + first_normal;
       }
       out.triangle_normals.push_back(corners);
     }
