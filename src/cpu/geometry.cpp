@@ -367,7 +367,9 @@ void AssembleChunk(const ChunkDraws& draws, const Assembly& assembly, const std:
       for (; g < stop; ++g) {
         const std::size_t t = first_triangle + g - triangle_start[i];
         const auto& tri = mesh.triangles[t];
-        const auto corner_base = [&](std::size_t k) { return vertex_colours ? vertex_colours[tri[k]] : mesh.colours[t]; };
+        const auto corner_base = [&](std::size_t k) {
+          return vertex_colours ? vertex_colours[tri[k]] : mesh.colours[t];
+        };
         if (wireframe) {
           assembly.Wireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), part);
         } else if (mesh.shading == Shading::kFlat) {

@@ -136,7 +136,8 @@ vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading sh
     case Shading::kGouraud: return CreateShaderModule(device, lit_gouraud_frag_spv);
     case Shading::kUnlit: break;
   }
-  return vertex_colours ? CreateShaderModule(device, lit_gouraud_frag_spv) : CreateShaderModule(device, triangle_frag_spv);
+  return vertex_colours ? CreateShaderModule(device, lit_gouraud_frag_spv)
+                        : CreateShaderModule(device, triangle_frag_spv);
 }
 
 struct VertexInput {

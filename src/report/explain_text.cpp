@@ -163,8 +163,9 @@ void PrintLight(std::ostream& out, const Scene& scene, const Model& model, const
         << Num(term.contribution);
   }
   const Rgb8 base = CornerBase(model, v.triangle, static_cast<std::size_t>(v.corner));
-  out << "\n                 = " << Num(t.intensity) << "; colour = " << (model.vertex_colours.empty() ? "base" : "vertex colour") << " (" << int{base.r} << ", " << int{base.g}
-      << ", " << int{base.b} << ") / 255 · min(I, 1) = " << Tuple(t.colour) << "\n";
+  out << "\n                 = " << Num(t.intensity)
+      << "; colour = " << (model.vertex_colours.empty() ? "base" : "vertex colour") << " (" << int{base.r} << ", "
+      << int{base.g} << ", " << int{base.b} << ") / 255 · min(I, 1) = " << Tuple(t.colour) << "\n";
 }
 
 void PrintVertex(std::ostream& out, const Scene& scene, const Model& model, const TracedVertex& v) {

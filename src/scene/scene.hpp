@@ -58,9 +58,10 @@ struct Triangle {
 };
 
 // How a model's triangles take the scene's light. Unlit: their own flat colours, as without
-// lighting (and always when the scene has none), or their corners' vertex colours interpolated. Flat: each triangle lit once, with its face
-// normal, at its first vertex (the provoking vertex, whose flat outputs Vulkan uses). Gouraud:
-// each vertex lit with its own normal, the colour interpolated across the triangle.
+// lighting (and always when the scene has none), or their vertex colours interpolated. Flat: each
+// triangle lit once, with its face normal, at its first vertex (the provoking vertex, whose flat
+// outputs Vulkan uses). Gouraud: each vertex lit with its own normal, the colour interpolated
+// across the triangle.
 enum class Shading { kUnlit, kFlat, kGouraud };
 
 // A triangle corner with no normal in the file (an OBJ face written without vn).

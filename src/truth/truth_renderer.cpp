@@ -85,7 +85,8 @@ TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const Ex
     const std::uint64_t first_surface = first_triangle + 1;
     first_triangle += mesh.triangles.size();
     if (mesh.smooth() && light == nullptr)
-      throw std::invalid_argument("draw " + std::to_string(d) + " has vertex colours, but the truth was given no light");
+      throw std::invalid_argument("draw " + std::to_string(d) +
+                                  " has vertex colours, but the truth was given no light");
     const std::vector<std::array<glm::dvec3, 3>> colours =
         mesh.smooth() ? light->CornerColours(d) : std::vector<std::array<glm::dvec3, 3>>{};
     if (mesh.smooth() && colours.size() != mesh.triangles.size()) {
@@ -144,8 +145,9 @@ namespace {
 
 // An unlit vertex-coloured model's corners: each vertex's colour, k / 255.
 std::vector<std::array<glm::dvec3, 3>> UnlitVertexColours(const Model& model) {
-  const auto at = [&](std::uint32_t v) { return glm::dvec3(model.vertex_colours[v].r, model.vertex_colours[v].g,
-                                                           model.vertex_colours[v].b) / 255.0; };
+  const auto at = [&](std::uint32_t v) {
+    return glm::dvec3(model.vertex_colours[v].r, model.vertex_colours[v].g, model.vertex_colours[v].b) / 255.0;
+  };
   std::vector<std::array<glm::dvec3, 3>> colours(model.triangles.size());
   for (std::size_t t = 0; t < model.triangles.size(); ++t) {
     const auto& v = model.triangles[t].v;
@@ -162,7 +164,8 @@ std::vector<std::array<glm::dvec3, 3>> ExactLight::CornerColours(std::size_t ins
   const Model& model = scene.models[scene.instances[instance].model];
   const std::vector<std::array<glm::dvec3, 3>>& normals = normals_[scene.instances[instance].model];
   const bool vertex_colours = !model.vertex_colours.empty() && !scene.wireframe;
-  if (normals.empty() && !model.triangles.empty()) return vertex_colours ? UnlitVertexColours(model) : std::vector<std::array<glm::dvec3, 3>>{};
+  if (normals.empty() && !model.triangles.empty())
+    return vertex_colours ? UnlitVertexColours(model) : std::vector<std::array<glm::dvec3, 3>>{};
   const glm::dmat4 m = ModelMatrix(scene.instances[instance].transform);
   const std::optional<glm::dmat3> n = NormalMatrix(m);
   if (!n) throw std::invalid_argument("instance " + std::to_string(instance) + " of a lit model has a zero scale");

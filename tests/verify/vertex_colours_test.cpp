@@ -62,7 +62,8 @@ TEST_CASE("verify: the twin's vertex-coloured images pass under lavapipe's and S
   for (const Device& device : Devices()) {
     for (const auto& [name, scene] : Scenes()) {
       const DrawList list = BuildDrawList(scene);
-      const verify::Verification v = Judge(scene, list, RenderOnCpu(list, CpuOptions{.rules = device.rules}), device.bits);
+      const verify::Verification v =
+          Judge(scene, list, RenderOnCpu(list, CpuOptions{.rules = device.rules}), device.bits);
       INFO(device.name << ", " << name << ": " << report::VerificationText(v));
       CHECK(v.NoViolations());
       ++judged;
