@@ -1,6 +1,7 @@
 // Colours each fragment: unlit, with its triangle's flat colour from the colour storage buffer;
 // with LIT defined, with the colour the vertex shader lit (FLAT: the provoking vertex's; else
-// interpolated perspective-correctly between the corners).
+// interpolated perspective-correctly between the corners). The LIT, not FLAT, variant also serves
+// unlit vertex colours: triangle.vert with VERTEX_COLOURS hands it k / 255 to interpolate alike.
 #version 450
 
 #ifdef LIT

@@ -6,6 +6,9 @@
 // With LIT defined, the vertex is also lit (Computer Graphics from Scratch's diffuse model) and
 // passes its colour on: flat (FLAT, the provoking vertex's colour fills the triangle) or smooth
 // (Gouraud, interpolated perspective-correctly).
+// With VERTEX_COLOURS defined, each corner brings its vertex's own colour (DrawMesh::vertex_colours)
+// as an attribute: lit, it is the base colour in place of the triangle's; unlit, the vertex passes
+// k / 255 on, interpolated perspective-correctly (the fragment shader is lit_gouraud.frag's).
 #version 450
 
 layout(location = 0) in vec3 p;  // the model-space position of one corner of one triangle
@@ -26,6 +29,18 @@ layout(push_constant) uniform Push {
 
 #ifdef INSTANCED
 layout(location = 1) in mat4 instance_F;  // locations 1-4, one column each, advanced per instance
+#endif
+
+#ifdef VERTEX_COLOURS
+// The corner's vertex colour, packed RGBA8 with red in the lowest byte (src/gpu/mesh_buffers.hpp).
+layout(location = 6) in uint vertex_rgba;
+
+// k / 255 per channel: the lit base colour's divide, shared so that both read a colour alike. The
+// CPU twin: cpu::BaseColour (src/cpu/lighting.hpp).
+vec3 BaseColour(uint rgba) {
+  precise vec3 base = vec3(float(rgba & 255u), float((rgba >> 8) & 255u), float((rgba >> 16) & 255u)) / 255.0;
+  return base;
+}
 #endif
 
 // precise: the SPIR-V gets NoContraction on every multiply and add below, so no compiler may fuse
@@ -88,11 +103,18 @@ vec3 LightVertex(uint draw, uint triangle) {
       intensity = intensity + light.intensity * (n_dot_l / l_length);
     }
   }
+#ifdef VERTEX_COLOURS
+  precise vec3 base = BaseColour(vertex_rgba);  // this corner's own colour; `triangle` is unused
+#else
   const uint rgba = colours.rgba8[triangle];
   precise vec3 base = vec3(float(rgba & 255u), float((rgba >> 8) & 255u), float((rgba >> 16) & 255u)) / 255.0;
+#endif
   precise vec3 colour = base * min(intensity, 1.0);
   return colour;
 }
+#elif defined(VERTEX_COLOURS)
+// Unlit: the vertex's colour, interpolated perspective-correctly as a Gouraud colour is.
+layout(location = 0) out vec3 colour;
 #else
 // The vertex buffer holds every triangle's three corners in turn, mesh after mesh
 // (src/gpu/mesh_buffers.hpp), so corner v is a corner of triangle v / 3 of the whole list, which
@@ -111,6 +133,8 @@ void main() {
   gl_Position = ((F[0] * p.x + F[1] * p.y) + F[2] * p.z) + F[3];
 #ifdef LIT
   lit = LightVertex(push.draw + uint(gl_InstanceIndex), uint(gl_VertexIndex) / 3u);
+#elif defined(VERTEX_COLOURS)
+  colour = BaseColour(vertex_rgba);
 #else
   triangle = uint(gl_VertexIndex) / 3u;
 #endif

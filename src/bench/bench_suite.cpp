@@ -133,14 +133,14 @@ Lavapipes MakeLavapipes(unsigned cores, bool wanted) {
   return lavapipes;
 }
 
-// What every row of a scene compares against: its draw list, the truth's image and, for lit
-// scenes, which triangle the truth shows where.
+// What every row of a scene compares against: its draw list, the truth's image and, for lit or
+// vertex-coloured scenes, which triangle the truth shows where.
 struct SceneTruth {
   Scene scene;
   DrawList list;
   ExactClipPositions exact;
   TruthImage surfaces;
-  std::optional<DrawList> surface_list;  // lit scenes: the positions rasterized once more with SurfaceList
+  std::optional<DrawList> surface_list;  // smooth scenes: the positions rasterized again with SurfaceList
 };
 
 SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
@@ -151,13 +151,15 @@ SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
   t.exact = ExactClipSpace(t.scene);
   const ExactLight light(t.scene);
   t.surfaces = RenderTruthSurfaces(t.list, t.exact, &light);
-  if (t.list.lighting) t.surface_list = SurfaceList(t.list);
+  // Colours that vary across a triangle (light, vertex colours) are compared surface by surface.
+  if (std::any_of(t.list.meshes.begin(), t.list.meshes.end(), [](const DrawMesh& m) { return m.smooth(); }))
+    t.surface_list = SurfaceList(t.list);
   return t;
 }
 
-// The row's image against the truth: pixels, z-fighting and, on lit scenes, how far its colours are
-// from the truth's, triangle by triangle (which triangle a pixel shows found with `rules`, the
-// rules of the device that drew it).
+// The row's image against the truth: pixels, z-fighting and, on lit or vertex-coloured scenes, how
+// far its colours are from the truth's, triangle by triangle (which triangle a pixel shows found
+// with `rules`, the rules of the device that drew it).
 void MeasureImage(BenchRow& row, const std::filesystem::path& file, const SceneTruth& t, const Image& image,
                   const ClipPositions* clip, unsigned cores, const cpu::RasterRules& rules = {}) {
   row.image_error_px = CompareImages(image, t.surfaces.image).differing_pixels;

@@ -65,6 +65,8 @@ DrawList BuildDrawList(const Scene& scene) {
       mesh.triangles.push_back(t.v);
       mesh.colours.push_back(t.colour);
     }
+    // Edges keep the triangle colours, as they keep them unlit: vertex colours fill triangles.
+    if (!scene.wireframe) mesh.vertex_colours = model.vertex_colours;
     list.meshes.push_back(std::move(mesh));
   }
 
@@ -101,6 +103,14 @@ void ValidateDrawList(const DrawList& list) {
     if (mesh.colours.size() != mesh.triangles.size()) {
       throw std::invalid_argument("mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +
                                   " triangles but " + std::to_string(mesh.colours.size()) + " colours");
+    }
+    if (!mesh.vertex_colours.empty() && mesh.vertex_colours.size() != mesh.positions.size()) {
+      throw std::invalid_argument("mesh " + std::to_string(m) + " has " + std::to_string(mesh.positions.size()) +
+                                  " vertices but " + std::to_string(mesh.vertex_colours.size()) + " vertex colours");
+    }
+    if (!mesh.vertex_colours.empty() && list.wireframe) {
+      throw std::invalid_argument("mesh " + std::to_string(m) +
+                                  " has vertex colours in a wireframe list: edges take the triangle colours");
     }
     if (mesh.shading != Shading::kUnlit && mesh.normals.size() != mesh.triangles.size()) {
       throw std::invalid_argument("lit mesh " + std::to_string(m) + " has " + std::to_string(mesh.triangles.size()) +

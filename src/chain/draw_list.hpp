@@ -19,13 +19,19 @@ namespace twinraster {
 // One model's geometry in float, as uploaded to the GPU: shared vertices, indexed triangles and
 // one flat colour per triangle (the chapter colours triangles, not vertices). A lit mesh adds a
 // model-space unit normal per triangle corner (chain/normals.hpp says which), and its triangle
-// colours become the base colours the light scales.
+// colours become the base colours the light scales. A mesh with vertex colours fills each corner
+// with its vertex's colour instead (unlit: k / 255, interpolated as Gouraud colours are; lit: the
+// vertex's colour is its base colour); its triangle colours are then unused.
 struct DrawMesh {
   std::vector<glm::vec3> positions;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<Rgb8> colours;  // colours[i] belongs to triangles[i]
   Shading shading = Shading::kUnlit;
   std::vector<std::array<glm::vec3, 3>> normals;  // lit only: normals[i][k], corner k of triangles[i]
+  // Empty, or vertex_colours[i] belongs to positions[i]; always empty in a wireframe list.
+  std::vector<Rgb8> vertex_colours;
+  // Whether its colour varies across a triangle: lit, or vertex-coloured (else one flat colour).
+  bool smooth() const { return shading != Shading::kUnlit || !vertex_colours.empty(); }
 };
 
 // One instance: which mesh, and F = M_Projection · M_Camera · M_Model composed in double and
@@ -68,7 +74,8 @@ struct DrawList {
   // clear to 0, test GREATER. Either way depth is D32_SFLOAT and written.
   bool reversed_z = false;
   // Triangle edges only (Vulkan's polygonMode LINE, 1 pixel wide), with the same depth test.
-  // Edges are not lit: a wireframe list has no lighting and every mesh is unlit.
+  // Edges are not lit: a wireframe list has no lighting and every mesh is unlit, in its triangle
+  // colours (no vertex colours).
   bool wireframe = false;
   // Present when some mesh is lit; absent, the list holds flat colours only.
   std::optional<DrawLighting> lighting;
@@ -78,7 +85,8 @@ DrawList BuildDrawList(const Scene& scene);
 
 // What every renderer checks before drawing a list someone else built: a size in 1..kMaxCanvasSize,
 // every draw naming an existing mesh, every triangle using existing vertices and having its colour,
-// a lit mesh having its normals, and lighting covering every draw.
+// a lit mesh having its normals, vertex colours none or one per vertex (none in a wireframe), and
+// lighting covering every draw.
 // Throws std::invalid_argument naming the first problem.
 void ValidateDrawList(const DrawList& list);
 

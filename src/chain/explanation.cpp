@@ -58,6 +58,15 @@ void Factor(const Transform& t, InstanceExplanation& x) {
   }
 }
 
+}  // namespace
+
+Rgb8 CornerBase(const Model& model, std::size_t triangle, std::size_t corner) {
+  const Triangle& t = model.triangles[triangle];
+  return model.vertex_colours.empty() ? t.colour : model.vertex_colours[t.v[corner]];
+}
+
+namespace {
+
 // The first triangle corner that uses vertex v, and its light; none when no triangle uses v.
 std::optional<VertexLight> LightAt(const Scene& scene, const InstanceExplanation& x, std::size_t v,
                                    const std::vector<std::array<glm::dvec3, 3>>& normals) {
@@ -67,7 +76,7 @@ std::optional<VertexLight> LightAt(const Scene& scene, const InstanceExplanation
       if (model.triangles[t].v[k] != v) continue;
       return VertexLight{t, static_cast<int>(k),
                          TraceLight(*scene.lighting, x.model_matrix, *x.normal_matrix, model.vertices[v], normals[t][k],
-                                    model.triangles[t].colour)};
+                                    CornerBase(model, t, k))};
     }
   }
   return std::nullopt;

@@ -94,6 +94,10 @@ struct Explanation {
   std::vector<InstanceExplanation> instances;  // the one asked for, or the first kExplainedInstances
 };
 
+// The base colour the light scales at corner `corner` of triangle `triangle`: its vertex's colour
+// when the model has vertex colours, else the triangle's.
+Rgb8 CornerBase(const Model& model, std::size_t triangle, std::size_t corner);
+
 // Throws UsageError when the instance or vertex asked for does not exist.
 Explanation Explain(const Scene& scene, const ExplainOptions& options);
 

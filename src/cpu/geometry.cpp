@@ -360,24 +360,36 @@ void AssembleChunk(const ChunkDraws& draws, const Assembly& assembly, const std:
       const std::size_t i = DrawOf(triangle_start, g);
       const DrawMesh& mesh = draws.mesh(i);
       const auto* base = vertices.data() + vertex_start[i];
+      // A corner's base colour: its vertex's when the mesh has vertex colours, else the triangle's
+      // (the vertex shader reads the same, triangle.vert's VERTEX_COLOURS).
+      const Rgb8* vertex_colours = mesh.vertex_colours.empty() ? nullptr : mesh.vertex_colours.data();
       const std::size_t stop = std::min(end, triangle_start[i + 1]);
       for (; g < stop; ++g) {
         const std::size_t t = first_triangle + g - triangle_start[i];
         const auto& tri = mesh.triangles[t];
+        const auto corner_base = [&](std::size_t k) {
+          return vertex_colours ? vertex_colours[tri[k]] : mesh.colours[t];
+        };
         if (wireframe) {
           assembly.Wireframe({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), part);
         } else if (mesh.shading == Shading::kFlat) {
           // Lit once, at the provoking vertex (corner 0), whose flat output fills the triangle.
           const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
           const glm::vec3 colour =
-              LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], mesh.colours[t]);
+              LightVertex(*list.lighting, lit, mesh.positions[tri[0]], mesh.normals[t][0], corner_base(0));
           assembly.Flat({base + tri[0], base + tri[1], base + tri[2]}, PackUnorm(colour), part);
         } else if (mesh.shading == Shading::kGouraud) {
           const LitInstance& lit = list.lighting->instances[chunk.draw_begin + i];
           std::array<glm::vec3, 3> colours;
           for (std::size_t k = 0; k < 3; ++k) {
-            colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], mesh.colours[t]);
+            colours[k] = LightVertex(*list.lighting, lit, mesh.positions[tri[k]], mesh.normals[t][k], corner_base(k));
           }
+          assembly.Smooth({base + tri[0], base + tri[1], base + tri[2]}, colours, part);
+        } else if (vertex_colours) {
+          // Unlit vertex colours: k / 255 at each corner, interpolated as Gouraud colours are.
+          const std::array<glm::vec3, 3> colours = {BaseColour(vertex_colours[tri[0]]),
+                                                    BaseColour(vertex_colours[tri[1]]),
+                                                    BaseColour(vertex_colours[tri[2]])};
           assembly.Smooth({base + tri[0], base + tri[1], base + tri[2]}, colours, part);
         } else {
           assembly.Flat({base + tri[0], base + tri[1], base + tri[2]}, PackRgba(mesh.colours[t]), part);

@@ -33,8 +33,8 @@ glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance,
   }
   // GLSL's min(I, 1.0): I when I < 1 (a NaN I stays NaN; see UnormByte).
   const float scale = intensity < 1.0f ? intensity : 1.0f;
-  return glm::vec3((static_cast<float>(base.r) / 255.0f) * scale, (static_cast<float>(base.g) / 255.0f) * scale,
-                   (static_cast<float>(base.b) / 255.0f) * scale);
+  const glm::vec3 k = BaseColour(base);
+  return glm::vec3(k.x * scale, k.y * scale, k.z * scale);
 }
 
 }  // namespace twinraster::cpu

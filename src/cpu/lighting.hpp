@@ -1,4 +1,4 @@
-// Stage 1 for a lit mesh: the light at one vertex, computed in float exactly as
+// Stage 1 for a lit or vertex-coloured mesh: the light at one vertex, computed in float exactly as
 // shaders/triangle.vert (LIT) computes it, and the colour output's conversion to UNORM8.
 //   world = ((M[0]*p.x + M[1]*p.y) + M[2]*p.z) + M[3]          M: LitInstance::model
 //   n     = (N[0]*n.x + N[1]*n.y) + N[2]*n.z, then n / |n|       N: LitInstance::normal
@@ -20,6 +20,13 @@ namespace twinraster::cpu {
 
 glm::vec3 LightVertex(const DrawLighting& lighting, const LitInstance& instance, const glm::vec3& position,
                       const glm::vec3& normal, Rgb8 base);
+
+// A base colour as the shader reads it, k / 255 per channel (one IEEE divide each): lit, times
+// min(I, 1); a vertex colour on an unlit mesh is this itself (triangle.vert's BaseColour).
+inline glm::vec3 BaseColour(Rgb8 c) {
+  return glm::vec3(static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f,
+                   static_cast<float>(c.b) / 255.0f);
+}
 
 // A fragment shader output channel as the UNORM8 colour attachment stores it: clamped to [0, 1]
 // (NaN to 0), times 255, rounded half to even. Adding and taking away 1.5 · 2^23 rounds a float

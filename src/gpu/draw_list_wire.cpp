@@ -65,7 +65,7 @@ void Walk(Coder& c, List& list) {
   if constexpr (!std::is_const_v<List>) list.meshes.resize(meshes);
   for (auto& mesh : list.meshes) {
     c.Vector(mesh.positions), c.Vector(mesh.triangles), c.Vector(mesh.colours);
-    c.Value(mesh.shading), c.Vector(mesh.normals);
+    c.Value(mesh.shading), c.Vector(mesh.normals), c.Vector(mesh.vertex_colours);
   }
   c.Vector(list.draws);
   bool lit = list.lighting.has_value();

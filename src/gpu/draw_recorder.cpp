@@ -27,7 +27,7 @@ void DrawRecorder::Record(const DrawBatch& batch) {
   const Shading shading = list_.meshes[batch.mesh].shading;
   const bool lit = shading != Shading::kUnlit;
   const vk::PipelineLayout layout = *pipeline_.layout(lit);
-  BindPipeline(shading, source);
+  BindPipeline(shading, !list_.meshes[batch.mesh].vertex_colours.empty(), source);
   if (batch.instanced && bound_buffer_ != batch.buffer) {
     cmd_.bindVertexBuffers(1, instances_.buffer(batch.buffer), vk::DeviceSize{0});
     bound_buffer_ = batch.buffer;
@@ -39,11 +39,12 @@ void DrawRecorder::Record(const DrawBatch& batch) {
   }
 }
 
-void DrawRecorder::BindPipeline(Shading shading, FSource source) {
-  if (bound_pipeline_ == std::pair{shading, source}) return;
+void DrawRecorder::BindPipeline(Shading shading, bool vertex_colours, FSource source) {
+  const std::tuple key{shading, vertex_colours, source};
+  if (bound_pipeline_ == key) return;
   cmd_.bindPipeline(vk::PipelineBindPoint::eGraphics,
-                    *pipeline_.pipeline(shading, source, list_.reversed_z, list_.wireframe));
-  bound_pipeline_ = std::pair{shading, source};
+                    *pipeline_.pipeline(shading, vertex_colours, source, list_.reversed_z, list_.wireframe));
+  bound_pipeline_ = key;
 }
 
 void DrawRecorder::RecordUnlit(const DrawBatch& batch, const MeshRange& range, vk::PipelineLayout layout) {

@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <utility>
+#include <tuple>
 
 namespace twinraster::gpu {
 
@@ -29,7 +29,7 @@ class DrawRecorder {
   std::size_t draw_commands() const { return draw_commands_; }  // vkCmdDraw calls so far
 
  private:
-  void BindPipeline(Shading shading, FSource source);
+  void BindPipeline(Shading shading, bool vertex_colours, FSource source);
   void RecordUnlit(const DrawBatch& batch, const MeshRange& range, vk::PipelineLayout layout);
   void RecordLit(const DrawBatch& batch, const MeshRange& range, vk::PipelineLayout layout);
   void Draw(const MeshRange& range, std::uint32_t instances, std::uint32_t first_instance);
@@ -41,7 +41,7 @@ class DrawRecorder {
   const InstanceBuffers& instances_;
   vk::DescriptorSet colour_set_, lit_set_;
 
-  std::optional<std::pair<Shading, FSource>> bound_pipeline_;
+  std::optional<std::tuple<Shading, bool, FSource>> bound_pipeline_;
   // The descriptor set bound: none yet, the unlit one, or the lit one showing LitInstance range k.
   static constexpr std::int64_t kNoSet = -2, kUnlitSet = -1;
   std::int64_t bound_set_ = kNoSet;

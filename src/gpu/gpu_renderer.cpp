@@ -182,6 +182,7 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
   BeginPass(list);
   cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
   if (lights) cmd.bindVertexBuffers(2, lights->normals(), vk::DeviceSize{0});
+  if (meshes.vertex_colours()) cmd.bindVertexBuffers(3, meshes.vertex_colours()->buffer(), vk::DeviceSize{0});
   gpu::DrawRecorder recorder(cmd, pipeline, list, meshes, instances, *colour_set, *lit_set);
   for (const gpu::DrawBatch& batch : plan.batches) recorder.Record(batch);
   cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing

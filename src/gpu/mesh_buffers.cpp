@@ -31,6 +31,26 @@ MeshPlan PlanMeshes(const DrawList& list, const vk::PhysicalDeviceLimits& limits
   return plan;
 }
 
+// Each corner's vertex colour, packed as the vertex shader unpacks it, mesh after mesh.
+void FillVertexColours(const DrawList& list, std::byte* out) {
+  for (const DrawMesh& mesh : list.meshes) {
+    for (const auto& triangle : mesh.triangles) {
+      for (const std::uint32_t v : triangle) {
+        const std::uint32_t packed = mesh.vertex_colours.empty() ? 0u : PackRgba8(mesh.vertex_colours[v]);
+        std::memcpy(out, &packed, sizeof packed);
+        out += sizeof packed;
+      }
+    }
+  }
+}
+
+bool AnyVertexColours(const DrawList& list) {
+  for (const DrawMesh& mesh : list.meshes) {
+    if (!mesh.vertex_colours.empty()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 MeshBuffers::MeshBuffers(const VulkanContext& context, const DrawList& list)
@@ -50,6 +70,11 @@ MeshBuffers::MeshBuffers(const VulkanContext& context, const DrawList& list)
       std::memcpy(colour, &packed, sizeof packed);
       colour += sizeof packed;
     }
+  }
+  if (AnyVertexColours(list)) {
+    vertex_colours_.emplace(context, plan_.triangles * 3 * sizeof(std::uint32_t),
+                            vk::BufferUsageFlagBits::eVertexBuffer);
+    FillVertexColours(list, vertex_colours_->data());
   }
 }
 

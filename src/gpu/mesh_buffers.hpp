@@ -1,7 +1,8 @@
 // The draw list's meshes packed for the GPU: every triangle's three corners in turn in one vertex
 // buffer, mesh after mesh, all triangle colours in a storage buffer in the same order, and where
 // each mesh starts in them. Corner v belongs to triangle v / 3, whose colour is colours[v / 3]:
-// the shaders need no index buffer, no per-draw offset and no gl_PrimitiveID.
+// the shaders need no index buffer, no per-draw offset and no gl_PrimitiveID. When some mesh has
+// vertex colours, a third buffer holds each corner's vertex colour in the corner buffer's order.
 #pragma once
 
 #include "chain/draw_list.hpp"
@@ -9,6 +10,7 @@
 #include "gpu/vulkan_context.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace twinraster::gpu {
@@ -38,12 +40,16 @@ class MeshBuffers {
 
   vk::Buffer corners() const { return corners_.buffer(); }  // vec3 positions (binding 0)
   vk::Buffer colours() const { return colours_.buffer(); }
+  // Packed RGBA8 per corner (binding 3), zero for a mesh without vertex colours (unread); only
+  // when some mesh has them, so a list without them uploads exactly what it did before.
+  const std::optional<HostBuffer>& vertex_colours() const { return vertex_colours_; }
   const MeshRange& range(std::uint32_t mesh) const { return plan_.ranges[mesh]; }
 
  private:
   MeshPlan plan_;  // first: the buffers below are sized from it
   HostBuffer corners_;
   HostBuffer colours_;
+  std::optional<HostBuffer> vertex_colours_;
 };
 
 }  // namespace twinraster::gpu

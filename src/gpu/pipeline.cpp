@@ -3,12 +3,18 @@
 #include "shaders/lit_flat.frag.h"
 #include "shaders/lit_flat.vert.h"
 #include "shaders/lit_flat_instanced.vert.h"
+#include "shaders/lit_flat_vertex_colours.vert.h"
+#include "shaders/lit_flat_vertex_colours_instanced.vert.h"
 #include "shaders/lit_gouraud.frag.h"
 #include "shaders/lit_gouraud.vert.h"
 #include "shaders/lit_gouraud_instanced.vert.h"
+#include "shaders/lit_gouraud_vertex_colours.vert.h"
+#include "shaders/lit_gouraud_vertex_colours_instanced.vert.h"
 #include "shaders/triangle.frag.h"
 #include "shaders/triangle.vert.h"
 #include "shaders/triangle_instanced.vert.h"
+#include "shaders/vertex_colours.vert.h"
+#include "shaders/vertex_colours_instanced.vert.h"
 
 #include <array>
 #include <stdexcept>
@@ -92,7 +98,24 @@ vk::raii::ShaderModule CreateShaderModule(const vk::raii::Device& device, const 
   return vk::raii::ShaderModule(device, vk::ShaderModuleCreateInfo{.codeSize = sizeof words, .pCode = words});
 }
 
-vk::raii::ShaderModule VertexShader(const vk::raii::Device& device, Shading shading, bool instanced) {
+// triangle.vert compiled with VERTEX_COLOURS (shaders/CMakeLists.txt).
+vk::raii::ShaderModule VertexColourShader(const vk::raii::Device& device, Shading shading, bool instanced) {
+  switch (shading) {
+    case Shading::kFlat:
+      return instanced ? CreateShaderModule(device, lit_flat_vertex_colours_instanced_vert_spv)
+                       : CreateShaderModule(device, lit_flat_vertex_colours_vert_spv);
+    case Shading::kGouraud:
+      return instanced ? CreateShaderModule(device, lit_gouraud_vertex_colours_instanced_vert_spv)
+                       : CreateShaderModule(device, lit_gouraud_vertex_colours_vert_spv);
+    case Shading::kUnlit: break;
+  }
+  return instanced ? CreateShaderModule(device, vertex_colours_instanced_vert_spv)
+                   : CreateShaderModule(device, vertex_colours_vert_spv);
+}
+
+vk::raii::ShaderModule VertexShader(const vk::raii::Device& device, Shading shading, bool vertex_colours,
+                                    bool instanced) {
+  if (vertex_colours) return VertexColourShader(device, shading, instanced);
   switch (shading) {
     case Shading::kFlat:
       return instanced ? CreateShaderModule(device, lit_flat_instanced_vert_spv)
@@ -106,13 +129,15 @@ vk::raii::ShaderModule VertexShader(const vk::raii::Device& device, Shading shad
                    : CreateShaderModule(device, triangle_vert_spv);
 }
 
-vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading shading) {
+// Unlit vertex colours are interpolated as Gouraud colours are: the same fragment shader.
+vk::raii::ShaderModule FragmentShader(const vk::raii::Device& device, Shading shading, bool vertex_colours) {
   switch (shading) {
     case Shading::kFlat: return CreateShaderModule(device, lit_flat_frag_spv);
     case Shading::kGouraud: return CreateShaderModule(device, lit_gouraud_frag_spv);
     case Shading::kUnlit: break;
   }
-  return CreateShaderModule(device, triangle_frag_spv);
+  return vertex_colours ? CreateShaderModule(device, lit_gouraud_frag_spv)
+                        : CreateShaderModule(device, triangle_frag_spv);
 }
 
 struct VertexInput {
@@ -123,8 +148,9 @@ struct VertexInput {
 // Binding 0: the vec3 position of a triangle's corner. Unlit, it is the only per-vertex attribute:
 // colours come per triangle from the storage buffer, found from the corner's number. Binding 1,
 // instanced only: F, one mat4 per instance, a column per location. Binding 2, lit only: the
-// corner's normal (location 5).
-VertexInput VertexInputFor(bool instanced, bool lit) {
+// corner's normal (location 5). Binding 3, with vertex colours only: the corner's packed RGBA8
+// vertex colour (location 6).
+VertexInput VertexInputFor(bool instanced, bool lit, bool vertex_colours) {
   VertexInput input{
       .bindings = {{.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}},
       .attributes = {{.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}},
@@ -142,13 +168,18 @@ VertexInput VertexInputFor(bool instanced, bool lit) {
     input.bindings.push_back({.binding = 2, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex});
     input.attributes.push_back({.location = 5, .binding = 2, .format = vk::Format::eR32G32B32Sfloat, .offset = 0});
   }
+  if (vertex_colours) {
+    input.bindings.push_back(
+        {.binding = 3, .stride = sizeof(std::uint32_t), .inputRate = vk::VertexInputRate::eVertex});
+    input.attributes.push_back({.location = 6, .binding = 3, .format = vk::Format::eR32Uint, .offset = 0});
+  }
   return input;
 }
 
 }  // namespace
 
 Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
-  for (int i = 0; i < 3 * 2 * 2 * 2; ++i) pipelines_.emplace_back(nullptr);
+  for (int i = 0; i < 3 * 2 * 2 * 2 * 2; ++i) pipelines_.emplace_back(nullptr);
   render_pass_ = CreateRenderPass(device);
 
   const vk::DescriptorSetLayoutBinding colour_binding{
@@ -188,31 +219,32 @@ Pipeline::Pipeline(const vk::raii::Device& device) : device_(&device) {
   lit_layout_ = make_layout(*lit_set_layout_, sizeof(LitPushConstants));
 }
 
-const vk::raii::Pipeline& Pipeline::pipeline(Shading shading, FSource source, bool reversed_z, bool wireframe) {
+const vk::raii::Pipeline& Pipeline::pipeline(Shading shading, bool vertex_colours, FSource source, bool reversed_z,
+                                             bool wireframe) {
   if (shading != Shading::kUnlit && wireframe) throw std::logic_error("wireframe edges are not lit");
-  const std::size_t index =
-      ((static_cast<std::size_t>(shading) * 2 + (source == FSource::kInstanceAttribute ? 1 : 0)) * 2 +
-       (reversed_z ? 1 : 0)) *
-          2 +
-      (wireframe ? 1 : 0);
+  if (vertex_colours && wireframe) throw std::logic_error("wireframe edges take the triangle colours");
+  std::size_t index = static_cast<std::size_t>(shading);
+  for (const bool bit : {vertex_colours, source == FSource::kInstanceAttribute, reversed_z, wireframe})
+    index = index * 2 + (bit ? 1 : 0);
   vk::raii::Pipeline& slot = pipelines_[index];
-  if (!*slot) slot = Create(shading, source, reversed_z, wireframe);
+  if (!*slot) slot = Create(shading, vertex_colours, source, reversed_z, wireframe);
   return slot;
 }
 
-vk::raii::Pipeline Pipeline::Create(Shading shading, FSource source, bool reversed_z, bool wireframe) const {
+vk::raii::Pipeline Pipeline::Create(Shading shading, bool vertex_colours, FSource source, bool reversed_z,
+                                    bool wireframe) const {
   const vk::raii::Device& device = *device_;
   const bool instanced = source == FSource::kInstanceAttribute;
   const bool lit = shading != Shading::kUnlit;
-  const vk::raii::ShaderModule vertex = VertexShader(device, shading, instanced);
-  const vk::raii::ShaderModule fragment = FragmentShader(device, shading);
+  const vk::raii::ShaderModule vertex = VertexShader(device, shading, vertex_colours, instanced);
+  const vk::raii::ShaderModule fragment = FragmentShader(device, shading, vertex_colours);
   const std::array stages = {
       vk::PipelineShaderStageCreateInfo{.stage = vk::ShaderStageFlagBits::eVertex, .module = *vertex, .pName = "main"},
       vk::PipelineShaderStageCreateInfo{
           .stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment, .pName = "main"},
   };
 
-  const VertexInput input = VertexInputFor(instanced, lit);
+  const VertexInput input = VertexInputFor(instanced, lit, vertex_colours);
   const vk::PipelineVertexInputStateCreateInfo vertex_input{
       .vertexBindingDescriptionCount = static_cast<std::uint32_t>(input.bindings.size()),
       .pVertexBindingDescriptions = input.bindings.data(),

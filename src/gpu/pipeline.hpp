@@ -47,11 +47,14 @@ class Pipeline {
   const vk::raii::PipelineLayout& layout(bool lit) const { return lit ? lit_layout_ : layout_; }
   // Depth test LESS for standard depth, GREATER for reversed Z (DrawList::reversed_z).
   // Wireframe: polygonMode LINE, 1 pixel wide (needs the fillModeNonSolid feature), unlit only.
+  // Vertex colours: each corner's colour from binding 3 (location 6), filled triangles only.
   // Created on first use.
-  const vk::raii::Pipeline& pipeline(Shading shading, FSource source, bool reversed_z, bool wireframe);
+  const vk::raii::Pipeline& pipeline(Shading shading, bool vertex_colours, FSource source, bool reversed_z,
+                                     bool wireframe);
 
  private:
-  vk::raii::Pipeline Create(Shading shading, FSource source, bool reversed_z, bool wireframe) const;
+  vk::raii::Pipeline Create(Shading shading, bool vertex_colours, FSource source, bool reversed_z,
+                            bool wireframe) const;
 
   const vk::raii::Device* device_;
   vk::raii::RenderPass render_pass_ = nullptr;
@@ -59,8 +62,9 @@ class Pipeline {
   vk::raii::PipelineLayout layout_ = nullptr;
   vk::raii::DescriptorSetLayout lit_set_layout_ = nullptr;
   vk::raii::PipelineLayout lit_layout_ = nullptr;
-  // One per (shading, F source, reversed Z, wireframe): identical but for the shaders, the vertex
-  // input, the depth compare op and the polygon mode, which are baked into a Vulkan 1.0 pipeline.
+  // One per (shading, vertex colours, F source, reversed Z, wireframe): identical but for the
+  // shaders, the vertex input, the depth compare op and the polygon mode, which are baked into a
+  // Vulkan 1.0 pipeline.
   std::vector<vk::raii::Pipeline> pipelines_;
 };
 

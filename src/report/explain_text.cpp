@@ -173,9 +173,10 @@ void PrintLight(std::ostream& out, const Scene& scene, const Model& model, const
         << ", n·l = " << Num(term.n_dot_l) << (term.n_dot_l > 0 ? "" : " (faces away: 0)") << ", term "
         << Num(term.contribution);
   }
-  const Rgb8 base = model.triangles[v.triangle].colour;
-  out << "\n                 = " << Num(t.intensity) << "; colour = base (" << int{base.r} << ", " << int{base.g}
-      << ", " << int{base.b} << ") / 255 · min(I, 1) = " << Tuple(t.colour) << "\n";
+  const Rgb8 base = CornerBase(model, v.triangle, static_cast<std::size_t>(v.corner));
+  out << "\n                 = " << Num(t.intensity)
+      << "; colour = " << (model.vertex_colours.empty() ? "base" : "vertex colour") << " (" << int{base.r} << ", "
+      << int{base.g} << ", " << int{base.b} << ") / 255 · min(I, 1) = " << Tuple(t.colour) << "\n";
 }
 
 void PrintVertex(std::ostream& out, const Scene& scene, const Model& model, const TracedVertex& v) {
@@ -191,7 +192,13 @@ void PrintVertex(std::ostream& out, const Scene& scene, const Model& model, cons
       << "    canvas       " << Tuple(tr.canvas) << "   = " << canvas_formula << ", +y up\n"
       << "    framebuffer  " << Tuple(glm::dvec2(tr.framebuffer)) << " depth " << Num(tr.framebuffer.z)
       << "   Vulkan: +y down, pixel (i, j) has its centre at (i + 0.5, j + 0.5)\n";
-  if (v.light) PrintLight(out, scene, model, *v.light);
+  if (v.light) {
+    PrintLight(out, scene, model, *v.light);
+  } else if (!model.vertex_colours.empty() && !scene.wireframe && v.index < model.vertex_colours.size()) {
+    const Rgb8 c = model.vertex_colours[v.index];
+    out << "    colour       (" << int{c.r} << ", " << int{c.g} << ", " << int{c.b}
+        << ") / 255, the vertex colour, interpolated across each triangle it is a corner of\n";
+  }
 }
 
 void PrintInstance(std::ostream& out, const Explanation& e, const InstanceExplanation& x) {

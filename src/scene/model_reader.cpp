@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <utility>
 
 namespace twinraster {
@@ -40,6 +41,48 @@ Shading ReadShading(const JsonReader& r, bool lit) {
   return found->second;
 }
 
+// "vertex_colours": one colour per vertex, in the vertices' order; empty when absent.
+std::vector<Rgb8> ReadVertexColours(const JsonReader& model, std::size_t vertex_count) {
+  const std::optional<JsonReader> r = model.Find("vertex_colours");
+  if (!r) return {};
+  if (!r->IsArray()) r->Fail("expected a list of colours, one per vertex, found " + r->TypeName());
+  const std::size_t count = r->ExpectArray();
+  if (count != vertex_count) {
+    r->Fail(std::to_string(count) + " colours for " + std::to_string(vertex_count) +
+            " vertices: give one colour per vertex");
+  }
+  std::vector<Rgb8> colours;
+  colours.reserve(count);
+  r->ForEachElement([&](const JsonReader& c) { colours.push_back(ReadColour(c)); });
+  return colours;
+}
+
+// [v0, v1, v2, colour]; with vertex colours the colour may be left out, and is then v0's (the
+// provoking vertex's), which only a wireframe or the book's rules draw.
+Triangle ReadTriangle(const JsonReader& t, std::size_t vertex_count, const std::vector<Rgb8>& vertex_colours) {
+  const bool colour_optional = !vertex_colours.empty();
+  if (!t.IsArray()) {
+    t.Fail(colour_optional ? "expected [v0, v1, v2] or [v0, v1, v2, colour], found " + t.TypeName()
+                           : "expected [v0, v1, v2, colour], found " + t.TypeName());
+  }
+  const std::size_t size = t.ExpectArray();
+  if (colour_optional && size != 3 && size != 4) {
+    t.Fail("expected an array of 3 or 4 elements, found " + std::to_string(size));
+  } else if (!colour_optional && size == 3) {
+    t.Fail("expected [v0, v1, v2, colour]: a triangle without a colour needs the model's \"vertex_colours\"");
+  } else if (!colour_optional) {
+    t.ExpectArray(4);
+  }
+  Triangle triangle;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const JsonReader index = t[k];
+    if (vertex_count == 0) index.Fail("the model has no vertices");
+    triangle.v[k] = static_cast<std::uint32_t>(index.Integer(0, static_cast<std::int64_t>(vertex_count) - 1));
+  }
+  triangle.colour = size == 4 ? ReadColour(t[3]) : vertex_colours[triangle.v[0]];
+  return triangle;
+}
+
 Model ReadVertexModel(const JsonReader& r, const std::string& name) {
   Model model;
   model.name = name;
@@ -47,21 +90,12 @@ Model ReadVertexModel(const JsonReader& r, const std::string& name) {
   const std::size_t vertex_count = vertices.ExpectArray();
   model.vertices.reserve(vertex_count);
   vertices.ForEachElement([&](const JsonReader& v) { model.vertices.push_back(v.Vec3()); });
+  model.vertex_colours = ReadVertexColours(r, vertex_count);
 
   const JsonReader triangles = r.Required("triangles");
   model.triangles.reserve(triangles.ExpectArray());
-  triangles.ForEachElement([&](const JsonReader& t) {
-    if (!t.IsArray()) t.Fail("expected [v0, v1, v2, colour], found " + t.TypeName());
-    t.ExpectArray(4);
-    Triangle triangle;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const JsonReader index = t[k];
-      if (vertex_count == 0) index.Fail("the model has no vertices");
-      triangle.v[k] = static_cast<std::uint32_t>(index.Integer(0, static_cast<std::int64_t>(vertex_count) - 1));
-    }
-    triangle.colour = ReadColour(t[3]);
-    model.triangles.push_back(triangle);
-  });
+  triangles.ForEachElement(
+      [&](const JsonReader& t) { model.triangles.push_back(ReadTriangle(t, vertex_count, model.vertex_colours)); });
   return model;
 }
 
@@ -106,6 +140,7 @@ Model ReadObjModel(const JsonReader& r, const std::string& name, const std::file
   if (const std::optional<JsonReader> materials = r.Find("materials"))
     material_colours = ReadMaterials(*materials, mesh.materials);
   Model model = ObjModel(std::move(mesh), name, colour, material_colours);
+  model.vertex_colours = ReadVertexColours(r, model.vertices.size());
   model.source = written;
   return model;
 }
@@ -152,8 +187,9 @@ Model ReadGltfModel(const JsonReader& r, const std::string& name, const std::fil
 }
 
 Model ReadModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory, bool lit) {
-  r.ExpectObject({"vertices", "triangles", "obj", "gltf", "colour", "materials", "shading"});
+  r.ExpectObject({"vertices", "triangles", "obj", "gltf", "colour", "materials", "shading", "vertex_colours"});
   if (r.Find("gltf")) {
+    if (auto colours = r.Find("vertex_colours")) colours->Fail("a model read from \"gltf\" takes its colours from the file");
     const std::optional<JsonReader> shading = r.Find("shading");
     const std::optional<Shading> asked = shading ? std::optional(ReadShading(*shading, lit)) : std::nullopt;
     Model model = ReadGltfModel(r, name, directory, lit);

@@ -53,13 +53,16 @@ struct Depth {
 
 struct Triangle {
   std::array<std::uint32_t, 3> v{};  // indices into the model's vertices
+  // Its flat colour. A model with vertex colours is filled with those instead; this one is then
+  // only for wireframe edges and the book's rules (by default its first vertex's colour).
   Rgb8 colour;
 };
 
 // How a model's triangles take the scene's light. Unlit: their own flat colours, as without
-// lighting (and always when the scene has none). Flat: each triangle lit once, with its face
-// normal, at its first vertex (the provoking vertex, whose flat outputs Vulkan uses). Gouraud:
-// each vertex lit with its own normal, the colour interpolated across the triangle.
+// lighting (and always when the scene has none), or their vertex colours interpolated. Flat: each
+// triangle lit once, with its face normal, at its first vertex (the provoking vertex, whose flat
+// outputs Vulkan uses). Gouraud: each vertex lit with its own normal, the colour interpolated
+// across the triangle.
 enum class Shading { kUnlit, kFlat, kGouraud };
 
 // A triangle corner with no normal in the file (an OBJ face written without vn).
@@ -75,6 +78,10 @@ struct Model {
   std::vector<glm::dvec3> normals;
   std::vector<std::array<std::uint32_t, 3>> triangle_normals;
   Shading shading = Shading::kUnlit;
+  // Empty, or one 8-bit sRGB-encoded colour per vertex (glTF's COLOR_0): when present, a filled
+  // triangle takes each corner's colour (its base colour, when lit) instead of its own, and
+  // interpolates it as Gouraud colours are (docs/scene-format.md).
+  std::vector<Rgb8> vertex_colours;
   std::string source;  // the OBJ file as the scene wrote it, or empty
 };
 

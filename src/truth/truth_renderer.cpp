@@ -84,9 +84,12 @@ TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const Ex
     const std::vector<glm::dvec4>& positions = clip[d];
     const std::uint64_t first_surface = first_triangle + 1;
     first_triangle += mesh.triangles.size();
+    if (mesh.smooth() && light == nullptr)
+      throw std::invalid_argument("draw " + std::to_string(d) +
+                                  " has vertex colours, but the truth was given no light");
     const std::vector<std::array<glm::dvec3, 3>> colours =
-        mesh.shading != Shading::kUnlit ? light->CornerColours(d) : std::vector<std::array<glm::dvec3, 3>>{};
-    if (mesh.shading != Shading::kUnlit && colours.size() != mesh.triangles.size()) {
+        mesh.smooth() ? light->CornerColours(d) : std::vector<std::array<glm::dvec3, 3>>{};
+    if (mesh.smooth() && colours.size() != mesh.triangles.size()) {
       throw std::invalid_argument("draw " + std::to_string(d) + " is lit, but the truth's light does not light it");
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -138,12 +141,31 @@ ExactLight::ExactLight(const Scene& scene) : scene_(&scene), normals_(scene.mode
   }
 }
 
+namespace {
+
+// An unlit vertex-coloured model's corners: each vertex's colour, k / 255.
+std::vector<std::array<glm::dvec3, 3>> UnlitVertexColours(const Model& model) {
+  const auto at = [&](std::uint32_t v) {
+    return glm::dvec3(model.vertex_colours[v].r, model.vertex_colours[v].g, model.vertex_colours[v].b) / 255.0;
+  };
+  std::vector<std::array<glm::dvec3, 3>> colours(model.triangles.size());
+  for (std::size_t t = 0; t < model.triangles.size(); ++t) {
+    const auto& v = model.triangles[t].v;
+    colours[t] = {at(v[0]), at(v[1]), at(v[2])};
+  }
+  return colours;
+}
+
+}  // namespace
+
 std::vector<std::array<glm::dvec3, 3>> ExactLight::CornerColours(std::size_t instance) const {
   const Scene& scene = *scene_;
   if (instance >= scene.instances.size()) throw std::invalid_argument("no instance " + std::to_string(instance));
   const Model& model = scene.models[scene.instances[instance].model];
   const std::vector<std::array<glm::dvec3, 3>>& normals = normals_[scene.instances[instance].model];
-  if (normals.empty() && !model.triangles.empty()) return {};
+  const bool vertex_colours = !model.vertex_colours.empty() && !scene.wireframe;
+  if (normals.empty() && !model.triangles.empty())
+    return vertex_colours ? UnlitVertexColours(model) : std::vector<std::array<glm::dvec3, 3>>{};
   const glm::dmat4 m = ModelMatrix(scene.instances[instance].transform);
   const std::optional<glm::dmat3> n = NormalMatrix(m);
   if (!n) throw std::invalid_argument("instance " + std::to_string(instance) + " of a lit model has a zero scale");
@@ -151,7 +173,8 @@ std::vector<std::array<glm::dvec3, 3>> ExactLight::CornerColours(std::size_t ins
   for (std::size_t t = 0; t < model.triangles.size(); ++t) {
     const Triangle& tri = model.triangles[t];
     const auto at = [&](std::size_t k) {
-      return TraceLight(*scene.lighting, m, *n, model.vertices[tri.v[k]], normals[t][k], tri.colour).colour;
+      const Rgb8 base = vertex_colours ? model.vertex_colours[tri.v[k]] : tri.colour;
+      return TraceLight(*scene.lighting, m, *n, model.vertices[tri.v[k]], normals[t][k], base).colour;
     };
     if (model.shading == Shading::kFlat) {
       const glm::dvec3 c = at(0);  // lit once, at the provoking vertex

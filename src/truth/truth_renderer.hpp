@@ -25,11 +25,14 @@ ExactClipPositions ExactClipSpace(const Scene& scene);
 
 // The scene's light in double, one instance at a time (so memory stays bounded by one mesh):
 // each lit triangle corner's colour in [0, 1] from the double M_Model, normal matrix, normals
-// and lights (chain/light_trace.hpp), corner 0's for all three of a flat triangle.
+// and lights (chain/light_trace.hpp), corner 0's for all three of a flat triangle. A corner's base
+// colour is its vertex's when the model has vertex colours; an unlit vertex-coloured corner's
+// colour is that base itself, k / 255.
 class ExactLight {
  public:
   explicit ExactLight(const Scene& scene);  // keeps a reference to `scene`
-  // Empty for an instance of an unlit model (or a scene without lighting).
+  // Empty for an instance of an unlit model without vertex colours (or of any model in a
+  // wireframe scene).
   std::vector<std::array<glm::dvec3, 3>> CornerColours(std::size_t instance) const;
 
  private:

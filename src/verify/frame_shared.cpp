@@ -1,5 +1,7 @@
 #include "verify/frame_shared.hpp"
 
+#include <algorithm>
+
 namespace twinraster::verify {
 
 namespace {
@@ -12,7 +14,9 @@ constexpr std::size_t kCornerBudget = std::size_t{32} << 20;
 
 FrameShared::FrameShared(const Scene& scene, const DrawList& list)
     : list_(list), neighbours_(std::make_unique<Once<std::vector<std::array<Neighbour, 3>>>[]>(list.meshes.size())) {
-  if (!list.lighting || list.wireframe) return;
+  // Vertex colours vary across a triangle as light does: their corners come from the light too.
+  const bool smooth = std::any_of(list.meshes.begin(), list.meshes.end(), [](const DrawMesh& m) { return m.smooth(); });
+  if (!smooth || list.wireframe) return;
   light_.emplace(scene);
   std::size_t bytes = 0;
   for (const DrawCall& draw : list.draws)

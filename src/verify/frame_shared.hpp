@@ -22,7 +22,7 @@ class FrameShared {
  public:
   using Corners = std::vector<std::array<glm::dvec3, 3>>;  // per triangle, its corners' colours
 
-  // Lighting only for a filled frame with lighting (a wireframe's lines are unlit).
+  // Lighting only for a filled frame with lighting or vertex colours (a wireframe's lines are unlit).
   FrameShared(const Scene& scene, const DrawList& list);
 
   bool lit() const { return light_.has_value(); }

@@ -96,7 +96,7 @@ class Primitives {
   template <class Visit>
   void VisitDraw(std::size_t d, bool colours, const DrawGeometry& g, Visit&& visit) const {
     const DrawMesh& mesh = list_.meshes[list_.draws[d].mesh];
-    const bool lit = mesh.shading != Shading::kUnlit && shared_.lit();
+    const bool lit = mesh.smooth() && shared_.lit();  // lit or vertex-coloured: corner colours vary
     FrameShared::Corners scratch;
     const FrameShared::Corners& corner = lit && colours ? shared_.CornerColours(d, scratch) : scratch;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -85,3 +85,35 @@ TEST_CASE("ValidateDrawList: lighting must cover every draw and every lit mesh, 
   CHECK_FALSE(edges.lighting.has_value());
   CHECK(edges.meshes[0].shading == Shading::kUnlit);
 }
+
+TEST_CASE("BuildDrawList carries vertex colours to filled meshes only, and ValidateDrawList checks them",
+          "[draw-list][vertex-colours]") {
+  Scene scene = LoadScene(test::SourcePath("scenes/vertex-colours.json"));
+  REQUIRE(scene.models.at(0).vertex_colours.size() == 8);
+  const DrawList filled = BuildDrawList(scene);
+  CHECK(filled.meshes[0].vertex_colours == scene.models[0].vertex_colours);
+  CHECK(filled.meshes[0].smooth());
+  CHECK_FALSE(filled.lighting.has_value());  // unlit: no light buffers for vertex colours alone
+  REQUIRE_NOTHROW(ValidateDrawList(filled));
+  // A wireframe's edges keep the triangle colours (each its first vertex's, as none is written).
+  scene.wireframe = true;
+  const DrawList edges = BuildDrawList(scene);
+  CHECK(edges.meshes[0].vertex_colours.empty());
+  CHECK_FALSE(edges.meshes[0].smooth());
+  CHECK(edges.meshes[0].colours[2] == scene.models[0].vertex_colours[4]);  // triangle 2 is [4, 0, 3]
+
+  const auto message = [](const DrawList& list) {
+    try {
+      ValidateDrawList(list);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  DrawList list = filled;
+  list.meshes[0].vertex_colours.pop_back();
+  CHECK(message(list) == "mesh 0 has 8 vertices but 7 vertex colours");
+  list = filled;
+  list.wireframe = true;
+  CHECK(message(list) == "mesh 0 has vertex colours in a wireframe list: edges take the triangle colours");
+}

@@ -26,6 +26,25 @@ TEST_CASE("explain prints the chain with the chapter's names", "[explain]") {
   REQUIRE(r.err.empty());
 }
 
+TEST_CASE("explain shows a traced vertex's own colour, unlit as interpolated and lit as the base its light scales",
+          "[explain][vertex-colours]") {
+  const test::CliResult unlit = test::RunCli({"explain", test::SourcePath("scenes/vertex-colours.json").string()});
+  INFO(unlit.err);
+  REQUIRE(unlit.exit_code == 0);
+  // Vertex 0 of the cube is white, vertex 1 cyan: instance 0 traces vertex 0 (the first inside).
+  CHECK_THAT(unlit.out, HasSubstring("colour       (255, 255, 255) / 255, the vertex colour, interpolated"));
+  const test::CliResult lit = test::RunCli(
+      {"explain", test::SourcePath("scenes/lit-vertex-colours.json").string(), "--instance", "0", "--vertex", "1"});
+  INFO(lit.err);
+  REQUIRE(lit.exit_code == 0);
+  CHECK_THAT(lit.out, HasSubstring("colour = vertex colour (40, 200, 220) / 255 · min(I, 1)"));
+  // Without vertex colours the triangle's colour is the base, as before.
+  const test::CliResult plain = test::RunCli({"explain", test::SourcePath("scenes/lit-mixed.json").string()});
+  REQUIRE(plain.exit_code == 0);
+  CHECK_THAT(plain.out, HasSubstring("colour = base ("));
+  CHECK(plain.out.find("vertex colour") == std::string::npos);
+}
+
 TEST_CASE(
     "explain --json: canvas equals x·d·Cw/(z·Vw) (orthographic x·Cw/Vw), framebuffer is the canvas moved to Vulkan's "
     "origin",

@@ -41,7 +41,7 @@ bool Unproven128(const std::string& mesa, const std::string& major, const std::s
 
 }  // namespace
 
-// How many of the 44 shipped scenes lavapipe may crash on at 128 bits in one pass: the known bug
+// How many of the 46 shipped scenes lavapipe may crash on at 128 bits in one pass: the known bug
 // (docs/mesa-128bit-crash.md) takes 1 to 6 scenes (6 in a fresh Debian 12 root), not the same ones
 // at every run. A quarter is the limit: more is a new failure, never a pass.
 constexpr int kMaxCrashes = 11;

@@ -393,7 +393,7 @@ TEST_CASE("Scenes without lighting load as before: no lighting, every model unli
     }
     ++unlit;
   }
-  CHECK(unlit == 44 - 8);  // of the 44 shipped scenes, 8 are lit
+  CHECK(unlit == 46 - 9);  // of the 46 shipped scenes, 9 are lit
 }
 
 TEST_CASE("SceneForObj frames the mesh as tinyrenderer does: inside the canvas, front on, lit by a headlight",

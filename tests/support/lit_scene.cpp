@@ -133,4 +133,18 @@ Scene RandomLitScene(std::uint32_t seed) {
   return scene;
 }
 
+Scene RandomVertexColourScene(std::uint32_t seed) {
+  Scene scene = RandomLitScene(seed);
+  Dice dice(seed ^ 0x9e3779b9u);  // apart from the scene's own dice, which made its geometry
+  if (seed % 3 == 0) {
+    scene.lighting.reset();
+    for (Model& model : scene.models) model.shading = Shading::kUnlit;
+  }
+  for (Model& model : scene.models) {
+    model.vertex_colours.clear();
+    for (std::size_t v = 0; v < model.vertices.size(); ++v) model.vertex_colours.push_back(dice.Colour());
+  }
+  return scene;
+}
+
 }  // namespace twinraster::test

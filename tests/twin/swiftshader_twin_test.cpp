@@ -1,7 +1,7 @@
 // The twin with SwiftShader's rules against the installed SwiftShader (Debian's chromium package):
 // the rules are chosen from what the device reports; every shipped scene and mesh, filled and in
-// wireframe, the million cubes, random, lit and adversarial scenes (subpixel ties, slivers, corners
-// behind the eye, NaN w, denormal depths) give 0 differing pixels; and denormals as zero and the
+// wireframe, the million cubes, random, lit, vertex-coloured and adversarial scenes (subpixel ties,
+// slivers, corners behind the eye, NaN w, denormal depths) give 0 differing pixels; and denormals as zero and the
 // rasterizer as a whole are each shown to change pixels, so leaving them out would show.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
@@ -237,7 +237,7 @@ TEST_CASE("SwiftShader: every shipped scene and mesh, filled and in wireframe: G
       ++judged;
     }
   }
-  CHECK(judged == 2 * (44 + 5));  // the 44 scenes test::ShippedScenes() checks for, and 5 meshes
+  CHECK(judged == 2 * (46 + 5));  // the 46 scenes test::ShippedScenes() checks for, and 5 meshes
   RequireNoValidationMessages();
 }
 
@@ -282,6 +282,25 @@ TEST_CASE("SwiftShader: random scenes, filled, in wireframe and lit: GPU image =
   }
   CHECK(judged == int(3 * kScenes));
   CHECK(drawn >= judged * 7 / 10);  // the generators' scenes really draw
+  RequireNoValidationMessages();
+}
+
+TEST_CASE("SwiftShader: random vertex-coloured scenes, unlit, flat and Gouraud: GPU image == twin image",
+          "[twin][swiftshader][vertex-colours][random]") {
+  constexpr std::uint32_t kScenes = 1000;
+  int drawn = 0, judged = 0, unlit = 0;
+  for (std::uint32_t seed = 1; seed <= kScenes; ++seed) {
+    const Scene scene = test::RandomVertexColourScene(seed);
+    unlit += scene.lighting ? 0 : 1;
+    const Pair p = RenderPair(BuildDrawList(scene));
+    INFO("seed " << seed << ": " << Differences(p));
+    CHECK(p.comparison.Equal());
+    drawn += test::CountNotColour(p.cpu, scene.canvas.background) > 0 ? 1 : 0;
+    ++judged;
+  }
+  CHECK(judged == int(kScenes));
+  CHECK(unlit == int(kScenes / 3));  // seeds divisible by 3
+  CHECK(drawn >= judged * 7 / 10);
   RequireNoValidationMessages();
 }
 

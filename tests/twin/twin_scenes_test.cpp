@@ -26,7 +26,7 @@ TEST_CASE("Every shipped scene, filled and in wireframe: GPU image == CPU image,
       ++judged;
     }
   }
-  CHECK(judged == 2 * 44);  // test::ShippedScenes() checks there are 44
+  CHECK(judged == 2 * 46);  // test::ShippedScenes() checks there are 46
   test::RequireNoValidationMessages();
 }
 
