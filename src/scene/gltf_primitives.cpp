@@ -4,6 +4,8 @@
 #include "scene/scene_error.hpp"
 #include "scene/srgb.hpp"
 
+#include <glm/geometric.hpp>
+
 namespace twinraster::gltf {
 
 namespace {
@@ -70,6 +72,19 @@ std::vector<std::array<std::uint32_t, 3>> Assemble(GltfMode mode, const std::vec
   return out;
 }
 
+// Each triangle's normal, cross(v1 - v0, v2 - v0) (outward for glTF's counter-clockwise front
+// faces), at all three of its corners.
+void FaceNormals(Model& model) {
+  model.normals.clear();
+  model.triangle_normals.clear();
+  for (const Triangle& t : model.triangles) {
+    const auto n = static_cast<std::uint32_t>(model.normals.size());
+    const glm::dvec3& a = model.vertices[t.v[0]];
+    model.normals.push_back(glm::cross(model.vertices[t.v[1]] - a, model.vertices[t.v[2]] - a));
+    model.triangle_normals.push_back({n, n, n});
+  }
+}
+
 std::string ModelName(const GltfDocument& doc, std::size_t mesh, std::size_t primitive) {
   const GltfMesh& m = doc.meshes[mesh];
   std::string name = m.name.empty() ? "mesh " + std::to_string(mesh) : m.name;
@@ -104,13 +119,26 @@ std::optional<Model> PrimitiveModel(const GltfDocument& doc, std::size_t mesh, s
   const Rgb8 colour = SrgbColour(material.base_colour);
   model.triangles.reserve(corners.size());
   for (const auto& c : corners) model.triangles.push_back(Triangle{c, colour});
+  if (p.colour) {
+    // The spec's base colour is baseColorFactor times COLOR_0, both linear: multiplied in double,
+    // then encoded once per vertex; the rasterizer interpolates the bytes (docs/scene-format.md).
+    const std::vector<glm::dvec4> colours = ReadColours(doc, Unsparse(doc, *p.colour, where + ".attributes.COLOR_0"));
+    model.vertex_colours.reserve(colours.size());
+    for (const glm::dvec4& c : colours) model.vertex_colours.push_back(SrgbColour(c * material.base_colour));
+  }
   if (p.normal) {
     model.normals = ReadVec3s(doc, Unsparse(doc, *p.normal, where + ".attributes.NORMAL"));
     model.triangle_normals = corners;  // a vertex's normal has the vertex's index
   }
   // Unlit materials keep their colour; the rest take the headlight, with their normals
-  // (Gouraud) or, as the spec asks of a primitive without normals, flat.
+  // (Gouraud) or, as the spec asks of a primitive without normals, flat. Flat with COLOR_0 would
+  // flatten the colours too (a flat output takes the provoking vertex's), so such a primitive is
+  // lit per corner with its face's normal at every corner: one light, interpolated colours.
   model.shading = material.unlit ? Shading::kUnlit : p.normal ? Shading::kGouraud : Shading::kFlat;
+  if (model.shading == Shading::kFlat && !model.vertex_colours.empty()) {
+    FaceNormals(model);
+    model.shading = Shading::kGouraud;
+  }
   return model;
 }
 

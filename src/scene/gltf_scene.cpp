@@ -212,12 +212,21 @@ Model GltfModel(const GltfDocument& doc, const std::string& name, bool lit) {
   out.name = name;
   out.source = doc.file;
   bool all_unlit = true, all_normals = true;
+  const bool any_colours =
+      std::any_of(scene.models.begin(), scene.models.end(), [](const Model& m) { return !m.vertex_colours.empty(); });
   for (const Instance& instance : scene.instances) {
     const Model& model = scene.models[instance.model];
     const glm::dmat4 m = ChainMatrix(*instance.transform.steps);
     const glm::dmat3 n = glm::transpose(glm::inverse(glm::dmat3(m)));
     const auto first = static_cast<std::uint32_t>(out.vertices.size());
     for (const glm::dvec3& v : model.vertices) out.vertices.push_back(glm::dvec3(m * glm::dvec4(v, 1.0)));
+    if (any_colours) {  // every vertex a colour: a primitive without COLOR_0 in its material's
+      const Rgb8 own = model.triangles.empty() ? Rgb8{} : model.triangles.front().colour;
+      if (model.vertex_colours.empty())
+        out.vertex_colours.insert(out.vertex_colours.end(), model.vertices.size(), own);
+      else
+        out.vertex_colours.insert(out.vertex_colours.end(), model.vertex_colours.begin(), model.vertex_colours.end());
+    }
     const auto first_normal = static_cast<std::uint32_t>(out.normals.size());
     for (const glm::dvec3& v : model.normals) out.normals.push_back(n * v);
     for (std::size_t t = 0; t < model.triangles.size(); ++t) {

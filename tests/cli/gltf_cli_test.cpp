@@ -7,6 +7,8 @@
 #include "support/test_support.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,7 +20,54 @@ const std::string kModels = "/usr/share/assimp/models/glTF2/";
 const std::string kCameras = kModels + "cameras/Cameras.gltf";
 const std::string kMorph = kModels + "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf";
 
+// A quad (a fan of two triangles) with a colour per vertex (COLOR_0, floats), in front of a
+// perspective camera; `unlit` adds KHR_materials_unlit, else it is lit flat (no normals).
+std::string ColouredQuad(bool unlit) {
+  const float data[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0,      // positions
+                        1,  0,  0, 0, 1,  0, 0, 0, 1, 1,  1, 0.2f};  // COLOR_0, linear RGB
+  std::string bytes(reinterpret_cast<const char*>(data), sizeof data);
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string base64;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {  // 96 bytes: whole groups of three
+    const auto b = [&](std::size_t k) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + k])); };
+    const std::uint32_t word = b(0) << 16 | b(1) << 8 | b(2);
+    for (const int shift : {18, 12, 6, 0}) base64 += kAlphabet[word >> shift & 63];
+  }
+  return std::string(R"({"asset":{"version":"2.0"},)") + (unlit ? R"("extensionsUsed":["KHR_materials_unlit"],)" : "") +
+         R"("buffers":[{"byteLength":96,"uri":"data:application/octet-stream;base64,)" + base64 + R"("}],
+  "bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":48}],
+  "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},
+               {"bufferView":1,"componentType":5126,"count":4,"type":"VEC3"}],
+  "materials":[{"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]})" +
+         (unlit ? R"(,"extensions":{"KHR_materials_unlit":{}})" : "") + R"(}],
+  "meshes":[{"primitives":[{"attributes":{"POSITION":0,"COLOR_0":1},"material":0,"mode":6}]}],
+  "cameras":[{"type":"perspective","perspective":{"yfov":0.9,"aspectRatio":1.5,"znear":0.1,"zfar":10}}],
+  "nodes":[{"mesh":0,"rotation":[0,0.2,0,0.98]},{"camera":0,"translation":[0.2,0.1,3]}],
+  "scenes":[{"nodes":[0,1]}]})";
+}
+
 }  // namespace
+
+TEST_CASE("A glTF file's COLOR_0 is interpolated across each triangle: lavapipe == twin, and verify passes",
+          "[cli][gltf]") {
+  const test::TempDir dir;
+  for (const bool unlit : {true, false}) {
+    INFO((unlit ? "unlit" : "lit flat"));
+    test::WriteFile(dir / "quad.gltf", ColouredQuad(unlit));
+    const test::CliResult r = test::RunCli(
+        {"render", (dir / "quad.gltf").string(), "--verify", "--size", "240x160", "-o", (dir / "q.png").string()});
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("0 differing pixels") != std::string::npos);
+    CHECK(r.out.find("verify: gpu image passes") != std::string::npos);
+    // The colours vary across the quad: many more than its four corners'.
+    const Image image = ReadPng(dir / "q-cpu.png");
+    std::set<std::uint32_t> colours;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+      colours.insert(image.rgba[i] | image.rgba[i + 1] << 8 | image.rgba[i + 2] << 16);
+    CHECK(colours.size() > (unlit ? 1000u : 4u));
+  }
+}
 
 TEST_CASE("render, explain and verify take a glTF file with the same --camera and --size", "[cli][gltf]") {
   const test::TempDir dir;

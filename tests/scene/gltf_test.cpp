@@ -220,6 +220,29 @@ TEST_CASE("glTF: a primitive without normals is lit flat, an unlit material is u
   CHECK(m.triangles[0].colour == Rgb8{128, 255, 0});
 }
 
+TEST_CASE("glTF: COLOR_0 times baseColorFactor is each vertex's colour, encoded once per vertex") {
+  std::vector<std::uint8_t> bytes = TriangleBytes();
+  const std::size_t colours_at = bytes.size();
+  for (const int c : {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255}) bytes.push_back(static_cast<std::uint8_t>(c));
+  Json doc = TriangleDocument({{{"mesh", 0}}});
+  doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + Base64(bytes)}};
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", colours_at}, {"byteLength", 12}});
+  doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 2;
+  doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1.0, 0.2158605, 1.0}}}}}};
+  doc["meshes"][0]["primitives"][0]["material"] = 0;
+  const Scene scene = SceneOf(doc);
+  const Model& m = scene.models[0];
+  REQUIRE(m.vertex_colours.size() == 3);
+  CHECK(m.vertex_colours[0] == Rgb8{188, 0, 0});
+  CHECK(m.vertex_colours[1] == Rgb8{0, 255, 0});
+  CHECK(m.vertex_colours[2] == Rgb8{0, 0, 128});
+  CHECK(m.triangles[0].colour == Rgb8{188, 255, 128});  // the material's, for a wireframe
+  // A COLOR_0 of signed bytes is not one the spec allows.
+  doc["accessors"][2]["componentType"] = 5120;
+  CHECK_THAT(Refusal(doc), HasSubstring("COLOR_0: accessor 2 is VEC4 of component type 5120 (normalized)"));
+}
+
 TEST_CASE("glTF: linear colours are encoded with sRGB's transfer function and rounded") {
   CHECK(SrgbByte(0.0) == 0);
   CHECK(SrgbByte(1.0) == 255);
