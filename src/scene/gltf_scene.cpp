@@ -87,6 +87,7 @@ class ModelTable {
   std::optional<std::size_t> Model(std::size_t mesh, std::size_t primitive) {
     const auto key = std::make_pair(mesh, primitive);
     if (const auto found = made_.find(key); found != made_.end()) return found->second;
+    Charge(mesh, primitive);
     std::optional<twinraster::Model> model = gltf::PrimitiveModel(doc_, mesh, primitive, scene_.notes);
     std::optional<std::size_t> index;
     if (model) {
@@ -98,8 +99,28 @@ class ModelTable {
   }
 
  private:
+  // Primitives may share accessors, so what the models hold is bounded on its own: elements read
+  // (vertices, normals, colours, indices) up to twice the buffers' bytes plus 2^22, which the
+  // files that share a vertex buffer between materials stay far below, and a small file that
+  // names one large accessor from many primitives does not.
+  void Charge(std::size_t mesh, std::size_t primitive) {
+    const GltfPrimitive& p = doc_.meshes[mesh].primitives[primitive];
+    std::uint64_t elements = doc_.accessors[p.position].count;
+    for (const std::optional<std::size_t>& a : {p.normal, p.colour, p.indices})
+      elements += a ? doc_.accessors[*a].count : 0;
+    std::uint64_t bytes = 0;
+    for (const std::vector<std::uint8_t>& b : doc_.buffers) bytes += b.size();
+    read_ += elements;
+    if (read_ > 2 * bytes + (std::uint64_t{1} << 22)) {
+      throw SceneError(doc_.file, "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]",
+                       "the primitives read " + std::to_string(read_) + " accessor elements from " +
+                           std::to_string(bytes) + " bytes of buffers: out of proportion, refused");
+    }
+  }
+
   const GltfDocument& doc_;
   Scene& scene_;
+  std::uint64_t read_ = 0;
   std::map<std::pair<std::size_t, std::size_t>, std::optional<std::size_t>> made_;
 };
 

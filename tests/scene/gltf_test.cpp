@@ -359,6 +359,17 @@ TEST_CASE("glTF: every range is checked against the real bytes, with arithmetic 
   CHECK_THAT(Refusal(doc), HasSubstring("nodes[0].mesh: expected an integer in 0..0, found 7"));
 }
 
+TEST_CASE("glTF: a small file cannot make the models large: accessors of zeros, and one accessor read by many primitives") {
+  Json doc = TriangleDocument({{{"mesh", 0}}});
+  doc["accessors"].push_back({{"componentType", 5126}, {"count", 1048577}, {"type", "VEC3"}});
+  CHECK_THAT(Refusal(doc), HasSubstring("accessors[2]: an accessor of zeros (no bufferView) with more than 1048576 elements"));
+  doc["accessors"][2]["count"] = 1048576;
+  Json primitives = Json::array();
+  for (int i = 0; i < 8; ++i) primitives.push_back({{"attributes", {{"POSITION", 2}}}});
+  doc["meshes"][0]["primitives"] = primitives;
+  CHECK_THAT(Refusal(doc), HasSubstring("accessor elements from 44 bytes of buffers: out of proportion, refused"));
+}
+
 TEST_CASE("glTF: a URI may be data: or a path inside the model's folder, nothing else") {
   const test::TempDir dir;
   const std::vector<std::uint8_t> bytes = TriangleBytes();
