@@ -64,7 +64,7 @@ TEST_CASE("A glTF file's COLOR_0 is interpolated across each triangle: lavapipe 
     const Image image = ReadPng(dir / "q-cpu.png");
     std::set<std::uint32_t> colours;
     for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-      colours.insert(image.rgba[i] | image.rgba[i + 1] << 8 | image.rgba[i + 2] << 16);
+      colours.insert(static_cast<std::uint32_t>(image.rgba[i] | image.rgba[i + 1] << 8 | image.rgba[i + 2] << 16));
     CHECK(colours.size() > (unlit ? 1000u : 4u));
   }
 }
