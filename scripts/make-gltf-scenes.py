@@ -2,22 +2,24 @@
 """Writes the project's own glTF 2.0 scenes into scenes/gltf/: arm.gltf (a node hierarchy four
 deep, T·R·S nodes with turned quaternions and non-uniform scales, a node written as a matrix, a
 16:9 perspective camera on a turned rig), strips.gltf (an orthographic camera, TRIANGLE_FAN and
-TRIANGLE_STRIP primitives, lit and unlit materials in one mesh) and colonnade.glb (binary: one
-mesh with normals in an interleaved buffer and 8-bit indices, drawn by five nodes, a 3:2
-perspective camera without a far plane, three nodes down a rig). Each of them has every feature
-tests/verify/gltf_coverage_test.cpp turns into a defect: a T·R·S node, a matrix node that is not
-symmetric, a mesh under a parent, a camera whose aspect ratio is not 1. Every vertex is computed
-here from formulas; nothing is copied from anywhere.
+TRIANGLE_STRIP primitives, lit and unlit materials in one mesh, one of them double-sided) and
+colonnade.glb (binary: one mesh with normals in an interleaved buffer and 8-bit indices, drawn by
+five nodes, a 3:2 perspective camera without a far plane, three nodes down a rig). Each of them
+has every feature tests/verify/gltf_coverage_test.cpp turns into a defect: a T·R·S node, a matrix
+node that is not symmetric, a mesh under a parent, a camera whose aspect ratio is not 1. Every
+vertex is computed here from formulas; nothing is copied from anywhere.
 
 Rerun with `python3 scripts/make-gltf-scenes.py` (from any directory; `--out DIR` writes into DIR
 instead, which a CTest test uses to check that the committed files are this script's output). The
 standard library only; the output is deterministic, byte for byte (numbers rounded to 7 decimals
 before they are written), and committed, so this only needs to run again when a scene changes.
 The buffers of the .gltf files are base64 data: URIs; the .glb holds its buffer in its BIN chunk.
-Before writing, the script checks what it wrote: every index is below its vertex count, every
-POSITION accessor's min and max are its values', every quaternion is a unit one, and every
-matrix node's last row is 0 0 0 1 and its 3x3 part not symmetric; then it prints one summary line
-per file."""
+Every triangle is counter-clockwise seen from the side the camera sees (glTF's front face), so an
+engine that culls the back faces of single-sided materials, as glTF asks, draws what twinraster
+(which culls nothing) draws. Before writing, the script checks what it wrote: every index is below
+its vertex count, every POSITION accessor's min and max are its values', every quaternion is a
+unit one, and every matrix node's last row is 0 0 0 1 and its 3x3 part not symmetric; then it
+prints one summary line per file."""
 import argparse
 import base64
 import json
@@ -138,9 +140,11 @@ class Gltf:
         return self._accessor({"bufferView": self._view(data, ELEMENT_ARRAY_BUFFER), "componentType": component,
                                "count": len(values), "type": "SCALAR"})
 
-    def material(self, name, rgb, unlit=False):
+    def material(self, name, rgb, unlit=False, double_sided=False):
         m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [r7(c) for c in rgb] + [1.0],
                                                     "metallicFactor": 0.0}}
+        if double_sided:  # glTF culls back faces otherwise; twinraster draws both sides always
+            m["doubleSided"] = True
         if unlit:
             m["extensions"] = {"KHR_materials_unlit": {}}
             self.doc.setdefault("extensionsUsed", ["KHR_materials_unlit"])
@@ -308,7 +312,8 @@ def strips():
     wave = [[-1 + 2 * k / 11, 0.25 * math.sin(k * 0.9) + side * 0.12, 0.15 * math.cos(k * 0.7)]
             for k in range(12) for side in (-1, 1)]
     ribbon_mesh = g.mesh("ribbon", [{"attributes": {"POSITION": g.vec3(wave)}, "mode": TRIANGLE_STRIP,
-                                     "material": g.material("ribbon", [1.0, 0.75, 0.05], unlit=True)}])
+                                     "material": g.material("ribbon", [1.0, 0.75, 0.05], unlit=True,
+                                                                        double_sided=True)}])
     stage = g.node("stage", t=[0, -0.5, 0], r=quat([0, 1, 0], 20))
     floor = g.node("floor", r=quat_mul(quat([0, 1, 0], 10), quat([1, 0, 0], -90)), s=[3.0, 2.2, 1.0],
                    mesh=floor_mesh)
