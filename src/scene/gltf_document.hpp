@@ -82,6 +82,7 @@ struct GltfMaterial {
   glm::dvec4 base_colour{1, 1, 1, 1};  // pbrMetallicRoughness.baseColorFactor, linear
   bool unlit = false;                  // KHR_materials_unlit
   bool textured = false;               // some texture is named: not drawn
+  bool double_sided = false;           // "doubleSided": engines cull back faces unless it is true
 };
 
 struct GltfCamera {

@@ -154,6 +154,7 @@ void ReadMaterials(const JsonReader& root, const GltfLimits& limits, GltfDocumen
     m.base_colour = ReadBaseColour(r);
     m.unlit = IsUnlit(r);
     m.textured = NamesTexture(r);
+    if (auto sided = r.Find("doubleSided")) m.double_sided = sided->Boolean();
     doc.materials.push_back(m);
   });
 }

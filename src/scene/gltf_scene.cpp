@@ -125,7 +125,7 @@ class ModelTable {
 };
 
 void NoteUndrawn(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& walk, Scene& scene) {
-  std::size_t textured = 0, skinned = 0, morphed = 0;
+  std::size_t textured = 0, skinned = 0, morphed = 0, single_sided = 0;
   for (const gltf::PlacedNode& at : walk) {
     const GltfNode& node = doc.nodes[at.node];
     if (!node.mesh) continue;
@@ -134,11 +134,17 @@ void NoteUndrawn(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& w
       textured += p.textured || material_textured;
       skinned += p.skinned || node.skinned;
       morphed += p.morph_targets;
+      single_sided += !(p.material && doc.materials[*p.material].double_sided);
     }
   }
   if (textured) scene.notes.push_back(std::to_string(textured) + " textured primitive(s): drawn in their base colour");
   if (skinned) scene.notes.push_back(std::to_string(skinned) + " skinned primitive(s): drawn at rest, unskinned");
   if (morphed) scene.notes.push_back(std::to_string(morphed) + " primitive(s) with morph targets: drawn without them");
+  if (single_sided) {
+    scene.notes.push_back(std::to_string(single_sided) +
+                          " single-sided primitive(s): drawn from both sides, as the chapter draws; an engine that "
+                          "culls their back faces may leave holes where one shows (docs/verify.md)");
+  }
   scene.notes.insert(scene.notes.end(), doc.ignored.begin(), doc.ignored.end());
 }
 
