@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <nlohmann/json.hpp>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +23,10 @@ extern char** environ;
 namespace twinraster {
 
 double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
+  return MeasuredProcess(args, expected_exit).ms;
+}
+
+ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_exit) {
   std::vector<char*> argv;
   for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
@@ -35,7 +40,8 @@ double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
   posix_spawn_file_actions_destroy(&files);
   if (failed != 0) throw std::runtime_error("bench: cannot start " + args[0] + ": " + std::strerror(failed));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
   }
   const double ms = clock.Milliseconds();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != expected_exit) {
@@ -43,7 +49,7 @@ double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
     for (const std::string& arg : args) command += (command.empty() ? "" : " ") + arg;
     throw std::runtime_error("bench: `" + command + "` did not exit " + std::to_string(expected_exit));
   }
-  return ms;
+  return {.ms = ms, .max_rss_kib = static_cast<std::uint64_t>(usage.ru_maxrss)};
 }
 
 TemporaryDirectory::TemporaryDirectory() {

@@ -47,6 +47,14 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options);
 // not exit with `expected_exit`.
 double TimedProcess(const std::vector<std::string>& args, int expected_exit = 0);
 
+// TimedProcess's wall time with the process's peak resident memory (getrusage's ru_maxrss of the
+// child, as /usr/bin/time -f %M reports it), in KiB.
+struct ProcessCost {
+  double ms = 0;
+  std::uint64_t max_rss_kib = 0;
+};
+ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_exit = 0);
+
 // A fresh directory under the system's temporary one, removed with this object.
 class TemporaryDirectory {
  public:
