@@ -83,11 +83,20 @@ std::uint64_t MedianBytes(const std::vector<std::uint64_t>& values) {
   return static_cast<std::uint64_t>(Median(d));
 }
 
-// The JSON file's Scene against the glTF file's: counts, then the largest differences.
+// The JSON file's Scene against the glTF file's: counts, then the largest differences. The JSON
+// file names model m "m<m>" (scene_json_writer.hpp); its loader keeps its own order.
 void Compare(const Scene& gltf, const Scene& json, LoaderRow& row) {
   row.same_counts = gltf.models.size() == json.models.size() && gltf.instances.size() == json.instances.size();
+  if (!row.same_counts) return;
+  std::vector<std::size_t> in_json(gltf.models.size(), json.models.size());
+  for (std::size_t m = 0; m < json.models.size(); ++m) {
+    const std::size_t written = std::stoul(json.models[m].name.substr(1));
+    if (written < in_json.size()) in_json[written] = m;
+  }
   for (std::size_t m = 0; row.same_counts && m < gltf.models.size(); ++m) {
-    const Model &a = gltf.models[m], &b = json.models[m];
+    row.same_counts = in_json[m] < json.models.size();
+    if (!row.same_counts) return;
+    const Model &a = gltf.models[m], &b = json.models[in_json[m]];
     row.same_counts = a.vertices.size() == b.vertices.size() && a.triangles.size() == b.triangles.size();
     for (std::size_t v = 0; row.same_counts && v < a.vertices.size(); ++v) {
       for (int k = 0; k < 3; ++k)
@@ -95,6 +104,7 @@ void Compare(const Scene& gltf, const Scene& json, LoaderRow& row) {
     }
   }
   for (std::size_t i = 0; row.same_counts && i < gltf.instances.size(); ++i) {
+    row.same_counts = in_json[gltf.instances[i].model] == json.instances[i].model;
     const glm::dmat4 a = ModelMatrix(gltf.instances[i].transform), b = ModelMatrix(json.instances[i].transform);
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r)
@@ -166,26 +176,31 @@ LoaderBenchResult RunLoaderBench(const LoaderBenchOptions& options) {
 
   if (!options.executable.empty()) {
     const std::string exe = options.executable.string(), out = (work.path() / "out.png").string();
-    std::vector<ProcessCost> floor;
-    std::vector<std::vector<ProcessCost>> render(files.size()), explain(files.size());
+    // The floor, then render and explain of every file: timed in turn, then their peak memory
+    // through /usr/bin/time in turn.
+    std::vector<std::vector<std::string>> commands = {{exe, "--help"}};
+    for (const auto& file : files) {
+      commands.push_back({exe, "render", "-q", file.string(), "--backend", "cpu", "-o", out});
+      commands.push_back({exe, "explain", file.string(), "--json"});
+    }
+    std::vector<std::vector<double>> ms(commands.size()), kib(commands.size());
     for (int run = 0; run < options.runs; ++run) {
-      floor.push_back(MeasuredProcess({exe, "--help"}));
-      for (std::size_t f = 0; f < files.size(); ++f) {
-        render[f].push_back(MeasuredProcess({exe, "render", "-q", files[f].string(), "--backend", "cpu", "-o", out}));
-        explain[f].push_back(MeasuredProcess({exe, "explain", files[f].string(), "--json"}));
+      for (std::size_t c = 0; c < commands.size(); ++c) ms[c].push_back(TimedProcess(commands[c]));
+    }
+    for (int run = 0; run < options.memory_runs; ++run) {
+      for (std::size_t c = 0; c < commands.size(); ++c) {
+        if (const std::optional<std::uint64_t> kib_used = PeakResidentKib(commands[c]))
+          kib[c].push_back(static_cast<double>(*kib_used));
       }
     }
-    const auto median = [](const std::vector<ProcessCost>& costs) {
-      std::vector<double> ms, kib;
-      for (const ProcessCost& c : costs) {
-        ms.push_back(c.ms);
-        kib.push_back(static_cast<double>(c.max_rss_kib));
-      }
-      return ProcessCost{.ms = Median(ms), .max_rss_kib = static_cast<std::uint64_t>(Median(kib))};
+    const auto cost = [&](std::size_t c) {
+      ProcessCost measured{.ms = Median(ms[c]), .max_rss_kib = std::nullopt};
+      if (!kib[c].empty()) measured.max_rss_kib = static_cast<std::uint64_t>(Median(kib[c]));
+      return measured;
     };
-    result.floor = median(floor);
+    result.floor = cost(0);
     for (std::size_t f = 0; f < files.size(); ++f)
-      result.rows[f].processes = LoaderProcesses{.render = median(render[f]), .explain = median(explain[f])};
+      result.rows[f].processes = LoaderProcesses{.render = cost(1 + 2 * f), .explain = cost(2 + 2 * f)};
   }
   return result;
 }

@@ -25,11 +25,18 @@ inline constexpr const char* kDefaultLoaderBenchAsset =
 struct LoaderBenchOptions {
   std::filesystem::path gltf;        // a .glb or .gltf file
   int runs = 15;                     // timed loads of each file, in turn; and whole processes of each
-  int memory_runs = 5;               // forked children per file
+  int memory_runs = 5;               // forked children per file; /usr/bin/time runs per process
   std::filesystem::path executable;  // twinraster itself, for the whole processes; empty: not measured
 };
 
-// Whole processes of one file, medians of runs in turn.
+// A whole process: its wall time, median of `runs` in turn, and its peak resident memory, median of
+// `memory_runs` more (PeakResidentKib: empty without /usr/bin/time).
+struct ProcessCost {
+  double ms = 0;
+  std::optional<std::uint64_t> max_rss_kib;
+};
+
+// Whole processes of one file.
 struct LoaderProcesses {
   ProcessCost render;   // render -q FILE --backend cpu -o OUT.png
   ProcessCost explain;  // explain FILE --json, its output thrown away

@@ -7,7 +7,6 @@
 #include <fcntl.h>
 #include <nlohmann/json.hpp>
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,10 +22,6 @@ extern char** environ;
 namespace twinraster {
 
 double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
-  return MeasuredProcess(args, expected_exit).ms;
-}
-
-ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_exit) {
   std::vector<char*> argv;
   for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
@@ -40,8 +35,7 @@ ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_e
   posix_spawn_file_actions_destroy(&files);
   if (failed != 0) throw std::runtime_error("bench: cannot start " + args[0] + ": " + std::strerror(failed));
   int status = 0;
-  rusage usage{};
-  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   const double ms = clock.Milliseconds();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != expected_exit) {
@@ -49,7 +43,21 @@ ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_e
     for (const std::string& arg : args) command += (command.empty() ? "" : " ") + arg;
     throw std::runtime_error("bench: `" + command + "` did not exit " + std::to_string(expected_exit));
   }
-  return {.ms = ms, .max_rss_kib = static_cast<std::uint64_t>(usage.ru_maxrss)};
+  return ms;
+}
+
+std::optional<std::uint64_t> PeakResidentKib(const std::vector<std::string>& args, int expected_exit) {
+  const std::filesystem::path time = "/usr/bin/time";
+  if (access(time.c_str(), X_OK) != 0) return std::nullopt;
+  const TemporaryDirectory work;
+  const std::filesystem::path report = work.path() / "time.txt";
+  std::vector<std::string> timed = {time.string(), "-f", "%M", "-o", report.string()};
+  timed.insert(timed.end(), args.begin(), args.end());
+  TimedProcess(timed, expected_exit);  // time exits as its command did
+  std::ifstream in(report);
+  std::uint64_t kib = 0;
+  if (!(in >> kib)) throw std::runtime_error("bench: /usr/bin/time wrote no peak memory for " + args[0]);
+  return kib;
 }
 
 TemporaryDirectory::TemporaryDirectory() {

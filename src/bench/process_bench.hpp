@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,13 +48,11 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options);
 // not exit with `expected_exit`.
 double TimedProcess(const std::vector<std::string>& args, int expected_exit = 0);
 
-// TimedProcess's wall time with the process's peak resident memory (getrusage's ru_maxrss of the
-// child, as /usr/bin/time -f %M reports it), in KiB.
-struct ProcessCost {
-  double ms = 0;
-  std::uint64_t max_rss_kib = 0;
-};
-ProcessCost MeasuredProcess(const std::vector<std::string>& args, int expected_exit = 0);
+// The peak resident memory of `args` run once, in KiB, as `/usr/bin/time -f %M` reports it; empty
+// when /usr/bin/time is not installed (Debian's package time). Not from this process's own wait:
+// a child spawned from a large process inherits that process's peak (Linux keeps the larger of
+// the peak before and after exec), so a small process must start it. Throws as TimedProcess.
+std::optional<std::uint64_t> PeakResidentKib(const std::vector<std::string>& args, int expected_exit = 0);
 
 // A fresh directory under the system's temporary one, removed with this object.
 class TemporaryDirectory {

@@ -17,21 +17,27 @@ double Ratio(double value, double reference) { return reference > 0 ? value / re
 
 double Kib(std::uint64_t bytes) { return static_cast<double>(bytes) / 1024; }
 
+std::string KibText(const ProcessCost& cost) { return cost.max_rss_kib ? std::to_string(*cost.max_rss_kib) : "-"; }
+
+nlohmann::ordered_json KibJson(const ProcessCost& cost) {
+  return cost.max_rss_kib ? nlohmann::ordered_json(*cost.max_rss_kib) : nlohmann::ordered_json(nullptr);
+}
+
 void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
-  s << "\nWhole processes, medians of " << result.runs
-    << " run(s) in turn: render -q FILE --backend cpu -o OUT.png; explain FILE --json (its output thrown away); "
-       "peak resident memory as /usr/bin/time -f %M reports it\n";
+  s << "\nWhole processes: wall time, medians of " << result.runs
+    << " run(s) in turn; peak resident memory by /usr/bin/time -f %M, medians of " << result.memory_runs
+    << " run(s) (- without /usr/bin/time): render -q FILE --backend cpu -o OUT.png; explain FILE --json (its "
+       "output thrown away)\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-20s | %10s %12s | %10s %12s\n", "file", "render ms", "max RSS KiB", "explain ms",
                 "max RSS KiB");
   s << line;
-  std::snprintf(line, sizeof line, "%-20s | %10.1f %12llu | %10s %12s\n", "--help (the floor)", result.floor->ms,
-                static_cast<unsigned long long>(result.floor->max_rss_kib), "", "");
+  std::snprintf(line, sizeof line, "%-20s | %10.1f %12s | %10s %12s\n", "--help (the floor)", result.floor->ms,
+                KibText(*result.floor).c_str(), "", "");
   s << line;
   for (const LoaderRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-20s | %10.1f %12llu | %10.1f %12llu\n", r.loader.c_str(),
-                  r.processes->render.ms, static_cast<unsigned long long>(r.processes->render.max_rss_kib),
-                  r.processes->explain.ms, static_cast<unsigned long long>(r.processes->explain.max_rss_kib));
+    std::snprintf(line, sizeof line, "%-20s | %10.1f %12s | %10.1f %12s\n", r.loader.c_str(), r.processes->render.ms,
+                  KibText(r.processes->render).c_str(), r.processes->explain.ms, KibText(r.processes->explain).c_str());
     s << line;
   }
 }
@@ -87,9 +93,9 @@ nlohmann::ordered_json LoaderBenchJson(const LoaderBenchResult& result) {
     nlohmann::ordered_json processes = nullptr;
     if (r.processes) {
       processes = {{"render_ms", r.processes->render.ms},
-                   {"render_max_rss_kib", r.processes->render.max_rss_kib},
+                   {"render_max_rss_kib", KibJson(r.processes->render)},
                    {"explain_ms", r.processes->explain.ms},
-                   {"explain_max_rss_kib", r.processes->explain.max_rss_kib}};
+                   {"explain_max_rss_kib", KibJson(r.processes->explain)}};
     }
     rows.push_back({{"loader", r.loader},
                     {"bytes", r.bytes},
@@ -109,7 +115,7 @@ nlohmann::ordered_json LoaderBenchJson(const LoaderBenchResult& result) {
                     {"processes", processes}});
   }
   nlohmann::ordered_json floor = nullptr;
-  if (result.floor) floor = {{"help_ms", result.floor->ms}, {"help_max_rss_kib", result.floor->max_rss_kib}};
+  if (result.floor) floor = {{"help_ms", result.floor->ms}, {"help_max_rss_kib", KibJson(*result.floor)}};
   return {{"format", kLoaderBenchJsonFormat},
           {"machine", result.machine},
           {"runs", result.runs},
