@@ -2,10 +2,11 @@
 """Writes the README's "What a scene costs" table from a bench run's JSON, so that every figure in
 it is one that run measured:
 
-  scripts/readme-costs.py [--check] [SCALE.json VERIFY.json README.md]
+  scripts/readme-costs.py [--check] [SCALE.json VERIFY.json [LOADERS.json] README.md]
 
-The defaults are docs/generated/bench/scale.json and verify.json (what `bench --scale --out
-docs/generated/bench` and `bench --verify --out docs/generated/bench` write) and README.md. The
+The defaults are docs/generated/bench/scale.json, verify.json and loaders.json (what `bench --scale
+--out docs/generated/bench`, `bench --verify --out ...` and `bench --loaders --out ...` write) and
+README.md; without LOADERS.json the table has no loaders' row. The
 table is the lines between the two marker comments. --check rewrites nothing and exits 1 when the
 README's table is not what the JSON says (a CTest test runs it).
 """
@@ -23,7 +24,17 @@ def scene_name(row):
     return os.path.basename(row["scene"])
 
 
-def table(scale, verify):
+def loaders_row(loaders):
+    rows = {r["loader"]: r for r in loaders["rows"]}
+    gltf, json_row = loaders["rows"][0], rows["json-exact"]
+    return ("`%s` (%s triangles), file to Scene, against the same scene as JSON: time and peak memory per triangle"
+            % (os.path.basename(loaders["asset"]), format(loaders["triangles"], ",")),
+            "%.1f ns, %.0f B against %.1f ns, %.0f B (%.1fx, %.1fx)"
+            % (gltf["load_ns_per_triangle"], gltf["peak_rss_bytes_per_triangle"], json_row["load_ns_per_triangle"],
+               json_row["peak_rss_bytes_per_triangle"], json_row["load_ratio"], json_row["peak_rss_ratio"]))
+
+
+def table(scale, verify, loaders=None):
     p = scale["processes"]
     if p is None:
         raise SystemExit("readme-costs.py: the scale run measured no fixed costs (no chapter scene)")
@@ -57,6 +68,8 @@ def table(scale, verify):
     rows.append(("the verifier against the twin's draw, in one process: %s"
                  % " / ".join(label for label, name in scenes if name in in_process),
                  " / ".join("%.2fx" % in_process[name]["ratio"] for _, name in scenes if name in in_process)))
+    if loaders is not None:
+        rows.append(loaders_row(loaders))
     lines = ["| what | measured |", "|---|---|"]
     lines += ["| %s | %s |" % row for row in rows]
     return lines
@@ -68,19 +81,25 @@ def main():
     parser.add_argument("files", nargs="*")
     args = parser.parse_args()
     files = args.files or [os.path.join(ROOT, "docs/generated/bench/scale.json"),
-                           os.path.join(ROOT, "docs/generated/bench/verify.json"), os.path.join(ROOT, "README.md")]
-    if len(files) != 3:
-        parser.error("give SCALE.json VERIFY.json README.md, or none")
+                           os.path.join(ROOT, "docs/generated/bench/verify.json"),
+                           os.path.join(ROOT, "docs/generated/bench/loaders.json"), os.path.join(ROOT, "README.md")]
+    if len(files) not in (3, 4):
+        parser.error("give SCALE.json VERIFY.json [LOADERS.json] README.md, or none")
     with open(files[0]) as f:
         scale = json.load(f)
     with open(files[1]) as f:
         verify = json.load(f)
+    loaders = None
+    if len(files) == 4:
+        with open(files[2]) as f:
+            loaders = json.load(f)
+    files = files[:2] + files[-1:]
     with open(files[2]) as f:
         readme = f.read().split("\n")
     if BEGIN not in readme or END not in readme:
         raise SystemExit("readme-costs.py: %s has no table markers" % files[2])
     begin, end = readme.index(BEGIN), readme.index(END)
-    wanted = readme[:begin + 1] + table(scale, verify) + readme[end:]
+    wanted = readme[:begin + 1] + table(scale, verify, loaders) + readme[end:]
     if args.check:
         if wanted != readme:
             print("readme-costs.py: %s's cost table is not what %s and %s say; run scripts/readme-costs.py"

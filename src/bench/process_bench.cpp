@@ -46,6 +46,20 @@ double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
   return ms;
 }
 
+std::optional<std::uint64_t> PeakResidentKib(const std::vector<std::string>& args, int expected_exit) {
+  const std::filesystem::path time = "/usr/bin/time";
+  if (access(time.c_str(), X_OK) != 0) return std::nullopt;
+  const TemporaryDirectory work;
+  const std::filesystem::path report = work.path() / "time.txt";
+  std::vector<std::string> timed = {time.string(), "-f", "%M", "-o", report.string()};
+  timed.insert(timed.end(), args.begin(), args.end());
+  TimedProcess(timed, expected_exit);  // time exits as its command did
+  std::ifstream in(report);
+  std::uint64_t kib = 0;
+  if (!(in >> kib)) throw std::runtime_error("bench: /usr/bin/time wrote no peak memory for " + args[0]);
+  return kib;
+}
+
 TemporaryDirectory::TemporaryDirectory() {
   std::string pattern = (std::filesystem::temp_directory_path() / "twinraster-bench-XXXXXX").string();
   if (!mkdtemp(pattern.data())) throw std::runtime_error("bench: cannot make a temporary directory");

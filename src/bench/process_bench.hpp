@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,12 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options);
 // milliseconds, from start to exit. Throws std::runtime_error when it cannot start, or when it does
 // not exit with `expected_exit`.
 double TimedProcess(const std::vector<std::string>& args, int expected_exit = 0);
+
+// The peak resident memory of `args` run once, in KiB, as `/usr/bin/time -f %M` reports it; empty
+// when /usr/bin/time is not installed (Debian's package time). Not from this process's own wait:
+// a child spawned from a large process inherits that process's peak (Linux keeps the larger of
+// the peak before and after exec), so a small process must start it. Throws as TimedProcess.
+std::optional<std::uint64_t> PeakResidentKib(const std::vector<std::string>& args, int expected_exit = 0);
 
 // A fresh directory under the system's temporary one, removed with this object.
 class TemporaryDirectory {

@@ -1,8 +1,10 @@
 // `twinraster bench`: runs the suite, prints the table and summary, and with --out writes
 // bench.csv, bench.svg, bench.html, bench.json and bench.txt (all staged, so all or none are
-// replaced); --html and --svg write the page or the plot anywhere.
+// replaced); --html and --svg write the page or the plot anywhere. --scale, --verify and --loaders
+// run the other benches instead.
 #include "base/usage_error.hpp"
 #include "bench/bench_suite.hpp"
+#include "bench/loader_bench.hpp"
 #include "bench/scale_bench.hpp"
 #include "bench/verify_bench.hpp"
 #include "cli/commands.hpp"
@@ -35,7 +37,9 @@ struct BenchArguments {
   bool quiet = false;
   bool scale = false;
   bool verify = false;
-  std::optional<std::string> html, svg;  // the page, the plot
+  bool loaders = false;
+  std::string gltf = kDefaultLoaderBenchAsset;  // --loaders' asset
+  std::optional<std::string> html, svg;         // the page, the plot
   std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
   std::size_t batch_scenes = 1000;  // --scale's batch of small scenes
 };
@@ -122,6 +126,26 @@ int BenchVerify(const BenchArguments& a) {
   return kExitOk;
 }
 
+// bench --loaders: a glTF asset against the same scene as JSON, file to Scene.
+int BenchLoaders(const BenchArguments& a) {
+  if (!std::filesystem::is_regular_file(a.gltf)) {
+    throw UsageError(
+        "--gltf " + a.gltf + ": no such file" +
+        (a.gltf == kDefaultLoaderBenchAsset ? " (Debian's assimp-testmodels: scripts/setup.sh --tests)" : ""));
+  }
+  Progress progress = Progress::OnStandardError(a.quiet);
+  progress.Status("loaders bench: " + a.gltf + ", " + std::to_string(a.runs) + " run(s)...");
+  const LoaderBenchResult result = RunLoaderBench({.gltf = a.gltf,
+                                                   .runs = a.runs,
+                                                   .memory_runs = std::min(a.runs, 5),
+                                                   .executable = std::filesystem::read_symlink("/proc/self/exe")});
+  progress.Clear();
+  const std::string table = report::LoaderBenchTable(result), json = report::LoaderBenchJson(result).dump(2) + "\n";
+  WriteTogether(a, {{"loaders.json", json}, {"loaders.txt", table}}, "", "");
+  std::cout << (a.json ? json : table);
+  return kExitOk;
+}
+
 int Bench(const BenchArguments& a) {
   if (a.out) MakeDirectory(*a.out);
   // Checked before the minutes of measuring, not after.
@@ -132,10 +156,14 @@ int Bench(const BenchArguments& a) {
       throw UsageError(std::string(flag) + " " + *file + ": no directory " + parent.string());
     }
   }
-  if (a.verify && (a.html || a.svg))
-    throw UsageError("--html and --svg plot the suite or --scale; bench --verify prints a table");
+  if ((a.verify || a.loaders) && (a.html || a.svg))
+    throw UsageError(std::string("--html and --svg plot the suite or --scale; bench ") +
+                     (a.verify ? "--verify" : "--loaders") + " prints a table");
+  if (int(a.scale) + int(a.verify) + int(a.loaders) > 1)
+    throw UsageError("--scale, --verify and --loaders are three benches: one at a time");
   if (a.scale) return BenchScale(a);
   if (a.verify) return BenchVerify(a);
+  if (a.loaders) return BenchLoaders(a);
   BenchOptions options;
   options.runs = a.runs;
   options.only = a.only;
@@ -212,6 +240,15 @@ CommandRun AddBenchCommand(CLI::App& app) {
                     "of that image, on the chapter's scene, lit-gouraud and the million cubes, in\n"
                     "process and as whole processes (render, then verify of an image that passes and\n"
                     "of one that fails) (verify.json/.txt with --out; JSON twinraster.bench-verify/2)");
+  command->add_flag("--loaders", a->loaders,
+                    "instead of the suite: a glTF asset (--gltf) against the same scene written as a JSON\n"
+                    "scene file: load time and memory per triangle, in process and as whole processes\n"
+                    "(loaders.json/.txt with --out; JSON twinraster.bench-loaders/1)");
+  command
+      ->add_option("--gltf", a->gltf,
+                   std::string("with --loaders: the .glb or .gltf file (default: assimp-testmodels'\n") +
+                       kDefaultLoaderBenchAsset + ")")
+      ->type_name("FILE");
   command->add_option("--counts", a->counts, "with --scale: the instance counts (default: 1000,10000,100000,1000000)")
       ->type_name("N,N")
       ->delimiter(',');

@@ -1,8 +1,9 @@
-// The three benches' results as text tables, CSV and JSON, and the suite's progress line (their
+// The benches' results as text tables, CSV and JSON, and the suite's progress line (their
 // plots are report/bench_pages.hpp). They format the results; nothing here measures anything.
 #pragma once
 
 #include "bench/bench_suite.hpp"
+#include "bench/loader_bench.hpp"
 #include "bench/scale_bench.hpp"
 #include "bench/verify_bench.hpp"
 
@@ -37,5 +38,10 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result);
 // bench --verify (verify_bench_tables.cpp).
 std::string VerifyBenchTable(const VerifyBenchResult& result);
 nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result);
+
+// bench --loaders (loader_bench_tables.cpp).
+inline constexpr const char* kLoaderBenchJsonFormat = "twinraster.bench-loaders/1";
+std::string LoaderBenchTable(const LoaderBenchResult& result);
+nlohmann::ordered_json LoaderBenchJson(const LoaderBenchResult& result);
 
 }  // namespace twinraster::report

@@ -39,6 +39,21 @@ W_ZERO_SCENE = {
 }
 
 
+def tiny_gltf():
+    """A .gltf of one triangle in a data: URI, placed by two nodes: bench --loaders' input."""
+    data = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    return {
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "nodes": [{"mesh": 0, "rotation": [0, 0.6, 0, 0.8]}, {"mesh": 0, "translation": [2, 0, 0], "scale": [1, 2, 1]}],
+        "scenes": [{"nodes": [0, 1]}],
+    }
+
+
 def objects(value, path="$"):
     """Every object in `value` with its path; of each array, only the first element."""
     if isinstance(value, dict):
@@ -206,6 +221,11 @@ def main():
             ("bench --verify, the chapter's scene", "bench-verify",
              ["bench", "--verify", "--only", "cgfs-transforms", "--runs", "1", "--scenes", scenes, "--json", "-q"], None, 0,
              lambda d: len(d["rows"]) == 1 and d["rows"][0]["violations"] == 0 and d["rows"][0]["triangles"] == 24),
+            ("bench --loaders, a tiny .gltf", "bench-loaders",
+             ["bench", "--loaders", "--gltf", out("tiny.gltf"), "--runs", "1", "--json", "-q"], None, 0,
+             lambda d: [r["loader"] for r in d["rows"]] == ["gltf", "json-exact", "json-float"]
+             and d["instances"] == 2 and d["triangles"] == 1 and all(r["same_counts"] for r in d["rows"])
+             and all(r["processes"]["render_ms"] > 0 for r in d["rows"]) and d["process_floor"]["help_ms"] > 0),
             ("bench, depth scenes, two methods", "bench",
              ["bench", "--runs", "1", "--only", "depth-ratio-1e-1", "--methods", "compose-f32,cpu-twin", "--scenes",
               scenes, "--json", "-q"], None, 0,
@@ -221,6 +241,8 @@ def main():
             ["render", os.path.join(scenes, "cgfs-scene.json"), "--backend", "cpu", "-o", out("other.png")],
             ["render", "-", "--backend", "cpu", "-o", out("small.png")],
         ]
+        with open(out("tiny.gltf"), "w") as f:
+            json.dump(tiny_gltf(), f)
         for i, command in enumerate(setup):
             subprocess.run([args.exe] + command, check=True, capture_output=True,
                            input=json.dumps(W_ZERO_SCENE).encode() if i == 1 else None)
