@@ -20,6 +20,7 @@ packages=(
   libtinyobjloader-dev           # OBJ meshes a scene names (or render mesh.obj)
   libcli11-dev                   # the command line
   libstb-dev                     # bench: stb_image_write, a PNG encoder to compare against
+  time                           # bench --loaders: /usr/bin/time, the peak memory of whole processes
 )
 test_packages=(
   vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
