@@ -126,8 +126,8 @@ void PutModel(JsonText& j, const Model& model, JsonDigits digits, bool lit) {
   for (std::size_t i = 0; i < model.triangles.size(); ++i) {
     const Triangle& t = model.triangles[i];
     j.Put(i ? ",\n      [" : "\n      [");
-    for (int k = 0; k < 3; ++k) {
-      j.Integer(t.v[k]);
+    for (const std::uint32_t v : t.v) {
+      j.Integer(v);
       j.Put(", ");
     }
     j.Colour(t.colour);

@@ -9,6 +9,7 @@
 #include "scene/obj_scene.hpp"
 #include "scene/rotation.hpp"
 #include "support/catch.hpp"
+#include "support/gltf_bytes.hpp"
 #include "support/test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -25,19 +26,14 @@ using Json = nlohmann::json;
 
 namespace {
 
-template <class T>
-void Append(std::vector<std::uint8_t>& bytes, T value) {
-  std::uint8_t raw[sizeof(T)];
-  std::memcpy(raw, &value, sizeof(T));
-  bytes.insert(bytes.end(), raw, raw + sizeof(T));
-}
+using test::AppendBytes;
 
 // A .glb of one mesh, a unit square (two triangles), placed by two nodes: a child under a root
 // with translation, rotation and a non-uniform scale, and a node with its own matrix.
 std::vector<std::uint8_t> TinyGlb() {
   std::vector<std::uint8_t> bin;
-  for (const float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) Append(bin, f);
-  for (const int i : {0, 1, 2, 0, 2, 3}) Append(bin, static_cast<std::uint16_t>(i));
+  for (const float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) AppendBytes(bin, f);
+  for (const int i : {0, 1, 2, 0, 2, 3}) AppendBytes(bin, static_cast<std::uint16_t>(i));
   const double half = std::sqrt(0.5);
   const Json doc = {
       {"asset", {{"version", "2.0"}}},
@@ -56,19 +52,7 @@ std::vector<std::uint8_t> TinyGlb() {
         {{"mesh", 0}, {"matrix", {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 4, 0, 0, 1}}}}},
       {"scenes", {{{"nodes", {0, 2}}}}},
   };
-  std::string json = doc.dump();
-  while (json.size() % 4) json += ' ';
-  std::vector<std::uint8_t> glb;
-  Append(glb, std::uint32_t{0x46546C67});
-  Append(glb, std::uint32_t{2});
-  Append(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-  Append(glb, static_cast<std::uint32_t>(json.size()));
-  Append(glb, std::uint32_t{0x4E4F534A});
-  glb.insert(glb.end(), json.begin(), json.end());
-  Append(glb, static_cast<std::uint32_t>(bin.size()));
-  Append(glb, std::uint32_t{0x004E4942});
-  glb.insert(glb.end(), bin.begin(), bin.end());
-  return glb;
+  return test::Glb(doc.dump(), bin);
 }
 
 std::filesystem::path WriteTinyGlb(const test::TempDir& dir) {

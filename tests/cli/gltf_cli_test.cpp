@@ -4,6 +4,7 @@
 #include "image/image.hpp"
 #include "image/png_file.hpp"
 #include "support/catch.hpp"
+#include "support/gltf_bytes.hpp"
 #include "support/test_support.hpp"
 
 #include <algorithm>
@@ -25,14 +26,8 @@ const std::string kMorph = kModels + "glTF-Sample-Models/AnimatedMorphCube-glTF/
 std::string ColouredQuad(bool unlit) {
   const float data[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0,      // positions
                         1,  0,  0, 0, 1,  0, 0, 0, 1, 1,  1, 0.2f};  // COLOR_0, linear RGB
-  std::string bytes(reinterpret_cast<const char*>(data), sizeof data);
-  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string base64;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {  // 96 bytes: whole groups of three
-    const auto b = [&](std::size_t k) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + k])); };
-    const std::uint32_t word = b(0) << 16 | b(1) << 8 | b(2);
-    for (const int shift : {18, 12, 6, 0}) base64 += kAlphabet[word >> shift & 63];
-  }
+  const auto* raw = reinterpret_cast<const std::uint8_t*>(data);
+  const std::string base64 = test::Base64(std::vector<std::uint8_t>(raw, raw + sizeof data));
   return std::string(R"({"asset":{"version":"2.0"},)") + (unlit ? R"("extensionsUsed":["KHR_materials_unlit"],)" : "") +
          R"("buffers":[{"byteLength":96,"uri":"data:application/octet-stream;base64,)" + base64 + R"("}],
   "bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":48}],

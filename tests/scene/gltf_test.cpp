@@ -8,6 +8,7 @@
 #include "scene/scene_error.hpp"
 #include "scene/srgb.hpp"
 #include "support/catch.hpp"
+#include "support/gltf_bytes.hpp"
 #include "support/test_support.hpp"
 
 #include <glm/geometric.hpp>
@@ -26,34 +27,15 @@ using Json = nlohmann::json;
 
 namespace {
 
-std::string Base64(const std::vector<std::uint8_t>& bytes) {
-  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t b0 = bytes[i], b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0,
-                        b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
-    const std::uint32_t word = b0 << 16 | b1 << 8 | b2;
-    out += kAlphabet[word >> 18 & 63];
-    out += kAlphabet[word >> 12 & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[word >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[word & 63] : '=';
-  }
-  return out;
-}
-
-template <class T>
-void Append(std::vector<std::uint8_t>& bytes, T value) {
-  std::uint8_t raw[sizeof(T)];
-  std::memcpy(raw, &value, sizeof(T));
-  bytes.insert(bytes.end(), raw, raw + sizeof(T));
-}
+using test::AppendBytes;
+using test::Base64;
 
 // One buffer: a unit right triangle's three float positions (bytes 0-35), then 16-bit indices
 // 0 1 2 (bytes 36-41, padded to 44).
 std::vector<std::uint8_t> TriangleBytes() {
   std::vector<std::uint8_t> b;
-  for (const float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) Append(b, f);
-  for (const int i : {0, 1, 2, 0}) Append(b, static_cast<std::uint16_t>(i));
+  for (const float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) AppendBytes(b, f);
+  for (const int i : {0, 1, 2, 0}) AppendBytes(b, static_cast<std::uint16_t>(i));
   return b;
 }
 
@@ -145,7 +127,7 @@ TEST_CASE("glTF: a node matrix is read column-major") {
 TEST_CASE("glTF: strips and fans keep the spec's vertex order, so the first corner is the provoking vertex") {
   std::vector<std::uint8_t> bytes;
   for (int i = 0; i < 5; ++i) {
-    for (const float f : {static_cast<float>(i), static_cast<float>(i % 2), 0.f}) Append(bytes, f);
+    for (const float f : {static_cast<float>(i), static_cast<float>(i % 2), 0.f}) AppendBytes(bytes, f);
   }
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", "data:application/gltf-buffer;base64," + Base64(bytes)}};
@@ -172,10 +154,10 @@ TEST_CASE("glTF: 8-, 16- and 32-bit indices, and interleaved positions and norma
   std::vector<std::uint8_t> bytes;
   // Three vertices, each a position then a normal (stride 24).
   for (int v = 0; v < 3; ++v) {
-    for (const float f : {v == 1 ? 1.f : 0.f, v == 2 ? 1.f : 0.f, 0.f, 0.f, 0.f, 1.f}) Append(bytes, f);
+    for (const float f : {v == 1 ? 1.f : 0.f, v == 2 ? 1.f : 0.f, 0.f, 0.f, 0.f, 1.f}) AppendBytes(bytes, f);
   }
   const std::size_t indices_at = bytes.size();
-  for (const std::uint32_t i : {2u, 1u, 0u}) Append(bytes, i);
+  for (const std::uint32_t i : {2u, 1u, 0u}) AppendBytes(bytes, i);
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + Base64(bytes)}};
   doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", indices_at}, {"byteStride", 24}},
@@ -198,9 +180,9 @@ TEST_CASE("glTF: 8-, 16- and 32-bit indices, and interleaved positions and norma
     more.resize(indices_at);
     for (const std::uint32_t i : {2u, 1u, 0u}) {
       if (component == 5121)
-        Append(more, static_cast<std::uint8_t>(i));
+        AppendBytes(more, static_cast<std::uint8_t>(i));
       else
-        Append(more, static_cast<std::uint16_t>(i));
+        AppendBytes(more, static_cast<std::uint16_t>(i));
     }
     doc["buffers"][0] = {{"byteLength", more.size()}, {"uri", "data:application/octet-stream;base64," + Base64(more)}};
     doc["bufferViews"][1]["byteLength"] = more.size() - indices_at;
@@ -227,7 +209,8 @@ TEST_CASE("glTF: COLOR_0 times baseColorFactor is each vertex's colour, encoded 
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + Base64(bytes)}};
   doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", colours_at}, {"byteLength", 12}});
-  doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  doc["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
   doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 2;
   doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1.0, 0.2158605, 1.0}}}}}};
   doc["meshes"][0]["primitives"][0]["material"] = 0;
@@ -359,10 +342,12 @@ TEST_CASE("glTF: every range is checked against the real bytes, with arithmetic 
   CHECK_THAT(Refusal(doc), HasSubstring("nodes[0].mesh: expected an integer in 0..0, found 7"));
 }
 
-TEST_CASE("glTF: a small file cannot make the models large: accessors of zeros, and one accessor read by many primitives") {
+TEST_CASE(
+    "glTF: a small file cannot make the models large: accessors of zeros, and one accessor read by many primitives") {
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["accessors"].push_back({{"componentType", 5126}, {"count", 1048577}, {"type", "VEC3"}});
-  CHECK_THAT(Refusal(doc), HasSubstring("accessors[2]: an accessor of zeros (no bufferView) with more than 1048576 elements"));
+  CHECK_THAT(Refusal(doc),
+             HasSubstring("accessors[2]: an accessor of zeros (no bufferView) with more than 1048576 elements"));
   doc["accessors"][2]["count"] = 1048576;
   Json primitives = Json::array();
   for (int i = 0; i < 8; ++i) primitives.push_back({{"attributes", {{"POSITION", 2}}}});
@@ -405,18 +390,8 @@ TEST_CASE("glTF: .glb containers, glTF 1.0 and unknown required extensions") {
   const std::vector<std::uint8_t> bin = TriangleBytes();
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["buffers"][0].erase("uri");
-  std::string json = doc.dump();
-  while (json.size() % 4) json += ' ';
-  std::vector<std::uint8_t> glb;
-  Append(glb, 0x46546C67u);
-  Append(glb, 2u);
-  Append(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-  Append(glb, static_cast<std::uint32_t>(json.size()));
-  Append(glb, 0x4E4F534Au);
-  glb.insert(glb.end(), json.begin(), json.end());
-  Append(glb, static_cast<std::uint32_t>(bin.size()));
-  Append(glb, 0x004E4942u);
-  glb.insert(glb.end(), bin.begin(), bin.end());
+  const std::string json = doc.dump();
+  const std::vector<std::uint8_t> glb = test::Glb(json, bin);
   CHECK(GltfScene(ParseGltf(glb, "t.glb", {}), {}, "t").models[0].vertices[1] == glm::dvec3(1, 0, 0));
 
   std::vector<std::uint8_t> cut(glb.begin(), glb.end() - 4);
@@ -427,8 +402,9 @@ TEST_CASE("glTF: .glb containers, glTF 1.0 and unknown required extensions") {
     CHECK(e.where() == "byte 8");
   }
   std::vector<std::uint8_t> long_chunk = glb;
-  long_chunk[12 + 8 + json.size()] = 0xff;  // the BIN chunk's length, far past the end
-  long_chunk[12 + 8 + json.size() + 3] = 0x7f;
+  const std::size_t bin_header = 12 + 8 + (json.size() + 3) / 4 * 4;  // after the padded JSON chunk
+  long_chunk[bin_header] = 0xff;                                      // the BIN chunk's length, far past the end
+  long_chunk[bin_header + 3] = 0x7f;
   try {
     ParseGltf(long_chunk, "t.glb", {});
     FAIL("a chunk past the end was read");

@@ -76,15 +76,6 @@ Scene Load(const std::string& file) {
   return LoadSceneOrObj(kModels / file, SceneChoice{std::nullopt, std::nullopt, CanvasSize{320, 240}});
 }
 
-GpuRenderer& SwiftShader() {
-  static std::unique_ptr<GpuRenderer> gpu;
-  if (!gpu) {
-    gpu = std::make_unique<GpuRenderer>(GpuOptions{.device = "SwiftShader", .validation = true});
-    test::AtEndOfRun([] { gpu.reset(); });
-  }
-  return *gpu;
-}
-
 }  // namespace
 
 TEST_CASE("Every glTF file of assimp-testmodels is in docs/gltf-assets.md, refused with its row's reason or read") {
@@ -123,7 +114,8 @@ TEST_CASE("Every glTF file of assimp-testmodels is in docs/gltf-assets.md, refus
 TEST_CASE(
     "Every assimp-testmodels glTF file that renders: lavapipe == twin, SwiftShader == twin, and verify passes it") {
   const std::map<std::string, AssetRow> table = AssetTable();
-  const cpu::TwinRules swiftshader = cpu::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), cpu::DetectCpuPath());
+  const cpu::TwinRules swiftshader =
+      cpu::ChooseTwinRules(run::FactsOf(test::SharedSwiftShader().Device()), cpu::DetectCpuPath());
   REQUIRE(swiftshader.exact);
   std::size_t judged = 0;
   for (const std::string& file : ShippedFiles()) {
@@ -138,10 +130,10 @@ TEST_CASE(
 
     CpuOptions options;
     options.rules = swiftshader.rules;
-    const Comparison swift = CompareImages(SwiftShader().Render(list), RenderOnCpu(list, options));
+    const Comparison swift = CompareImages(test::SharedSwiftShader().Render(list), RenderOnCpu(list, options));
     INFO("SwiftShader: " << swift.differing_pixels << " differing pixels");
     REQUIRE(swift.Equal());
-    REQUIRE(SwiftShader().ValidationMessages().empty());
+    REQUIRE(test::SharedSwiftShader().ValidationMessages().empty());
 
     // lavapipe's rules: 8 sub-pixel bits, strict lines.
     const verify::Verification judged_image =

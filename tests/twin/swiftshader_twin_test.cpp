@@ -16,6 +16,7 @@
 #include "support/image_counts.hpp"
 #include "support/lit_scene.hpp"
 #include "support/test_support.hpp"
+#include "twin_support.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -33,15 +34,7 @@ using namespace twinraster;
 
 namespace {
 
-// With the validation layer; destroyed when the run ends, as the shared lavapipe renderers are.
-GpuRenderer& SwiftShader() {
-  static std::unique_ptr<GpuRenderer> gpu;
-  if (!gpu) {
-    gpu = std::make_unique<GpuRenderer>(GpuOptions{.device = "SwiftShader", .validation = true});
-    test::AtEndOfRun([] { gpu.reset(); });
-  }
-  return *gpu;
-}
+GpuRenderer& SwiftShader() { return test::SharedSwiftShader(); }
 
 cpu::TwinRules SwiftShaderRules() {
   return cpu::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), cpu::DetectCpuPath());

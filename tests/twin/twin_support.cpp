@@ -30,6 +30,15 @@ GpuRenderer& SharedGpu(gpu::Instancing instancing) {
   return *renderer;
 }
 
+GpuRenderer& SharedSwiftShader() {
+  static std::unique_ptr<GpuRenderer> gpu;
+  if (!gpu) {
+    gpu = std::make_unique<GpuRenderer>(GpuOptions{.device = "SwiftShader", .validation = true});
+    AtEndOfRun([] { gpu.reset(); });
+  }
+  return *gpu;
+}
+
 const cpu::TwinRules& SharedTwinRules() {
   static const cpu::TwinRules rules = [] {
     const DeviceIdentity& device = SharedGpu().Device();

@@ -27,6 +27,10 @@ struct TwinResult {
   std::string Describe() const;  // size, differing pixels, and the first few that differ
 };
 
+// Chromium's SwiftShader (Debian's chromium package), created on first use with the validation
+// layer and released when the run ends, as the shared lavapipe renderers are.
+GpuRenderer& SharedSwiftShader();
+
 // The rules the twin follows against SharedGpu's device on this machine's CPU path, chosen as
 // render chooses them (cpu/twin_rules.hpp).
 const cpu::TwinRules& SharedTwinRules();
