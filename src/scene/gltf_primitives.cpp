@@ -27,7 +27,8 @@ const char* ModeName(GltfMode mode) {
   return "?";
 }
 
-const GltfAccessor& Unsparse(const GltfDocument& doc, std::size_t accessor, const std::string& where) {
+// A copy (a few words), so that no reference outlives the `where` built for it.
+GltfAccessor Unsparse(const GltfDocument& doc, std::size_t accessor, const std::string& where) {
   const GltfAccessor& a = doc.accessors[accessor];
   if (a.sparse) {
     throw SceneError(doc.file, where,
@@ -104,7 +105,7 @@ std::optional<Model> PrimitiveModel(const GltfDocument& doc, std::size_t mesh, s
     notes.push_back(where + ": " + ModeName(p.mode) + " not drawn (twinraster draws triangles only)");
     return std::nullopt;
   }
-  const GltfAccessor& positions = Unsparse(doc, p.position, where + ".attributes.POSITION");
+  const GltfAccessor positions = Unsparse(doc, p.position, where + ".attributes.POSITION");
   const std::vector<std::array<std::uint32_t, 3>> corners =
       Assemble(p.mode, VertexOrder(doc, p, positions.count, where));
   if (corners.empty()) {
