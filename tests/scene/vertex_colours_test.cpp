@@ -66,7 +66,8 @@ TEST_CASE("vertex_colours on an OBJ model count the OBJ file's vertices", "[scen
   nlohmann::json colours = nlohmann::json::array();
   for (int i = 0; i < 33; ++i) colours.push_back({i * 7, 255 - i * 7, 100});
   scene["models"]["square"] = {{"obj", "meshes/gem.obj"}, {"vertex_colours", colours}};
-  const Model& gem = Parse(scene).models.at(0);
+  const Scene parsed = Parse(scene);
+  const Model& gem = parsed.models.at(0);
   REQUIRE(gem.vertices.size() == 33);
   REQUIRE(gem.vertex_colours.size() == 33);
   CHECK(gem.vertex_colours[32] == Rgb8{224, 31, 100});
