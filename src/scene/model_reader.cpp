@@ -189,7 +189,8 @@ Model ReadGltfModel(const JsonReader& r, const std::string& name, const std::fil
 Model ReadModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory, bool lit) {
   r.ExpectObject({"vertices", "triangles", "obj", "gltf", "colour", "materials", "shading", "vertex_colours"});
   if (r.Find("gltf")) {
-    if (auto colours = r.Find("vertex_colours")) colours->Fail("a model read from \"gltf\" takes its colours from the file");
+    if (auto colours = r.Find("vertex_colours"))
+      colours->Fail("a model read from \"gltf\" takes its colours from the file");
     const std::optional<JsonReader> shading = r.Find("shading");
     const std::optional<Shading> asked = shading ? std::optional(ReadShading(*shading, lit)) : std::nullopt;
     Model model = ReadGltfModel(r, name, directory, lit);
