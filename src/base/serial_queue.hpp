@@ -36,6 +36,13 @@ class SerialQueue {
     work_.notify_one();
   }
 
+  // Waits until every task pushed so far has run (or one threw): the thread is then idle, holding
+  // no lock, so this process may fork (a child inherits whatever locks its threads held).
+  void WaitIdle() {
+    std::unique_lock lock(mutex_);
+    room_.wait(lock, [&] { return (tasks_.empty() && !running_) || failed_; });
+  }
+
   // Runs what is queued, joins, and rethrows a task's exception.
   void Finish() {
     Stop();
@@ -61,15 +68,20 @@ class SerialQueue {
         if (tasks_.empty() || failed_) return;
         task = std::move(tasks_.front());
         tasks_.pop_front();
+        running_ = true;
       }
-      room_.notify_one();
+      room_.notify_all();
       try {
         task();
       } catch (...) {
         const std::lock_guard lock(mutex_);
         failed_ = std::current_exception();
-        room_.notify_all();
       }
+      {
+        const std::lock_guard lock(mutex_);
+        running_ = false;
+      }
+      room_.notify_all();
     }
   }
 
@@ -78,6 +90,7 @@ class SerialQueue {
   std::condition_variable work_, room_;
   std::deque<std::function<void()>> tasks_;
   bool stopping_ = false;
+  bool running_ = false;  // a task is being run
   std::exception_ptr failed_;
   std::thread worker_;  // started by the first Push
 };

@@ -293,9 +293,9 @@ void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& prog
 // Several scenes, each on its own: a bad scene or an unwritable output is reported and the others
 // still render. Each scene's files are written and its record printed on a thread of its own, in
 // order, while the next scene draws: the PNGs and the file system's waits take the other core.
+// `writer` is idle whenever the GPU process forks (Render sets that up).
 void RenderBatch(const RenderArguments& a, const std::string& directory, run::GpuSession& gpu, Progress& progress,
-                 BatchTally& tally) {
-  SerialQueue writer(2);  // drawn scenes waiting: each holds its images
+                 BatchTally& tally, SerialQueue& writer) {
   for (const std::string& scene : a.scenes) {
     try {
       auto drawn = std::make_shared<DrawnScene>(DrawScene(a, scene, directory, gpu, progress));
@@ -324,11 +324,13 @@ int Render(RenderArguments& a) {
   ResolveOptions(a);
   CheckOutput(a);
   Progress progress = Progress::OnStandardError(a.quiet);
+  const bool several = a.scenes.size() > 1;
+  SerialQueue writer(2);  // several scenes: each written while the next draws; each waiting holds its images
   IsolationOptions isolation;
   isolation.gpu.device = a.device;
   isolation.timeout_seconds = a.timeout_seconds;
+  if (several) isolation.before_fork = [&writer] { writer.WaitIdle(); };
   run::GpuSession gpu(isolation);  // a child process, made for the first GPU draw and kept
-  const bool several = a.scenes.size() > 1;
   const std::string directory = several ? a.output.value_or(".") : "";
   if (several) MakeDirectory(directory);
   if (a.report) MakeDirectory((std::filesystem::path(*a.report) / "thumbs").string());  // and DIR with it
@@ -336,7 +338,7 @@ int Render(RenderArguments& a) {
   Stopwatch batch_clock;
   BatchTally tally;
   if (several) {
-    RenderBatch(a, directory, gpu, progress, tally);
+    RenderBatch(a, directory, gpu, progress, tally, writer);
   } else {
     RenderInTurn(a, gpu, progress, tally);
   }

@@ -286,6 +286,7 @@ void GpuProcess::Spawn(const DrawList& list) {
   ReapFinished();
   int fds[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) ThrowErrno("socketpair for the GPU process");
+  if (options_.before_fork) options_.before_fork();
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]), close(fds[1]);

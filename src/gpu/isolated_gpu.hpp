@@ -8,6 +8,7 @@
 #include "gpu/gpu_renderer.hpp"
 #include "image/image.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +41,10 @@ struct IsolatedGpuResult {
 struct IsolationOptions {
   GpuOptions gpu;
   double timeout_seconds = 0;  // per list; 0: wait as long as the child takes
+  // Called in this process just before each fork, to quiet its other threads: a child inherits
+  // every lock they hold at that moment, held (under ASan a batch's writer thread, caught
+  // allocating, left the child hung in its first calloc).
+  std::function<void()> before_fork;
 };
 
 // One child process with one GpuRenderer, kept for every list while it lives. The first list (and

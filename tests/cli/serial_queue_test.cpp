@@ -66,3 +66,20 @@ TEST_CASE("SerialQueue's destructor runs what was queued before it joins", "[bas
   }  // as when the pushing thread unwinds from an exception of its own
   CHECK(ran == std::vector<int>{0, 1, 2, 3});
 }
+
+TEST_CASE("SerialQueue::WaitIdle returns once every task pushed has run, the one running included", "[base][queue]") {
+  SerialQueue queue(4);
+  queue.WaitIdle();  // nothing pushed: idle at once, no thread started
+  std::atomic<int> done = 0;
+  for (int i = 0; i < 3; ++i) {
+    queue.Push([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      ++done;
+    });
+  }
+  queue.WaitIdle();  // what a batch does before it forks its GPU process
+  CHECK(done == 3);
+  queue.Push([&] { ++done; });
+  queue.Finish();
+  CHECK(done == 4);
+}
