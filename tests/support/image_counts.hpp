@@ -5,6 +5,8 @@
 #include "scene/scene.hpp"  // Rgb8
 
 #include <cstddef>
+#include <cstdint>
+#include <set>
 
 namespace twinraster::test {
 
@@ -15,6 +17,16 @@ inline std::size_t CountNotColour(const Image& image, Rgb8 colour) {
     n += image.rgba[i] != colour.r || image.rgba[i + 1] != colour.g || image.rgba[i + 2] != colour.b;
   }
   return n;
+}
+
+// The number of distinct colours (alpha aside): a lit or interpolated surface has many, a flat one few.
+inline std::size_t DistinctColours(const Image& image) {
+  std::set<std::uint32_t> colours;
+  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    colours.insert(std::uint32_t{image.rgba[i]} | std::uint32_t{image.rgba[i + 1]} << 8 |
+                   std::uint32_t{image.rgba[i + 2]} << 16);
+  }
+  return colours.size();
 }
 
 }  // namespace twinraster::test

@@ -19,20 +19,9 @@
 #include <set>
 
 using namespace twinraster;
+using test::DistinctColours;
 
-namespace {
-
-// The number of distinct colours in an image: a lit sphere has many, an unlit one a few.
-std::size_t DistinctColours(const Image& image) {
-  std::set<std::uint32_t> colours;
-  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
-    colours.insert(std::uint32_t{image.rgba[i]} | std::uint32_t{image.rgba[i + 1]} << 8 |
-                   std::uint32_t{image.rgba[i + 2]} << 16);
-  }
-  return colours.size();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("Lit spheres, flat and Gouraud: GPU image == CPU image", "[twin][lighting]") {
   for (const Shading shading : {Shading::kFlat, Shading::kGouraud}) {

@@ -14,17 +14,9 @@
 #include <set>
 
 using namespace twinraster;
+using test::DistinctColours;
 
 namespace {
-
-std::size_t DistinctColours(const Image& image) {
-  std::set<std::uint32_t> colours;
-  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
-    colours.insert(std::uint32_t{image.rgba[i]} | std::uint32_t{image.rgba[i + 1]} << 8 |
-                   std::uint32_t{image.rgba[i + 2]} << 16);
-  }
-  return colours.size();
-}
 
 // A lumpy sphere with a colour per vertex drawn twice, so that a run of instances is instanced.
 Scene Spheres(Shading shading, bool normals) {

@@ -6,6 +6,7 @@
 #include "chain/draw_list.hpp"
 #include "chain/matrices.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "engine_shading.hpp"
 #include "run/judge_coverage.hpp"
 #include "scene/gltf_document.hpp"
 #include "scene/gltf_scene.hpp"
@@ -28,6 +29,9 @@
 #include <vector>
 
 using namespace twinraster;
+using test::Is;
+using test::Recolour;
+using test::Shade;
 
 namespace {
 
@@ -48,32 +52,6 @@ Loaded Load(const std::string& file) {
 }
 
 Image Twin(const Scene& scene) { return RenderOnCpu(BuildDrawList(scene)); }
-bool Is(const std::uint8_t* p, Rgb8 c) { return p[0] == c.r && p[1] == c.g && p[2] == c.b; }
-
-// An engine's shading: covered pixels (not `from`, the twin's clear colour) in colours of its own,
-// never `clear`; background pixels `clear`.
-enum class Shade { kConstant, kGradient, kNoise };
-Image Recolour(const Image& twin, Rgb8 from, Rgb8 clear, Shade shade, std::uint32_t seed = 1) {
-  Image out = twin;
-  std::mt19937 random(seed);
-  for (std::uint32_t y = 0; y < twin.height; ++y) {
-    for (std::uint32_t x = 0; x < twin.width; ++x) {
-      std::uint8_t* p = out.pixel(x, y);
-      if (Is(p, from)) {
-        p[0] = clear.r, p[1] = clear.g, p[2] = clear.b;
-        continue;
-      }
-      if (shade == Shade::kConstant) p[0] = 90, p[1] = 140, p[2] = 200;
-      if (shade == Shade::kGradient)
-        p[0] = std::uint8_t(x * 255 / twin.width), p[1] = std::uint8_t(y * 255 / twin.height), p[2] = 128;
-      if (shade == Shade::kNoise) {
-        for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(random() & 255);
-      }
-      if (Is(p, clear)) p[0] ^= 1;
-    }
-  }
-  return out;
-}
 
 // --- The composers: a node's local matrix and an instance's chain, written here from doc.nodes
 // (not by the reader's LocalMatrix), right or with one bug.
