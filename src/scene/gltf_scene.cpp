@@ -81,7 +81,9 @@ std::optional<std::size_t> ChosenScene(const GltfDocument& doc, const SceneChoic
 // The models of every primitive of the meshes the walk meets, made once per (mesh, primitive).
 class ModelTable {
  public:
-  ModelTable(const GltfDocument& doc, Scene& scene) : doc_(doc), scene_(scene) {}
+  ModelTable(const GltfDocument& doc, Scene& scene) : doc_(doc), scene_(scene) {
+    for (const std::vector<std::uint8_t>& b : doc_.buffers) buffer_bytes_ += b.size();
+  }
 
   // The scene's model index, or empty for a primitive that draws nothing.
   std::optional<std::size_t> Model(std::size_t mesh, std::size_t primitive) {
@@ -108,18 +110,17 @@ class ModelTable {
     std::uint64_t elements = doc_.accessors[p.position].count;
     for (const std::optional<std::size_t>& a : {p.normal, p.colour, p.indices})
       elements += a ? doc_.accessors[*a].count : 0;
-    std::uint64_t bytes = 0;
-    for (const std::vector<std::uint8_t>& b : doc_.buffers) bytes += b.size();
     read_ += elements;
-    if (read_ > 2 * bytes + (std::uint64_t{1} << 22)) {
+    if (read_ > 2 * buffer_bytes_ + (std::uint64_t{1} << 22)) {
       throw SceneError(doc_.file, "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]",
                        "the primitives read " + std::to_string(read_) + " accessor elements from " +
-                           std::to_string(bytes) + " bytes of buffers: out of proportion, refused");
+                           std::to_string(buffer_bytes_) + " bytes of buffers: out of proportion, refused");
     }
   }
 
   const GltfDocument& doc_;
   Scene& scene_;
+  std::uint64_t buffer_bytes_ = 0;  // every buffer's, summed once
   std::uint64_t read_ = 0;
   std::map<std::pair<std::size_t, std::size_t>, std::optional<std::size_t>> made_;
 };
