@@ -7,10 +7,13 @@
 #include "base/usage_error.hpp"
 #include "book/book_renderer.hpp"
 #include "cli/commands.hpp"
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/twin_rules.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_choice_options.hpp"
+#include "cpu/cpu_renderer.hpp"
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
@@ -62,9 +65,17 @@ void ResolveOptions(RenderArguments& a) {
   a.run.rules = a.rules == "book" ? run::Rules::kBook : run::Rules::kVulkan;
   a.run.verify = a.verify;
   a.run.threads = a.threads;
-  if (a.run.rules != run::Rules::kBook) return;
+  a.run.device = a.device;
+  if (a.run.rules != run::Rules::kBook) {
+    // A device asked for decides the twin's rules; with no device to open, its name must say which.
+    if (a.run.backends == run::Backends::kCpu && !a.device.empty())
+      cpu::ChooseTwinRulesByName(a.device, cpu::DetectCpuPath());
+    return;
+  }
   if (a.verify)
     throw UsageError("--verify judges by Vulkan's rules, and --rules book draws by the demos': drop one of them");
+  if (!a.device.empty())
+    throw UsageError("--device chooses Vulkan's rules, and --rules book draws by the demos': drop one of them");
   if (a.backend_given && a.run.backends != run::Backends::kCpu) {
     throw UsageError("--rules book draws on the CPU only, as the chapter's demos do: drop --backend " + a.backend);
   }
@@ -401,7 +412,12 @@ CommandRun AddRenderCommand(CLI::App& app) {
                     "map beside it as OUT-map.png (OUT-gpu-map.png with both); exit 1 on a\n"
                     "violation. Without it, a difference between the two images is still judged");
   command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/4, docs/json-output.md)");
-  command->add_option("--device", a->device, "the Vulkan device whose name contains NAME (default: lavapipe)")
+  command
+      ->add_option("--device", a->device,
+                   "the Vulkan device to draw on, whose rules the twin follows: lavapipe (default),\n"
+                   "swiftshader, or any part of a device's full name, in any case (--version lists\n"
+                   "them). --backend cpu opens none: the name alone chooses the twin's rules, and\n"
+                   "one it has none for is refused")
       ->type_name("NAME");
   command
       ->add_option("--timeout", a->timeout_seconds,
@@ -409,8 +425,15 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "the scene reported as timed out (default 600; 0: no limit)")
       ->type_name("SECONDS")
       ->check(CLI::NonNegativeNumber);
-  ExpectIndex(
-      command->add_option("--threads", a->threads, "the CPU twin's threads (default: all cores)")->type_name("N"));
+  ExpectIndex(command
+                  ->add_option("--threads", a->threads,
+                               "the CPU twin's threads, at most one per 16 rows (default: every core for a\n"
+                               "frame of over " +
+                                   std::to_string(kOneThreadPixels) + " pixels or over " +
+                                   std::to_string(kOneThreadTriangles) +
+                                   " triangles, counting every\n"
+                                   "instance's; one for a smaller frame, where another costs more than it saves)")
+                  ->type_name("N"));
   AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("-q,--quiet", a->quiet, "no progress on standard error (and, with -o -, no report)");
   command

@@ -1,5 +1,6 @@
 #include "cli/version.hpp"
 
+#include "base/device_names.hpp"
 #include "cli/build_version.hpp"  // generated at build time by build_version.cmake
 #include "cpu/lavapipe_path.hpp"
 #include "cpu/twin_rules.hpp"
@@ -10,13 +11,13 @@
 namespace twinraster {
 namespace {
 
-// "llvmpipe (...): llvmpipe, Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230, 8 subpixel bits,
-// strictLines true; twin: bit-exact (lavapipe rules, ...)"
+// "lavapipe (llvmpipe (...)): llvmpipe, Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230, 8 subpixel bits,
+// strictLines true; twin: bit-exact (lavapipe rules, ...)": the device by the names --device takes.
 std::string DeviceLine(const DeviceIdentity& d, const cpu::CpuPath& path) {
   std::string driver = d.driver_name;
   if (!d.driver_info.empty()) driver += (driver.empty() ? "" : ", ") + d.driver_info;
   const cpu::TwinRules twin = cpu::ChooseTwinRules(run::FactsOf(d), path);
-  return "  " + d.name + ": " + (driver.empty() ? "driver not named" : driver) + ", Vulkan " +
+  return "  " + AskableName(d.name) + ": " + (driver.empty() ? "driver not named" : driver) + ", Vulkan " +
          gpu::VulkanVersionText(d.api_version) + ", " + std::to_string(d.subpixel_bits) +
          " subpixel bits, strictLines " + (d.strict_lines ? "true" : "false") + "; twin: " +
          (twin.exact ? "bit-exact (" + twin.text + ")" : "no bit-exact rules (the verifier judges its images)");
@@ -24,7 +25,7 @@ std::string DeviceLine(const DeviceIdentity& d, const cpu::CpuPath& path) {
 
 std::string DevicesText(const cpu::CpuPath& path) {
   const gpu::ExtraDriverOffer offer;  // held across ListDevices(), whose own offer then stands aside
-  std::string heading = "Vulkan devices", offered;
+  std::string heading = "Vulkan devices, by the names --device takes", offered;
   for (const std::string& file : offer.files()) offered += (offered.empty() ? "" : ", ") + file;
   if (!offered.empty()) heading += " (also offered to the loader: " + offered + ")";
   try {

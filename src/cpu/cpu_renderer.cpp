@@ -132,14 +132,11 @@ void ClearFrame(cpu::Framebuffer& fb, unsigned threads, std::uint32_t height, st
   });
 }
 
-// Left to choose (threads 0), the twin draws a frame of up to a megapixel with few triangles on one
-// thread: starting another and handing it parts costs more than its share (a one-scene process
-// pays the thread's start, and its later unmappings then interrupt the other core), and in a batch
-// the other core is busy with the GPU process or the last scene's files. Any count gives the same
-// image.
-constexpr std::uint64_t kOneThreadPixels = 1024 * 1024;
-constexpr std::uint64_t kOneThreadTriangles = 4096;
-
+// Left to choose (threads 0), the twin draws a frame within kOneThreadPixels and
+// kOneThreadTriangles on one thread: starting another and handing it parts costs more than its
+// share (a one-scene process pays the thread's start, and its later unmappings then interrupt the
+// other core), and in a batch the other core is busy with the GPU process or the last scene's
+// files. Any count gives the same image.
 unsigned ThreadsFor(const DrawList& list, unsigned requested, unsigned bands) {
   if (requested == 0 && std::uint64_t{list.width} * list.height <= kOneThreadPixels) {
     std::uint64_t triangles = 0;

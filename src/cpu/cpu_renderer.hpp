@@ -13,8 +13,15 @@
 
 namespace twinraster {
 
-// threads: 0 = std::thread::hardware_concurrency(), or one for a frame of at most 256x256 pixels
-// and 4096 triangles. The image is identical for any thread count.
+// Left to choose (CpuOptions::threads 0), the twin draws a frame of at most this many pixels and
+// this many triangles (every draw's mesh, before clipping) on one thread, and a larger one on
+// every core.
+inline constexpr std::uint64_t kOneThreadPixels = 1024 * 1024;
+inline constexpr std::uint64_t kOneThreadTriangles = 4096;
+
+// threads: how many threads set up and draw the frame, at most one per 16-row band; 0 = one for a
+// frame within kOneThreadPixels and kOneThreadTriangles, else std::thread::hardware_concurrency().
+// The image is identical for any thread count.
 struct CpuOptions {
   unsigned threads = 0;
   // Triangles (and vertices) set up per chunk; 0: the default (geometry.hpp's ChunkBudget). The

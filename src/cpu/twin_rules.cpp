@@ -1,5 +1,8 @@
 #include "cpu/twin_rules.hpp"
 
+#include "base/device_names.hpp"
+#include "base/usage_error.hpp"
+
 #include <array>
 #include <regex>
 #include <span>
@@ -113,7 +116,8 @@ bool IsSwiftShader(const DeviceFacts& device) {
 }
 
 // SwiftShader's row when the device and this CPU are the ones it was proven on; else why not.
-TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path) {
+// `chosen_by`, when set, says how the row was chosen without a device.
+TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path, const std::string& chosen_by = "") {
   TwinRules twin;
   twin.device = device.name;
   twin.path = path;
@@ -131,35 +135,76 @@ TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path) {
   }
   twin.exact = true;
   twin.rules = row.rules;
-  twin.text = "SwiftShader rules, " + seen + ", x86-64 SSE4.1, proven on " + std::string(row.proven_on);
+  twin.text = "SwiftShader rules" + (chosen_by.empty() ? "" : " (" + chosen_by + ")") + ", " + seen + ", x86-64 SSE4.1, proven on " + std::string(row.proven_on);
   return twin;
 }
 
+// No device opened: lavapipe's default release, on the path lavapipe would take here; `why` says
+// what the release was assumed from.
+TwinRules AssumedLavapipe(const CpuPath& path, const std::string& why) {
+  TwinRules twin;
+  twin.path = path;
+  LavapipeRelease assumed{std::string(kDefaultMesa), "", path.vector_bits};
+  for (const KnownLavapipe& known : kKnown) {
+    if (known.mesa == kDefaultMesa) assumed.llvm = known.llvm_major;
+  }
+  if (const KnownLavapipe* known = Find(kKnown, assumed, path)) {
+    twin.exact = true;
+    twin.rules = known->rules;
+    twin.release = assumed;
+    twin.text = "lavapipe rules, Mesa " + assumed.mesa + " (assumed: " + why + "), " + path.Text();
+    return twin;
+  }
+  twin.text = "no bit-exact rules for Mesa " + assumed.mesa + " on " + path.Text();
+  return twin;
+}
+
+// The name asks for no device the twin copies: which names do, and what a backend's name means.
+std::string NoRulesForName(const std::string& asked) {
+  std::string text = "--device '" + asked +
+                     "' asks for no device the twin has rules for, and with no device opened only the name can "
+                     "say which: lavapipe (or part of 'llvmpipe') or swiftshader (or part of '" +
+                     std::string(kSwiftShader.name) + "')";
+  if (const std::string hint = BackendNotDevice(asked); !hint.empty()) return text + "; " + hint;
+  return text + "; to draw on that device and compare, use --backend both";
+}
+
+// Whether `asked` names `family` with no device opened: its common name, or a part of `reference`,
+// the name of the device the twin copies (for lavapipe "llvmpipe" alone: the rest of its names
+// tells a release, which only the device could confirm).
+bool NamesWithoutDevice(const std::string& asked, const DeviceFamily& family, std::string_view reference) {
+  return !asked.empty() && (EqualsIgnoringCase(asked, family.common_name) || ContainsIgnoringCase(reference, asked));
+}
+
 }  // namespace
+
+TwinRules ChooseTwinRulesByName(const std::string& asked, const CpuPath& path) {
+  const std::string chosen_by = "'" + asked + "' asked, no device opened";
+  TwinRules twin;
+  if (NamesWithoutDevice(asked, kLavapipeFamily, kLavapipeFamily.name_start)) {
+    twin = AssumedLavapipe(path, chosen_by);
+  } else if (NamesWithoutDevice(asked, kSwiftShaderFamily, kSwiftShader.name)) {
+    const DeviceFacts row{.name = std::string(kSwiftShader.name),
+                          .driver_id = kSwiftShaderDriverId,
+                          .driver_version = kSwiftShader.driver_version,
+                          .subpixel_bits = kSwiftShader.subpixel_bits};
+    twin = ChooseSwiftShader(row, path, chosen_by);
+  } else {
+    throw UsageError(NoRulesForName(asked));
+  }
+  if (!twin.exact) throw UsageError("--device '" + asked + "': " + twin.text);
+  twin.device = asked;
+  return twin;
+}
 
 TwinRules ChooseTwinRules(const DeviceFacts& facts, const CpuPath& path) {
   const std::string& device_name = facts.name;
   const std::string& driver_info = facts.driver_info;
   if (IsSwiftShader(facts)) return ChooseSwiftShader(facts, path);
+  if (device_name.empty()) return AssumedLavapipe(path, "no device was asked");
   TwinRules twin;
   twin.device = device_name;
   twin.path = path;
-  if (device_name.empty()) {
-    // No device: the default release, on the path lavapipe would take here.
-    LavapipeRelease assumed{std::string(kDefaultMesa), "", path.vector_bits};
-    for (const KnownLavapipe& known : kKnown) {
-      if (known.mesa == kDefaultMesa) assumed.llvm = known.llvm_major;
-    }
-    if (const KnownLavapipe* known = Find(kKnown, assumed, path)) {
-      twin.exact = true;
-      twin.rules = known->rules;
-      twin.release = assumed;
-      twin.text = "lavapipe rules, Mesa " + assumed.mesa + " (assumed: no device was asked), " + path.Text();
-      return twin;
-    }
-    twin.text = "no bit-exact rules for Mesa " + assumed.mesa + " on " + path.Text();
-    return twin;
-  }
   twin.release = ParseLavapipe(device_name, driver_info);
   if (!twin.release) {
     twin.text = "no bit-exact rules for " + device_name + (driver_info.empty() ? "" : " (" + driver_info + ")") +

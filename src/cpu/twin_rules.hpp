@@ -38,7 +38,7 @@ struct DeviceFacts {
 struct TwinRules {
   bool exact = false;  // the twin has bit-exact rules for this driver and path
   RasterRules rules;   // what the twin follows: the matched rules, or the defaults when not exact
-  std::string device;  // the device's name, empty when none was asked (--backend cpu)
+  std::string device;  // the device's name, the name asked when none was opened, or empty
   std::optional<LavapipeRelease> release;
   CpuPath path;
   // "lavapipe rules, Mesa 25.0.7, x86-64 SSE4.1, 128-bit", or
@@ -49,6 +49,12 @@ struct TwinRules {
 // A device with no name: none was asked; the twin follows lavapipe's default release on this
 // machine's path and says so.
 TwinRules ChooseTwinRules(const DeviceFacts& device, const CpuPath& path);
+
+// The rules for a device asked by name (--device) when none is opened to say what it is: the
+// family the name asks for (base/device_names.hpp; lavapipe first when it asks for both), with
+// lavapipe's default release or SwiftShader's row, on this machine's path, said to be chosen by
+// the name. Throws UsageError when the twin has no bit-exact rules for what the name asks for.
+TwinRules ChooseTwinRulesByName(const std::string& asked, const CpuPath& path);
 
 // One lavapipe the twin copies bit for bit: a release named exactly (another point release may
 // have changed the arithmetic, and only a run can say it has not), one CPU path, its rules, and

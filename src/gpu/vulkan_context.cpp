@@ -1,10 +1,10 @@
 #include "gpu/vulkan_context.hpp"
 
+#include "base/device_names.hpp"
 #include "gpu/driver_files.hpp"
 #include "gpu/keep_loaded.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <optional>
 #include <string_view>
 
@@ -37,13 +37,6 @@ bool HasLayer(const vk::raii::Context& context, std::string_view name) {
 bool HasExtension(const std::vector<vk::ExtensionProperties>& extensions, std::string_view name) {
   return std::any_of(extensions.begin(), extensions.end(),
                      [&](const vk::ExtensionProperties& e) { return std::string_view(e.extensionName) == name; });
-}
-
-bool ContainsIgnoringCase(std::string_view haystack, std::string_view needle) {
-  const auto lower = [](char c) { return std::tolower(static_cast<unsigned char>(c)); };
-  const auto it = std::search(haystack.begin(), haystack.end(), needle.begin(), needle.end(),
-                              [&](char a, char b) { return lower(a) == lower(b); });
-  return it != haystack.end();
 }
 
 // Throws GpuUnavailable unless the validation layer is installed with the extensions
@@ -80,13 +73,14 @@ vk::DebugUtilsMessengerCreateInfoEXT MessengerInfo(std::vector<std::string>* mes
   return info;
 }
 
-// How well a usable device fits, higher is better. With a name asked for: 3 when its name contains
-// it, else 0 (not to be chosen); without: 3 for lavapipe, 2 for another CPU device, else 1.
+// How well a usable device fits, higher is better: 0 (not to be chosen) when a name is asked that
+// does not ask for it (base/device_names.hpp); else 3 for lavapipe, 2 for another CPU device, 1
+// for any other, so that a name several devices answer to picks as the default would.
 int DeviceScore(const vk::PhysicalDeviceProperties& properties, const std::string& wanted) {
   const std::string_view name = properties.deviceName.data();
-  if (!wanted.empty()) return ContainsIgnoringCase(name, wanted) ? 3 : 0;
+  if (!wanted.empty() && !AsksForDevice(wanted, name)) return 0;
   const bool cpu = properties.deviceType == vk::PhysicalDeviceType::eCpu;
-  return ContainsIgnoringCase(name, "llvmpipe") ? 3 : cpu ? 2 : 1;
+  return FamilyOfDevice(name) == &kLavapipeFamily ? 3 : cpu ? 2 : 1;
 }
 
 // The queue family we draw with, if the device can do everything the renderer needs: graphics
@@ -104,13 +98,24 @@ std::optional<std::uint32_t> UsableQueueFamily(const vk::raii::PhysicalDevice& d
   return std::nullopt;
 }
 
+// Each device by the names it can be asked by: "lavapipe (llvmpipe (LLVM 15.0.6, 256 bits)), ...".
 std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
   std::string names;
   for (const auto& device : devices) {
     if (!names.empty()) names += ", ";
-    names += "'" + std::string(device.getProperties().deviceName.data()) + "'";
+    names += AskableName(device.getProperties().deviceName.data());
   }
   return names.empty() ? "none" : names;
+}
+
+// No device answers to `wanted`: which do, and what a backend's name means.
+std::string NoDeviceNamed(const std::string& wanted, const std::vector<vk::raii::PhysicalDevice>& devices) {
+  std::string text = "--device '" + wanted +
+                     "' names no usable Vulkan device here (a device answers to its common name or to any "
+                     "part of its full name, in any case); the devices: " +
+                     DeviceNames(devices);
+  if (const std::string hint = BackendNotDevice(wanted); !hint.empty()) text += "; " + hint;
+  return text;
 }
 
 }  // namespace
@@ -118,10 +123,11 @@ std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
 // The loader is linked in (Vulkan::Vulkan), so we hand vulkan.hpp its entry point directly rather
 // than have it dlopen the library a second time.
 VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanceProcAddr) {
-  // A device asked by name may be one outside the loader's search path; the default goes without
-  // (loading SwiftShader's driver costs instance creation time).
-  const ExtraDriverOffer offer(!options.device.empty());
-  if (!options.device.empty() || !ChooseLavapipeAlone(options.validation)) {
+  // lavapipe, whenever the name may ask for it, comes first with its driver alone (loading
+  // SwiftShader's costs instance creation time); it is also the one chosen when every driver is
+  // loaded. Any other name may ask for a device outside the loader's search path.
+  if (!MayAskForFamily(options.device, kLavapipeFamily) || !ChooseLavapipeAlone(options.validation, options.device)) {
+    const ExtraDriverOffer offer(!options.device.empty());
     CreateInstance(options.validation);
     ChooseDevice(options.device);
   }
@@ -129,14 +135,15 @@ VulkanContext::VulkanContext(const GpuOptions& options) : context_(&vkGetInstanc
   KeepVulkanLibrariesLoaded();  // sanitizer builds only: see keep_loaded.hpp
 }
 
-// The default device from an instance with lavapipe's driver alone; false (and no instance) when
-// the user's variables choose the drivers, or lavapipe is missing or unusable.
-bool VulkanContext::ChooseLavapipeAlone(bool validation) {
+// The device `wanted` asks for (any, when empty) from an instance with lavapipe's driver alone;
+// false (and no instance) when the user's variables choose the drivers, or lavapipe is missing,
+// unusable or not asked for.
+bool VulkanContext::ChooseLavapipeAlone(bool validation, const std::string& wanted) {
   const LavapipeAlone alone;
   if (alone.manifest().empty()) return false;
   try {
     CreateInstance(validation);
-    ChooseDevice("");
+    ChooseDevice(wanted);
     return true;
   } catch (const GpuUnavailable&) {
     messenger_ = nullptr;  // before its instance
@@ -191,9 +198,8 @@ void VulkanContext::CreateInstance(bool validation) {
   if (validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
 }
 
-// The first usable device whose name contains `wanted` if that is set; otherwise lavapipe, else
-// another CPU device (the same pixels on every machine; SwiftShader is one), else the first usable
-// one.
+// Of the usable devices that `wanted` asks for (all of them when it is empty): lavapipe, else
+// another CPU device (the same pixels on every machine; SwiftShader is one), else the first.
 void VulkanContext::ChooseDevice(const std::string& wanted) {
   const std::vector<vk::raii::PhysicalDevice> devices = instance_.enumeratePhysicalDevices();
   const vk::raii::PhysicalDevice* chosen = nullptr;
@@ -210,10 +216,7 @@ void VulkanContext::ChooseDevice(const std::string& wanted) {
     }
   }
   if (chosen == nullptr) {
-    if (!wanted.empty()) {
-      throw GpuUnavailable("no usable Vulkan device name contains '" + wanted +
-                           "'; devices present: " + DeviceNames(devices));
-    }
+    if (!wanted.empty()) throw GpuUnavailable(NoDeviceNamed(wanted, devices));
     throw GpuUnavailable(
         "no Vulkan device supports what the renderer needs (a graphics queue and "
         "D32_SFLOAT depth); devices present: " +

@@ -37,8 +37,8 @@ class VulkanContext {
                                vk::MemoryPropertyFlags preferred = {}) const;
 
  private:
-  bool ChooseLavapipeAlone(bool validation);  // the default device, loading lavapipe's driver only
-  void CreateInstance(bool validation);       // with the validation layer and its messenger if asked
+  bool ChooseLavapipeAlone(bool validation, const std::string& wanted);  // loading lavapipe's driver only
+  void CreateInstance(bool validation);  // with the validation layer and its messenger if asked
   void ChooseDevice(const std::string& wanted);
   void CreateDevice();  // and its queue
 

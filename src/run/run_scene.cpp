@@ -77,7 +77,12 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
     return runs;
   }
   Say(status, "cpu: drawing...");
-  runs.push_back(Twin(list, DeviceIdentity{}, options, record.twin));
+  if (options.device.empty()) {
+    runs.push_back(Twin(list, DeviceIdentity{}, options, record.twin));
+  } else {
+    record.twin = cpu::ChooseTwinRulesByName(options.device, cpu::DetectCpuPath());
+    runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));
+  }
   return runs;
 }
 

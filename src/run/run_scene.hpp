@@ -22,7 +22,10 @@ struct RunOptions {
   Rules rules = Rules::kVulkan;  // kBook draws on the CPU only, by the chapter's demos, and is never judged
   bool verify = false;           // judge the image drawn (the GPU's when there is one) even when nothing differs
   bool map = false;              // keep the judgement's map (RunResult::map)
-  unsigned threads = 0;          // the twin's; 0: every core
+  unsigned threads = 0;          // the twin's; 0: as CpuOptions::threads says
+  // The device asked for (--device). With Backends::kCpu no device is opened, and the twin's rules
+  // are chosen by this name (cpu::ChooseTwinRulesByName; a name it has none for throws UsageError).
+  std::string device;
 };
 
 // Reports what the run is doing, for a progress line: "gpu: drawing on Vulkan...".
@@ -37,7 +40,8 @@ struct RunResult {
 };
 
 // `source` names the scene in the record and in a crash's problem. `gpu` draws every GPU image
-// (unused by --backend cpu and the book). Throws GpuUnavailable, std::invalid_argument for a list
+// (unused by --backend cpu and the book). Throws GpuUnavailable, UsageError for a device asked by a
+// name the twin has no rules for (with Backends::kCpu), std::invalid_argument for a list
 // a renderer refuses, and book::BookRulesError for a scene the demos cannot draw.
 RunResult RunScene(const Scene& scene, const std::string& source, const RunOptions& options, GpuSession& gpu,
                    const StatusLine& status = {});
