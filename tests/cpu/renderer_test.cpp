@@ -7,9 +7,11 @@
 #include "support/catch.hpp"
 #include "test_scenes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 using namespace twinraster;
@@ -226,6 +228,26 @@ TEST_CASE("the image is the same for any thread count", "[cpu][render][threads]"
   const Image cubes_one = RenderOnCpu(cubes, CpuOptions{1});
   CHECK(RenderOnCpu(cubes, CpuOptions{2}).rgba == cubes_one.rgba);
   CHECK(RenderOnCpu(cubes, CpuOptions{3}).rgba == cubes_one.rgba);
+}
+
+TEST_CASE(
+    "threads 0: one thread within kOneThreadPixels and kOneThreadTriangles, every core beyond either, and never "
+    "more than one per 16-row band",
+    "[cpu][render][threads]") {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const auto used = [](const DrawList& list, unsigned threads = 0) {
+    CpuTimings t;
+    RenderOnCpu(list, CpuOptions{threads}, &t);
+    return t.threads;
+  };
+  CHECK(kOneThreadPixels == 1024 * 1024);  // as render --help and docs/commands.md say
+  CHECK(kOneThreadTriangles == 4096);
+  CHECK(used(Fan(1024, 1024, {0, 0}, 0.5f, 12)) == 1);
+  CHECK(used(Fan(1024, 1025, {0, 0}, 0.5f, 12)) == std::min(cores, 65u));  // 65 bands of 16 rows
+  CHECK(used(Fan(64, 64, {0, 0}, 0.5f, 4096)) == 1);
+  CHECK(used(Fan(64, 64, {0, 0}, 0.5f, 4097)) == std::min(cores, 4u));
+  CHECK(used(Fan(64, 32, {0, 0}, 0.5f, 12), 5) == 2);  // asked for 5; 2 bands
+  CHECK(used(Fan(64, 64, {0, 0}, 0.5f, 12), 3) == 3);
 }
 
 TEST_CASE("the image is the same for any chunking of the geometry, big draws sliced", "[cpu][render][chunks]") {
