@@ -7,13 +7,13 @@
 #include "base/usage_error.hpp"
 #include "book/book_renderer.hpp"
 #include "cli/commands.hpp"
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_choice_options.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "cpu/lavapipe_path.hpp"
+#include "cpu/twin_rules.hpp"
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
@@ -405,7 +405,7 @@ CommandRun AddRenderCommand(CLI::App& app) {
               "rule set", {"vulkan", "book"});
   command->add_flag("--wireframe", a->wireframe,
                     "draw triangle edges only (Vulkan's polygonMode LINE, 1 pixel, depth-tested), as\n"
-                    "if the scene said \"wireframe\": true; the twin follows lavapipe's line rules");
+                    "if the scene said \"wireframe\": true; the twin follows the device's line rules");
   command->add_flag("--verify", a->verify,
                     "judge the image drawn (the GPU's, if drawn) by what a conformant Vulkan\n"
                     "implementation may draw, pixel by pixel (docs/verify.md), and write its\n"

@@ -135,7 +135,8 @@ TwinRules ChooseSwiftShader(const DeviceFacts& device, const CpuPath& path, cons
   }
   twin.exact = true;
   twin.rules = row.rules;
-  twin.text = "SwiftShader rules" + (chosen_by.empty() ? "" : " (" + chosen_by + ")") + ", " + seen + ", x86-64 SSE4.1, proven on " + std::string(row.proven_on);
+  twin.text = "SwiftShader rules" + (chosen_by.empty() ? "" : " (" + chosen_by + ")") + ", " + seen +
+              ", x86-64 SSE4.1, proven on " + std::string(row.proven_on);
   return twin;
 }
 
@@ -159,14 +160,14 @@ TwinRules AssumedLavapipe(const CpuPath& path, const std::string& why) {
   return twin;
 }
 
-// The name asks for no device the twin copies: which names do, and what a backend's name means.
+// The name is none the twin can tell rules from: which are, and what a backend's name means.
 std::string NoRulesForName(const std::string& asked) {
   std::string text = "--device '" + asked +
-                     "' asks for no device the twin has rules for, and with no device opened only the name can "
-                     "say which: lavapipe (or part of 'llvmpipe') or swiftshader (or part of '" +
+                     "': with no device opened (--backend cpu) the twin takes its rules from the name alone, "
+                     "and knows lavapipe (or part of 'llvmpipe') and swiftshader (or part of '" +
                      std::string(kSwiftShader.name) + "')";
   if (const std::string hint = BackendNotDevice(asked); !hint.empty()) return text + "; " + hint;
-  return text + "; to draw on that device and compare, use --backend both";
+  return text + "; to draw on the device itself, and compare, use --backend both";
 }
 
 // Whether `asked` names `family` with no device opened: its common name, or a part of `reference`,
@@ -185,6 +186,7 @@ TwinRules ChooseTwinRulesByName(const std::string& asked, const CpuPath& path) {
     twin = AssumedLavapipe(path, chosen_by);
   } else if (NamesWithoutDevice(asked, kSwiftShaderFamily, kSwiftShader.name)) {
     const DeviceFacts row{.name = std::string(kSwiftShader.name),
+                          .driver_info = "",
                           .driver_id = kSwiftShaderDriverId,
                           .driver_version = kSwiftShader.driver_version,
                           .subpixel_bits = kSwiftShader.subpixel_bits};

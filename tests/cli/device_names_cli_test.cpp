@@ -1,0 +1,169 @@
+// `render --device` as a user types it: the names the manual uses, any case, any part of a device's
+// name; a name no device answers to, listed against the names that work; the twin's rules chosen by
+// the name when --backend cpu opens no device, and refused when it has none; and --threads' help
+// saying what the twin does.
+#include "image/image.hpp"
+#include "image/png_file.hpp"
+#include "support/catch.hpp"
+#include "support/test_support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using namespace twinraster;
+
+namespace {
+
+const std::string kScene = test::SourcePath("scenes/cgfs-transforms.json").string();
+const std::string kNoVulkan = "VK_ICD_FILENAMES=/nonexistent/icd.json";  // no driver at all
+
+std::string ReadFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+}  // namespace
+
+TEST_CASE("render --device takes the manual's names in any case, and any part of a device's name",
+          "[cli][render][device]") {
+  const test::TempDir dir;
+  for (const char* name : {"lavapipe", "LavaPipe", "llvmpipe", "LLVM "}) {
+    INFO(name);
+    const test::CliResult r =
+        test::RunCli({"render", kScene, "--backend", "gpu", "--device", name, "-o", (dir / "l.png").string()});
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, HasSubstring("  (llvmpipe (LLVM "));
+  }
+  for (const char* name : {"swiftshader", "SWIFTSHADER", "subzero"}) {
+    INFO(name);
+    const test::CliResult r =
+        test::RunCli({"render", kScene, "--backend", "gpu", "--device", name, "-o", (dir / "s.png").string()});
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, HasSubstring("  (SwiftShader Device (Subzero))"));
+  }
+}
+
+TEST_CASE("render --device with a name no device answers to lists the devices by the names they answer to",
+          "[cli][render][device]") {
+  const test::TempDir dir;
+  const test::CliResult r =
+      test::RunCli({"render", kScene, "--device", "no such device", "-o", (dir / "n.png").string()});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.err, HasSubstring("--device 'no such device' names no usable Vulkan device here"));
+  CHECK_THAT(r.err, HasSubstring("lavapipe (llvmpipe (LLVM "));
+  CHECK_THAT(r.err, HasSubstring("swiftshader (SwiftShader Device (Subzero))"));
+  CHECK_THAT(r.err, !HasSubstring("is a backend"));
+  CHECK(std::filesystem::is_empty(dir.path()));
+
+  // A backend typed as a device is told what it is.
+  const test::CliResult gpu = test::RunCli({"render", kScene, "--device", "gpu", "-o", (dir / "g.png").string()});
+  INFO(gpu.err);
+  CHECK(gpu.exit_code == 3);
+  CHECK_THAT(gpu.err, HasSubstring("gpu is a backend, not a device: --backend gpu draws on Vulkan alone"));
+  const test::CliResult cpu = test::RunCli({"render", kScene, "--device", "CPU", "-o", (dir / "c.png").string()});
+  INFO(cpu.err);
+  CHECK(cpu.exit_code == 3);
+  CHECK_THAT(cpu.err, HasSubstring("CPU is a backend, not a device: --backend cpu draws on the CPU twin alone"));
+}
+
+TEST_CASE("Version: --version lists each Vulkan device by the name --device takes", "[cli][device]") {
+  const test::CliResult r = test::RunCli({"--version"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("Vulkan devices, by the names --device takes"));
+  CHECK_THAT(r.out, HasSubstring("\n  lavapipe (llvmpipe (LLVM "));
+  CHECK_THAT(r.out, HasSubstring("\n  swiftshader (SwiftShader Device (Subzero)): "));
+}
+
+TEST_CASE(
+    "render --backend cpu --device swiftshader draws by SwiftShader's rules with no Vulkan at all, as SwiftShader "
+    "draws, and says the name chose them",
+    "[cli][render][device][swiftshader]") {
+  const test::TempDir dir;
+  const test::CliResult both =
+      test::RunCli({"render", kScene, "--backend", "both", "--device", "swiftshader", "-o", (dir / "b.png").string()});
+  INFO(both.out << both.err);
+  REQUIRE(both.exit_code == 0);
+  const test::CliResult r = test::RunCli(
+      {"render", kScene, "--backend", "cpu", "--device", "swiftshader", "-o", (dir / "c.png").string()}, {kNoVulkan});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("twin: SwiftShader rules ('swiftshader' asked, no device opened), SwiftShader "
+                                 "Device (Subzero), driver 5.0.0, 4 subpixel bits"));
+  CHECK_THAT(r.out, !HasSubstring("no device was asked"));
+  CHECK(ReadPng(dir / "c.png").rgba == ReadPng(dir / "b-gpu.png").rgba);
+  CHECK(ReadPng(dir / "c.png").rgba == ReadPng(dir / "b-cpu.png").rgba);
+
+  // The JSON says whose rules, and the image's notes carry SwiftShader's 4 subpixel bits to verify.
+  const test::CliResult j = test::RunCli(
+      {"render", kScene, "--backend", "cpu", "--device", "SwiftShader", "-o", (dir / "j.png").string(), "--json"},
+      {kNoVulkan});
+  REQUIRE(j.exit_code == 0);
+  const auto json = nlohmann::json::parse(j.out);
+  CHECK(json["twin_rules"]["rasterizer"] == "swiftshader");
+  CHECK(json["twin_rules"]["exact"] == true);
+  CHECK_THAT(json["twin_rules"]["text"].get<std::string>(), HasSubstring("('SwiftShader' asked, no device opened)"));
+  const test::CliResult v = test::RunCli({"verify", kScene, (dir / "j.png").string(), "--no-map"});
+  INFO(v.out << v.err);
+  CHECK(v.exit_code == 0);
+  CHECK_THAT(v.out, HasSubstring("(subpixel bits 4, strict lines)"));
+}
+
+TEST_CASE("render --backend cpu --device lavapipe says its release is assumed from the name", "[cli][render][device]") {
+  const test::TempDir dir;
+  const test::CliResult r = test::RunCli(
+      {"render", kScene, "--backend", "cpu", "--device", "lavapipe", "-o", (dir / "c.png").string()}, {kNoVulkan});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("twin: lavapipe rules, Mesa 22.3.6 (assumed: 'lavapipe' asked, no device opened)"));
+  const test::CliResult none =
+      test::RunCli({"render", kScene, "--backend", "cpu", "-o", (dir / "d.png").string()}, {kNoVulkan});
+  CHECK_THAT(none.out, HasSubstring("(assumed: no device was asked)"));
+}
+
+TEST_CASE(
+    "render --backend cpu --device with a name the twin has no rules for is refused, exit 2, one line, nothing "
+    "written",
+    "[cli][render][device]") {
+  const test::TempDir dir;
+  const auto out = dir / "keep.png";
+  std::ofstream(out) << "an earlier image";
+  for (const char* name : {"nvidia", "SwiftShader Device (LLVM)", "gpu"}) {
+    INFO(name);
+    const test::CliResult r =
+        test::RunCli({"render", kScene, "--backend", "cpu", "--device", name, "-o", out.string()}, {kNoVulkan});
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, HasSubstring("twinraster render: --device '" + std::string(name) +
+                                   "': with no device opened (--backend cpu) the twin takes its rules from the "
+                                   "name alone, and knows lavapipe"));
+    CHECK(r.out.empty());
+    CHECK(ReadFile(out) == "an earlier image");
+  }
+  const test::CliResult gpu =
+      test::RunCli({"render", kScene, "--backend", "cpu", "--device", "gpu", "-o", out.string()}, {kNoVulkan});
+  CHECK_THAT(gpu.err, HasSubstring("gpu is a backend, not a device"));
+
+  // The book's rules follow no device.
+  const test::CliResult book =
+      test::RunCli({"render", kScene, "--rules", "book", "--device", "lavapipe", "-o", out.string()}, {kNoVulkan});
+  INFO(book.err);
+  CHECK(book.exit_code == 2);
+  CHECK_THAT(book.err, HasSubstring("--device chooses Vulkan's rules, and --rules book draws by the demos'"));
+  CHECK(ReadFile(out) == "an earlier image");
+}
+
+TEST_CASE("render --help says when the twin's default draws on one thread and when on every core",
+          "[cli][render][threads]") {
+  const test::CliResult r = test::RunCli({"render", "--help"});
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("the CPU twin's threads, at most one per 16 rows (default: every core for a"));
+  CHECK_THAT(r.out, HasSubstring("frame of over 1048576 pixels or over 4096 triangles"));
+  CHECK_THAT(r.out, !HasSubstring("default: all cores"));
+}
