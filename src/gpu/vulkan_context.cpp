@@ -111,8 +111,8 @@ std::string DeviceNames(const std::vector<vk::raii::PhysicalDevice>& devices) {
 // No device answers to `wanted`: which do, and what a backend's name means.
 std::string NoDeviceNamed(const std::string& wanted, const std::vector<vk::raii::PhysicalDevice>& devices) {
   std::string text = "--device '" + wanted +
-                     "' names no usable Vulkan device here (a device answers to its common name or to any "
-                     "part of its full name, in any case); the devices: " +
+                     "' matches none (a device answers to its common name or to any part of its full name, in "
+                     "any case); the devices here: " +
                      DeviceNames(devices);
   if (const std::string hint = BackendNotDevice(wanted); !hint.empty()) text += "; " + hint;
   return text;

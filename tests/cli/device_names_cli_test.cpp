@@ -55,7 +55,9 @@ TEST_CASE("render --device with a name no device answers to lists the devices by
       test::RunCli({"render", kScene, "--device", "no such device", "-o", (dir / "n.png").string()});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 3);
-  CHECK_THAT(r.err, HasSubstring("--device 'no such device' names no usable Vulkan device here"));
+  CHECK_THAT(r.err, HasSubstring("no usable Vulkan device: --device 'no such device' matches none (a device "
+                                 "answers to its common name or to any part of its full name, in any case); the "
+                                 "devices here: "));
   CHECK_THAT(r.err, HasSubstring("lavapipe (llvmpipe (LLVM "));
   CHECK_THAT(r.err, HasSubstring("swiftshader (SwiftShader Device (Subzero))"));
   CHECK_THAT(r.err, !HasSubstring("is a backend"));
