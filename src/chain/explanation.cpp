@@ -1,5 +1,6 @@
 #include "chain/explanation.hpp"
 
+#include "base/counted.hpp"
 #include "base/usage_error.hpp"
 #include "chain/normals.hpp"
 
@@ -18,7 +19,7 @@ std::vector<std::size_t> SelectInstances(const Scene& scene, const ExplainOption
   if (options.instance) {
     if (*options.instance >= scene.instances.size()) {
       throw UsageError("--instance " + std::to_string(*options.instance) + ": the scene has " +
-                       std::to_string(scene.instances.size()) + " instance(s)");
+                       Counted(scene.instances.size(), "instance") + ValidIndices(scene.instances.size()));
     }
     selected = {*options.instance};
   } else {
