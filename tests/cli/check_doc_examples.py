@@ -16,6 +16,8 @@ What is compared after a narrow normalisation, the same on both sides:
   - this machine's lavapipe release, LLVM version and CPU path, replaced by the reference
     machine's the manual was written on (REFERENCE below), when they differ.
 
+Without files it also checks the counts of shipped scenes the manual states (STATED_COUNTS).
+
 Run as: check_doc_examples.py --exe build/bin/twinraster --source <repository> [--update] [FILE.md...]
 Without files, README.md and every docs/*.md. Exits 1 naming each drifted example (file and
 line, the documented and the actual output). --update rewrites each drifted example's output
@@ -42,6 +44,53 @@ VERSION_LINE = re.compile(r"^twinraster \d+\.\d+\.\d+( \([0-9a-zA-Z.-]+\))?$")
 RUNS_TWINRASTER = re.compile(r"^\$ (\w+=\S* )*twinraster\b")  # variables may come first
 ELIDED = "..."
 TIMEOUT_SECONDS = 120
+
+
+def scene_files(source, folder, recursive=False):
+    """The scene files (JSON) under scenes/FOLDER, but the million cubes, which no loop takes."""
+    top = os.path.join(source, "scenes", folder)
+    found = []
+    for at, _, names in os.walk(top):
+        found += [os.path.join(at, n) for n in names if n.endswith(".json") and n != "one-million-cubes.json"]
+        if not recursive:
+            break
+    return found
+
+
+# The counts of shipped scenes the manual states, each counted here: (file, the sentence with the
+# number as its group, the count). A scene added or removed makes the sentence fail until it is
+# corrected (or --update corrects it).
+STATED_COUNTS = [
+    ("docs/commands.md", r"Rendering the (\d+)\s+small scenes of `scenes/\*\.json` and `scenes/hard/`",
+     lambda source: len(scene_files(source, "") + scene_files(source, "hard"))),
+    ("docs/testing.md", r"`ShippedScenes\(\)` throws unless it finds the (\d+) scenes",
+     lambda source: len(scene_files(source, "", recursive=True))),
+    ("docs/testing.md", r"(\d+) hard scenes", lambda source: len(scene_files(source, "hard"))),
+]
+
+
+def check_stated_counts(source, update, report):
+    """How many stated counts are wrong; with update, corrects them in place."""
+    wrong = 0
+    for name, sentence, count in STATED_COUNTS:
+        path = os.path.join(source, name)
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        found = re.search(sentence, text)
+        if not found:
+            report("%s: the sentence stating a count is gone: %s (tests/cli/check_doc_examples.py)" % (name, sentence))
+            wrong += 1
+            continue
+        actual = count(source)
+        if int(found.group(1)) == actual:
+            continue
+        wrong += 1
+        line = text.count("\n", 0, found.start(1)) + 1
+        report("%s:%d: says %s, but the repository has %d" % (name, line, found.group(1), actual))
+        if update:
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text[:found.start(1)] + str(actual) + text[found.end(1):])
+    return wrong
 
 
 class Example:
@@ -238,12 +287,36 @@ def self_test(exe, source):
         check_file(exe, source, machine, page, True, lambda _: None)
         if check_file(exe, source, machine, page, False, said.append)[2] != 0:
             failures.append("%s still drifts after --update: %s" % (what, said))
+    failures += self_test_stated_counts(source, folder)
     shutil.rmtree(folder)
     for failure in failures:
         print("check_doc_examples --self-test: " + failure, file=sys.stderr)
-    print("check_doc_examples --self-test: %d of %d cases as expected" % (1 + len(wrong_pages) * 2 - len(failures),
-                                                                           1 + len(wrong_pages) * 2))
+    cases = 1 + len(wrong_pages) * 2 + 2
+    print("check_doc_examples --self-test: %d of %d cases as expected" % (cases - len(failures), cases))
     return 1 if failures else 0
+
+
+def self_test_stated_counts(source, folder):
+    """A copy of the manual's pages with one stated count off by one must fail, and pass once updated."""
+    copy = os.path.join(folder, "source")
+    os.makedirs(os.path.join(copy, "docs"))
+    os.symlink(os.path.abspath(os.path.join(source, "scenes")), os.path.join(copy, "scenes"))
+    for name in sorted({name for name, _, _ in STATED_COUNTS}):
+        shutil.copyfile(os.path.join(source, name), os.path.join(copy, name))
+    name, sentence, count = STATED_COUNTS[0]
+    with open(os.path.join(copy, name), encoding="utf-8") as f:
+        text = f.read()
+    found = re.search(sentence, text)
+    with open(os.path.join(copy, name), "w", encoding="utf-8") as f:
+        f.write(text[:found.start(1)] + str(count(source) + 1) + text[found.end(1):])
+    failures = []
+    said = []
+    if check_stated_counts(copy, False, said.append) != 1:
+        failures.append("a stated count off by one was not caught: %s" % said)
+    check_stated_counts(copy, True, lambda _: None)
+    if check_stated_counts(copy, False, said.append) != 0:
+        failures.append("a stated count still wrong after --update: %s" % said)
+    return failures
 
 
 def main():
@@ -265,7 +338,9 @@ def main():
         counts = check_file(args.exe, args.source, machine, path, args.update, print)
         totals = [a + b for a, b in zip(totals, counts)]
     run, skipped, drifted = totals
-    print("check_doc_examples: %s run, %s not run, %d drifted" %
+    if not args.files:
+        drifted += check_stated_counts(args.source, args.update, print)
+    print("check_doc_examples: %s run, %s not run, %d drifted (outputs and stated counts)" %
           (counted(run, "command"), counted(skipped, "example"), drifted))
     if run == 0:
         print("check_doc_examples: no example found: the manual's examples have moved or lost their \"$ \"")
