@@ -16,7 +16,8 @@ What is compared after a narrow normalisation, the same on both sides:
   - this machine's lavapipe release, LLVM version and CPU path, replaced by the reference
     machine's the manual was written on (REFERENCE below), when they differ.
 
-Without files it also checks the counts of shipped scenes the manual states (STATED_COUNTS).
+Without files it also checks the counts of shipped scenes the manual states (STATED_COUNTS), and
+that docs/json-output.md says what changed in every version of each --json output.
 
 Run as: check_doc_examples.py --exe build/bin/twinraster --source <repository> [--update] [FILE.md...]
 Without files, README.md and every docs/*.md. Exits 1 naming each drifted example (file and
@@ -91,6 +92,29 @@ def check_stated_counts(source, update, report):
             with open(path, "w", encoding="utf-8") as f:
                 f.write(text[:found.start(1)] + str(actual) + text[found.end(1):])
     return wrong
+
+
+def check_version_notes(source, report):
+    """How many versions of a --json output lack their row in json-output.md's "What changed in each
+    version": every version after the first, of each format the page's table of outputs names."""
+    with open(os.path.join(source, "docs", "json-output.md"), encoding="utf-8") as f:
+        text = f.read()
+    changes = re.search(r"\n## What changed in each version\n(.*?)\n## ", text, re.S)
+    if not changes:
+        report("docs/json-output.md: no \"## What changed in each version\" section")
+        return 1
+    noted = set(re.findall(r"^\| `([a-z-]+/\d+)` \|", changes.group(1), re.M))
+    current = dict(re.findall(r"^\| `twinraster [^|]*\| `twinraster\.([a-z-]+)/(\d+)` \|", text, re.M))
+    missing = 0
+    for name, version in sorted(current.items()):
+        for v in range(2, int(version) + 1):
+            if "%s/%d" % (name, v) not in noted:
+                report("docs/json-output.md: %s/%d has no row in \"What changed in each version\"" % (name, v))
+                missing += 1
+    if len(current) < 8:
+        report("docs/json-output.md: only %d outputs found in its table of outputs" % len(current))
+        missing += 1
+    return missing
 
 
 class Example:
@@ -291,13 +315,14 @@ def self_test(exe, source):
     shutil.rmtree(folder)
     for failure in failures:
         print("check_doc_examples --self-test: " + failure, file=sys.stderr)
-    cases = 1 + len(wrong_pages) * 2 + 2
+    cases = 1 + len(wrong_pages) * 2 + 3
     print("check_doc_examples --self-test: %d of %d cases as expected" % (cases - len(failures), cases))
     return 1 if failures else 0
 
 
 def self_test_stated_counts(source, folder):
-    """A copy of the manual's pages with one stated count off by one must fail, and pass once updated."""
+    """A copy of the manual's pages with one stated count off by one must fail, and pass once
+    updated; a json-output.md with a version's note missing must fail."""
     copy = os.path.join(folder, "source")
     os.makedirs(os.path.join(copy, "docs"))
     os.symlink(os.path.abspath(os.path.join(source, "scenes")), os.path.join(copy, "scenes"))
@@ -316,6 +341,13 @@ def self_test_stated_counts(source, folder):
     check_stated_counts(copy, True, lambda _: None)
     if check_stated_counts(copy, False, said.append) != 0:
         failures.append("a stated count still wrong after --update: %s" % said)
+    # json-output.md without its render/4 row.
+    with open(os.path.join(source, "docs", "json-output.md"), encoding="utf-8") as f:
+        page = f.read()
+    with open(os.path.join(copy, "docs", "json-output.md"), "w", encoding="utf-8") as f:
+        f.write(re.sub(r"^\| `render/4` \|.*\n", "", page, flags=re.M))
+    if check_version_notes(source, said.append) != 0 or check_version_notes(copy, said.append) != 1:
+        failures.append("a version of render --json with no note was not caught: %s" % said)
     return failures
 
 
@@ -340,7 +372,8 @@ def main():
     run, skipped, drifted = totals
     if not args.files:
         drifted += check_stated_counts(args.source, args.update, print)
-    print("check_doc_examples: %s run, %s not run, %d drifted (outputs and stated counts)" %
+        drifted += check_version_notes(args.source, print)
+    print("check_doc_examples: %s run, %s not run, %d drifted (outputs, stated counts, version notes)" %
           (counted(run, "command"), counted(skipped, "example"), drifted))
     if run == 0:
         print("check_doc_examples: no example found: the manual's examples have moved or lost their \"$ \"")
