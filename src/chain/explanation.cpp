@@ -32,7 +32,8 @@ std::vector<std::size_t> SelectInstances(const Scene& scene, const ExplainOption
     const Model& model = scene.models[scene.instances[i].model];
     if (*options.vertex >= model.vertices.size()) {
       throw UsageError("--vertex " + std::to_string(*options.vertex) + ": instance " + std::to_string(i) +
-                       " (model \"" + model.name + "\") has " + std::to_string(model.vertices.size()) + " vertices");
+                       " (model \"" + model.name + "\") has " + Counted(model.vertices.size(), "vertex", "vertices") +
+                       ValidIndices(model.vertices.size()));
     }
   }
   return selected;
