@@ -13,8 +13,8 @@ What the documented output may leave out (docs/testing.md, "The manual's example
 What is compared after a narrow normalisation, the same on both sides:
   - a number followed by " ms" (a timing) and the CPU twin's thread count;
   - the first line of --version ("twinraster 0.1.0 (bbfb2c9-dirty)": the version and git describe);
-  - this machine's lavapipe release, LLVM version and CPU path, replaced by the reference
-    machine's the manual was written on (REFERENCE below), when they differ.
+  - this machine's lavapipe device name, release, LLVM version and CPU path, replaced by the
+    reference machine's the manual was written on (REFERENCE below), when they differ.
 
 Without files it also checks the counts of shipped scenes the manual states (STATED_COUNTS), and
 that docs/json-output.md says what changed in every version of each --json output.
@@ -36,7 +36,8 @@ import sys
 import tempfile
 
 # The machine the documented outputs come from: Debian 12's lavapipe on an AVX2 CPU.
-REFERENCE = {"mesa": "22.3.6", "llvm": "15.0.6", "cpu_path": "x86-64 AVX2+FMA, 256-bit"}
+REFERENCE = {"mesa": "22.3.6", "llvm": "15.0.6", "cpu_path": "x86-64 AVX2+FMA, 256-bit",
+             "device": "llvmpipe (LLVM 15.0.6, 256 bits)"}
 
 SKIP = re.compile(r"<!--\s*example:\s*not run:\s*(.+?)\s*-->")
 TIMING = re.compile(r"\b\d+(\.\d+)? ms\b")
@@ -158,19 +159,24 @@ class Machine:
         text = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=TIMEOUT_SECONDS).stdout
         path = re.search(r"^lavapipe's CPU path on this machine: (.+)$", text, re.M)
         release = re.search(r"llvmpipe, Mesa (\S+) \(LLVM (\S+)\)", text)
-        self.swaps = []
+        self.swaps = []  # (this machine's text as a pattern, the reference's)
+        device = re.search(r"^  (llvmpipe \([^)]*\)): ", text, re.M)
+        if device and device.group(1) != REFERENCE["device"]:
+            self.swaps.append((re.escape(device.group(1)), REFERENCE["device"]))
         if path and path.group(1) != REFERENCE["cpu_path"]:
-            self.swaps.append((path.group(1), REFERENCE["cpu_path"]))
+            self.swaps.append((re.escape(path.group(1)), REFERENCE["cpu_path"]))
         if release:
             mesa, llvm = release.groups()
+            # Not in --version's table of known releases, which names LLVM by its major alone:
+            # "Mesa 25.0.7 (LLVM 19), ..." is the same text on every machine.
             if mesa != REFERENCE["mesa"]:
-                self.swaps.append(("Mesa " + mesa, "Mesa " + REFERENCE["mesa"]))
+                self.swaps.append((re.escape("Mesa " + mesa) + r"(?! \(LLVM \d+\))", "Mesa " + REFERENCE["mesa"]))
             if llvm != REFERENCE["llvm"]:
-                self.swaps.append(("LLVM " + llvm, "LLVM " + REFERENCE["llvm"]))
+                self.swaps.append((re.escape("LLVM " + llvm) + r"\b", "LLVM " + REFERENCE["llvm"]))
 
     def as_reference(self, line):
         for here, there in self.swaps:
-            line = line.replace(here, there)
+            line = re.sub(here, there, line)
         return line
 
 
