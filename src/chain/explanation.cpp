@@ -1,5 +1,6 @@
 #include "chain/explanation.hpp"
 
+#include "base/counted.hpp"
 #include "base/usage_error.hpp"
 #include "chain/normals.hpp"
 
@@ -18,7 +19,7 @@ std::vector<std::size_t> SelectInstances(const Scene& scene, const ExplainOption
   if (options.instance) {
     if (*options.instance >= scene.instances.size()) {
       throw UsageError("--instance " + std::to_string(*options.instance) + ": the scene has " +
-                       std::to_string(scene.instances.size()) + " instance(s)");
+                       Counted(scene.instances.size(), "instance") + ValidIndices(scene.instances.size()));
     }
     selected = {*options.instance};
   } else {
@@ -31,7 +32,8 @@ std::vector<std::size_t> SelectInstances(const Scene& scene, const ExplainOption
     const Model& model = scene.models[scene.instances[i].model];
     if (*options.vertex >= model.vertices.size()) {
       throw UsageError("--vertex " + std::to_string(*options.vertex) + ": instance " + std::to_string(i) +
-                       " (model \"" + model.name + "\") has " + std::to_string(model.vertices.size()) + " vertices");
+                       " (model \"" + model.name + "\") has " + Counted(model.vertices.size(), "vertex", "vertices") +
+                       ValidIndices(model.vertices.size()));
     }
   }
   return selected;

@@ -2,6 +2,7 @@
 // bench.csv, bench.svg, bench.html, bench.json and bench.txt (all staged, so all or none are
 // replaced); --html and --svg write the page or the plot anywhere. --scale, --verify and --loaders
 // run the other benches instead.
+#include "base/counted.hpp"
 #include "base/usage_error.hpp"
 #include "bench/bench_suite.hpp"
 #include "bench/loader_bench.hpp"
@@ -76,7 +77,7 @@ int BenchScale(const BenchArguments& a) {
   if (progress.active()) {
     options.on_row = [&progress](const ScaleRow& row, std::size_t done, std::size_t total) {
       progress.Line("scale " + std::to_string(done) + "/" + std::to_string(total) + ": " +
-                    std::to_string(row.instances) + " instances");
+                    Counted(row.instances, "instance"));
     };
   }
   const ScaleResult result = RunScaleBench(options);
@@ -110,8 +111,7 @@ int BenchVerify(const BenchArguments& a) {
     }
   }
   Progress progress = Progress::OnStandardError(a.quiet);
-  progress.Status("verify bench: " + std::to_string(scenes.size()) + " scene(s), " + std::to_string(a.runs) +
-                  " run(s)...");
+  progress.Status("verify bench: " + Counted(scenes.size(), "scene") + ", " + Counted(a.runs, "run") + "...");
   // The whole processes are this very executable, started as a user starts it.
   const VerifyBenchResult result = RunVerifyBench(scenes, a.runs, std::filesystem::read_symlink("/proc/self/exe"));
   progress.Clear();
@@ -134,7 +134,7 @@ int BenchLoaders(const BenchArguments& a) {
         (a.gltf == kDefaultLoaderBenchAsset ? " (Debian's assimp-testmodels: scripts/setup.sh --tests)" : ""));
   }
   Progress progress = Progress::OnStandardError(a.quiet);
-  progress.Status("loaders bench: " + a.gltf + ", " + std::to_string(a.runs) + " run(s)...");
+  progress.Status("loaders bench: " + a.gltf + ", " + Counted(a.runs, "run") + "...");
   const LoaderBenchResult result = RunLoaderBench({.gltf = a.gltf,
                                                    .runs = a.runs,
                                                    .memory_runs = std::min(a.runs, 5),

@@ -1,5 +1,6 @@
 #include "report/batch_page.hpp"
 
+#include "base/counted.hpp"
 #include "image/thumbnail.hpp"
 #include "report/markup.hpp"
 #include "report/render_outputs.hpp"
@@ -112,7 +113,7 @@ std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std:
                           double total_ms) {
   const BatchSummary s = Summarize(records, total_ms);
   std::ostringstream page;
-  page << PageStart("twinraster render: " + std::to_string(s.scenes) + " scenes") << "<h1>twinraster render</h1>\n";
+  page << PageStart("twinraster render: " + Counted(s.scenes, "scene")) << "<h1>twinraster render</h1>\n";
   page << "<table class=\"summary\" id=\"summary\"><tr>";
   const std::pair<const char*, std::size_t> counts[] = {{"scenes", s.scenes},       {"identical", s.identical},
                                                         {"verified", s.verified},   {"inconclusive", s.inconclusive},

@@ -1,5 +1,6 @@
 #include "report/bench_pages.hpp"
 
+#include "base/counted.hpp"
 #include "report/markup.hpp"
 #include "report/svg_plot.hpp"
 
@@ -68,7 +69,7 @@ std::string BenchChartSvg(const BenchResult& result) {
 std::string BenchPageHtml(const BenchResult& result, const std::string& table) {
   std::ostringstream page;
   page << PageStart("twinraster bench") << "<h1>twinraster bench</h1>\n<p>" << Escape(result.machine) << "; medians of "
-       << result.runs << " run(s), " << Number(result.seconds, 3) << " s in all.</p>\n";
+       << Counted(result.runs, "run") << ", " << Number(result.seconds, 3) << " s in all.</p>\n";
   page << Section(
       "Speed against error",
       "<p>Each way of computing the chain (compose-f64: F composed in double and rounded once; compose-f32: "
@@ -110,7 +111,7 @@ std::string ScaleChartSvg(const ScaleResult& result) {
   PlotSeries twin{"CPU twin", "#9467bd", {}, true}, judge{"verifier", "#17becf", {}, true};
   for (const ScaleRow& r : result.rows) {
     const double n = static_cast<double>(r.instances);
-    const std::string label = std::to_string(r.instances) + " instances";
+    const std::string label = Counted(r.instances, "instance");
     gpu.points.push_back({n, r.gpu_setup_ms + r.gpu_draw_ms, label});
     pushed.points.push_back({n, r.gpu_per_draw_ms, label});
     twin.points.push_back({n, r.twin_setup_ms + r.twin_draw_ms, label});
@@ -141,8 +142,7 @@ std::string ScaleStagesSvg(const ScaleResult& result) {
   for (const Stage& stage : stages) {
     PlotSeries s{stage.name, stage.colour, {}, true};
     for (const ScaleRow& r : result.rows) {
-      s.points.push_back(
-          {static_cast<double>(r.instances), r.*stage.value, std::to_string(r.instances) + " instances"});
+      s.points.push_back({static_cast<double>(r.instances), r.*stage.value, Counted(r.instances, "instance")});
     }
     plot.series.push_back(std::move(s));
   }
@@ -152,7 +152,7 @@ std::string ScaleStagesSvg(const ScaleResult& result) {
 std::string ScalePageHtml(const ScaleResult& result, const std::string& table) {
   std::ostringstream page;
   page << PageStart("twinraster bench --scale") << "<h1>twinraster bench --scale</h1>\n<p>" << Escape(result.machine)
-       << "; cubes written out one instance each; medians of " << result.runs << " run(s).</p>\n";
+       << "; cubes written out one instance each; medians of " << Counted(result.runs, "run") << ".</p>\n";
   page << Section("Lavapipe, the twin and the verifier",
                   "<p>Drawing a frame on lavapipe (F in an instance buffer, or pushed per draw as in Listing 10-5), on "
                   "the CPU twin, and judging the twin's image with the verifier.</p>\n");

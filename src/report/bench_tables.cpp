@@ -1,5 +1,6 @@
 #include "report/bench_tables.hpp"
 
+#include "base/counted.hpp"
 #include "bench/vertex_methods.hpp"
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 namespace twinraster::report {
 
@@ -38,8 +40,8 @@ const BenchRow* Find(const BenchResult& result, const std::string& scene, const 
 }
 
 struct ZFightOnset {
-  std::optional<double> ratio;  // the largest near/far ratio that z-fights; none: no ratio tried does
-  double smallest_tried = 1;
+  std::optional<double> ratio;           // the largest near/far ratio that z-fights; none: no ratio tried does
+  std::optional<double> smallest_tried;  // none: no depth-ratio scene ran, so nothing was measured
 };
 
 // From the depth-ratio scenes' CPU twin rows ("hard/depth-ratio-1e-4" is near/far = 1e-4).
@@ -50,10 +52,16 @@ ZFightOnset Onset(const BenchResult& result, bool reversed) {
     if (at == std::string::npos || r.method != "cpu-twin" || !r.z_fighting_px) continue;
     if ((r.scene.find("reversed") != std::string::npos) != reversed) continue;
     const double ratio = std::pow(10.0, -std::atof(r.scene.c_str() + at + 15));
-    onset.smallest_tried = std::min(onset.smallest_tried, ratio);
+    onset.smallest_tried = std::min(onset.smallest_tried.value_or(ratio), ratio);
     if (*r.z_fighting_px > 0 && (!onset.ratio || ratio > *onset.ratio)) onset.ratio = ratio;
   }
   return onset;
+}
+
+// A summary section: its heading, then its lines; nothing at all when it has no line, so that a run
+// of a few scenes shows no heading for the scenes it left out.
+void PutSection(std::ostream& out, const std::string& heading, const std::string& lines) {
+  if (!lines.empty()) out << heading << "\n" << lines;
 }
 
 // The scene with the most vertices gives the steadiest per-vertex cost.
@@ -140,28 +148,34 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
 }
 
 std::string BenchSummary(const BenchResult& result) {
-  std::ostringstream out;
-  out << "Vertex error at 1e7 units from the origin (hard/far-1e7, 1920x1080), max over vertices:\n";
+  std::ostringstream out, lines;
   for (VertexMethod m : kAllMethods) {
     const std::string method(MethodName(m));
     if (const BenchRow* r = Find(result, "hard/far-1e7", method))
-      out << "  " << method << ": " << Sci(r->vertex_error_px) << " px"
-          << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
+      lines << "  " << method << ": " << Sci(r->vertex_error_px) << " px"
+            << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
   }
-  out << "Z-fighting onset (D32_SFLOAT, plates 0.02 apart at ~45 units; largest near/far that fights):\n";
+  PutSection(out, "Vertex error at 1e7 units from the origin (hard/far-1e7, 1920x1080), max over vertices:",
+             std::exchange(lines, {}).str());
   for (const bool reversed : {false, true}) {
     const ZFightOnset onset = Onset(result, reversed);
-    out << "  " << (reversed ? "reversed Z: " : "standard Z: ")
-        << (onset.ratio ? "near/far = " + Sci(*onset.ratio) : "none down to near/far = " + Sci(onset.smallest_tried))
-        << "\n";
+    if (!onset.smallest_tried) continue;  // "none" is a result only where a depth-ratio scene ran
+    lines << "  " << (reversed ? "reversed Z: " : "standard Z: ")
+          << (onset.ratio ? "near/far = " + Sci(*onset.ratio) : "none down to near/far = " + Sci(*onset.smallest_tried))
+          << "\n";
   }
+  PutSection(out, "Z-fighting onset (D32_SFLOAT, plates 0.02 apart at ~45 units; largest near/far that fights):",
+             std::exchange(lines, {}).str());
   if (const BenchRow* largest = Largest(result)) {
-    out << "Vertex stage, ms per million vertices (" << largest->scene << ", " << largest->vertices << " vertices):\n";
     for (VertexMethod m : kAllMethods) {
       const std::string method(MethodName(m));
       if (const BenchRow* r = Find(result, largest->scene, method))
-        out << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
+        lines << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
     }
+    PutSection(out,
+               "Vertex stage, ms per million vertices (" + largest->scene + ", " +
+                   Counted(largest->vertices, "vertex", "vertices") + "):",
+               std::exchange(lines, {}).str());
   }
   for (const DevicePair& pair : kDevicePairs) {
     const std::vector<unsigned> counts = ThreadCounts(result, pair.device);
@@ -205,7 +219,8 @@ std::string BenchTable(const BenchResult& result) {
   }
   out << "colour err: lit scenes only, the largest channel difference (0-255) from the truth's colours, over the\n"
          "pixels where the method shows the same triangle as the truth (how many in brackets)\n";
-  out << "medians of " << result.runs << " runs; " << result.machine << "; " << Fixed(result.seconds, 1) << " s\n\n";
+  out << "medians of " << Counted(result.runs, "run") << "; " << result.machine << "; " << Fixed(result.seconds, 1)
+      << " s\n\n";
   out << BenchSummary(result);
   return out.str();
 }

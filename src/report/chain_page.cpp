@@ -1,5 +1,6 @@
 #include "report/chain_page.hpp"
 
+#include "base/counted.hpp"
 #include "report/markup.hpp"
 
 #include <algorithm>
@@ -386,7 +387,7 @@ std::string PageHead(const Explanation& e, const Trace& t, const std::string& in
        << "<p>F = M_Projection · M_Camera · M_Model, computed in double by the host, takes " << Escape(vertex_name)
        << " of " << Escape(instance_name) << " from model space to the canvas. Each panel draws one space with the "
        << "matrix that leads into it and where the vertex (red) lands there. " << e.instances.size() << " of "
-       << e.scene->instances.size() << " instances shown"
+       << Counted(e.scene->instances.size(), "instance") << " shown"
        << (t.all_instances ? "" : " (edges of the traced instance only: the mesh is large)") << ".</p>\n";
   return page.str();
 }

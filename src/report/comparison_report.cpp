@@ -1,5 +1,7 @@
 #include "report/comparison_report.hpp"
 
+#include "base/counted.hpp"
+
 #include <nlohmann/json.hpp>
 
 namespace twinraster::report {
@@ -31,9 +33,9 @@ std::string ComparisonText(const Image& a, const Image& b, const Comparison& c) 
 }
 
 std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c) {
-  return std::to_string(width) + " x " + std::to_string(height) + ": " + std::to_string(c.differing_pixels) +
-         " differing pixels, max channel difference " + std::to_string(c.max_channel_difference) +
-         (c.Equal() ? " (identical)" : "");
+  return std::to_string(width) + " x " + std::to_string(height) + ": " +
+         Counted(c.differing_pixels, "differing pixel") + ", max channel difference " +
+         std::to_string(c.max_channel_difference) + (c.Equal() ? " (identical)" : "");
 }
 
 }  // namespace twinraster::report

@@ -1,5 +1,7 @@
 #include "report/coverage_report.hpp"
 
+#include "base/counted.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <sstream>
@@ -18,8 +20,6 @@ nlohmann::ordered_json PositionJson(const std::optional<verify::CoveragePosition
   if (!p) return nullptr;
   return {{"x", p->x}, {"y", p->y}, {"colour", ColourJson(p->colour)}};
 }
-
-std::string Plural(std::uint64_t n, const char* one, const char* many) { return n == 1 ? one : many; }
 
 }  // namespace
 
@@ -49,8 +49,8 @@ std::string CoverageText(const verify::CoverageVerification& c) {
     << (c.background_given ? " (--background)" : " (the scene's)") << " where a primitive certainly covers";
   if (c.first_hole) s << " (first at (" << c.first_hole->x << ", " << c.first_hole->y << "))";
   if (c.hole_tolerance_percent > 0) {
-    s << ", " << c.holes_allowed << Plural(c.holes_allowed, " hole", " holes") << " allowed ("
-      << c.hole_tolerance_percent << " % of those certainly covered)" << (c.HolesWithin() ? ": within" : ": beyond");
+    s << ", " << Counted(c.holes_allowed, "hole") << " allowed (" << c.hole_tolerance_percent
+      << " % of those certainly covered)" << (c.HolesWithin() ? ": within" : ": beyond");
   }
   if (verdict == verify::Judgement::kInconclusive) s << "; " << CoverageInconclusiveReason(c);
   s << " (subpixel bits " << c.rules.subpixel_bits << (c.rules.strict_lines ? ", strict lines)" : ")");

@@ -1,5 +1,6 @@
 #include "report/explain_text.hpp"
 
+#include "base/counted.hpp"
 #include "scene/model_reader.hpp"
 
 #include <algorithm>
@@ -107,8 +108,9 @@ void PrintInstanceCount(std::ostream& out, const Explanation& e) {
     char grid[256];
     std::snprintf(grid, sizeof grid, "%u x %u x %u grid, spacing (%.6g, %.6g, %.6g)", g.count[0], g.count[1],
                   g.count[2], g.spacing.x, g.spacing.y, g.spacing.z);
-    out << "\n  instances[" << g.written << "] of the file is a " << grid << ": " << g.copies() << " copies, instances "
-        << g.first << ".." << g.first + g.copies() - 1 << ", i fastest";
+    out << "\n  instances[" << g.written << "] of the file is a " << grid << ": "
+        << Counted(g.copies(), "copy", "copies") << ", instances " << g.first << ".." << g.first + g.copies() - 1
+        << ", i fastest";
   }
   if (!e.options.instance && e.instances.size() < scene.instances.size()) {
     out << "\n  the first " << e.instances.size() << " are traced below; pick any other with --instance I";

@@ -1,3 +1,4 @@
+#include "base/counted.hpp"
 #include "report/bench_tables.hpp"
 
 #include <nlohmann/json.hpp>
@@ -24,9 +25,9 @@ nlohmann::ordered_json KibJson(const ProcessCost& cost) {
 }
 
 void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
-  s << "\nWhole processes: wall time, medians of " << result.runs
-    << " run(s) in turn; peak resident memory by /usr/bin/time -f %M, medians of " << result.memory_runs
-    << " run(s) (- without /usr/bin/time): render -q FILE --backend cpu -o OUT.png; explain FILE --json (its "
+  s << "\nWhole processes: wall time, medians of " << Counted(result.runs, "run")
+    << " in turn; peak resident memory by /usr/bin/time -f %M, medians of " << Counted(result.memory_runs, "run")
+    << " (- without /usr/bin/time): render -q FILE --backend cpu -o OUT.png; explain FILE --json (its "
        "output thrown away)\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-20s | %10s %12s | %10s %12s\n", "file", "render ms", "max RSS KiB", "explain ms",
@@ -46,12 +47,12 @@ void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
 
 std::string LoaderBenchTable(const LoaderBenchResult& result) {
   std::ostringstream s;
-  s << "Loaders: one scene from each file, file to Scene (LoadSceneOrObj); time: medians of " << result.runs
-    << " run(s) in turn; memory: medians of " << result.memory_runs << " forked child(ren) per file; " << result.machine
-    << "\n";
-  s << "asset " << result.asset << ": " << result.models << " models, " << result.instances << " instances, "
-    << result.vertices << " vertices, " << result.triangles << " triangles stored (" << result.drawn_triangles
-    << " drawn)\n";
+  s << "Loaders: one scene from each file, file to Scene (LoadSceneOrObj); time: medians of "
+    << Counted(result.runs, "run") << " in turn; memory: medians of "
+    << Counted(result.memory_runs, "forked child", "forked children") << " per file; " << result.machine << "\n";
+  s << "asset " << result.asset << ": " << Counted(result.models, "model") << ", "
+    << Counted(result.instances, "instance") << ", " << Counted(result.vertices, "vertex", "vertices") << ", "
+    << Counted(result.triangles, "triangle") << " stored (" << result.drawn_triangles << " drawn)\n";
   char line[320];
   std::snprintf(line, sizeof line, "%-10s %10s | %8s %8s %7s %6s | %9s %7s %6s | %9s %7s %6s | %s\n", "file", "bytes",
                 "load ms", "ns/tri", "ns/B", "ratio", "peak KiB", "B/tri", "ratio", "heap KiB", "B/tri", "ratio",

@@ -1,5 +1,6 @@
 #include "report/render_outputs.hpp"
 
+#include "base/counted.hpp"
 #include "report/comparison_report.hpp"
 #include "report/verify_report.hpp"
 
@@ -63,8 +64,8 @@ std::string RenderText(const run::RunRecord& r, bool verify_asked) {
   std::ostringstream out;
   std::ostringstream head;
   head.precision(3);
-  head << std::fixed << r.scene << ": " << r.instances << (r.instances == 1 ? " instance, " : " instances, ")
-       << r.triangles << " triangles, " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
+  head << std::fixed << r.scene << ": " << Counted(r.instances, "instance") << ", " << Counted(r.triangles, "triangle")
+       << ", " << r.width << " x " << r.height << ", loaded in " << r.load_ms << " ms";
   out << head.str() << "\n";
   for (const run::BackendRecord& b : r.backends) out << BackendText(b) << "\n";
   if (r.twin) out << "twin: " << r.twin->text << "\n";

@@ -1,3 +1,4 @@
+#include "base/counted.hpp"
 #include "gpu/draw_batches.hpp"
 #include "report/bench_tables.hpp"
 
@@ -32,7 +33,8 @@ constexpr std::array<Stage, 9> kStages = {{
 // The fixed costs: what a scene costs beyond its drawing, as whole processes.
 void PutProcessTimes(std::ostringstream& s, const ProcessTimes& p) {
   char line[256];
-  s << "Fixed costs: whole processes, medians of " << p.runs << " run(s) in turn (the batch: " << p.batch_runs << ")\n";
+  s << "Fixed costs: whole processes, medians of " << Counted(p.runs, "run") << " in turn (the batch: " << p.batch_runs
+    << ")\n";
   const auto put = [&](const char* what, double ms, const std::string& note) {
     std::snprintf(line, sizeof line, "  %-70s %9.1f ms  %s\n", what, ms, note.c_str());
     s << line;
@@ -52,8 +54,8 @@ void PutProcessTimes(std::ostringstream& s, const ProcessTimes& p) {
       p.driver_floor_ms > 0 ? ratio : "");
   std::snprintf(ratio, sizeof ratio, "%.2f ms a scene",
                 p.batch_scenes > 0 ? p.batch_ms / static_cast<double>(p.batch_scenes) : 0.0);
-  const std::string batch = "render " + std::to_string(p.batch_scenes) + " scenes " + std::to_string(p.batch_side) +
-                            "x" + std::to_string(p.batch_side) + ", both backends, --report, --junit";
+  const std::string batch = "render " + Counted(p.batch_scenes, "scene") + " " + std::to_string(p.batch_side) + "x" +
+                            std::to_string(p.batch_side) + ", both backends, --report, --junit";
   put(batch.c_str(), p.batch_ms, ratio);
 }
 
@@ -64,7 +66,7 @@ double PngMegabytesPerSecond(const ScaleResult& result, const PngEncoding& e) {
 
 void PutPngEncodings(std::ostringstream& s, const ScaleResult& result) {
   s << "PNG: each size's frame (the twin's, " << result.width << "x" << result.height
-    << ") by each encoder, medians of " << result.runs << " run(s)\n";
+    << ") by each encoder, medians of " << Counted(result.runs, "run") << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%10s  %-30s %9s %12s %9s\n", "instances", "encoder", "ms", "bytes", "MB/s");
   s << line;
@@ -97,8 +99,8 @@ std::string ExtraTables(const ScaleResult& result) {
 
 std::string ScaleTable(const ScaleResult& result) {
   std::ostringstream s;
-  s << "Scale: cubes written out one instance each, medians of " << result.runs << " run(s); " << result.machine
-    << "\n";
+  s << "Scale: cubes written out one instance each, medians of " << Counted(result.runs, "run") << "; "
+    << result.machine << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%10s %10s %9s |%8s %8s %9s %9s %9s %9s %9s %7s %8s |%8s  %s\n", "instances",
                 "triangles", "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw",
@@ -115,8 +117,8 @@ std::string ScaleTable(const ScaleResult& result) {
   s << "(milliseconds; per-draw: lavapipe's set-up + draw with F pushed per draw, against gpu set-up + draw as a user\n"
        " gets it, instanced from "
     << gpu::kInstancingThreshold << " draws of a mesh on; twin on "
-    << (result.rows.empty() ? 0 : result.rows.front().threads)
-    << " thread(s); verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after "
+    << Counted(result.rows.empty() ? 0 : result.rows.front().threads, "thread")
+    << "; verify: the verifier judging the twin's image; peak MB: the process's peak resident memory after "
        "that size)\n";
   const std::string extra = ExtraTables(result);
   if (!extra.empty()) s << "\n" << extra;

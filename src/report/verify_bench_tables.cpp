@@ -1,3 +1,4 @@
+#include "base/counted.hpp"
 #include "report/bench_tables.hpp"
 
 #include <nlohmann/json.hpp>
@@ -12,8 +13,8 @@ namespace {
 
 // The same scenes as whole processes: what a user running `render` and then `verify` waits for.
 void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
-  s << "\nWhole processes, medians of " << result.runs
-    << " run(s) in turn: render SCENE --backend cpu -o OUT.png; verify SCENE IMAGE.png of the twin's image "
+  s << "\nWhole processes, medians of " << Counted(result.runs, "run")
+    << " in turn: render SCENE --backend cpu -o OUT.png; verify SCENE IMAGE.png of the twin's image "
        "(passes) and of it shifted one pixel right (fails)\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-36s | %9s | %12s %6s | %12s %6s\n", "scene", "render ms", "verify ms", "ratio",
@@ -33,8 +34,8 @@ void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
 
 std::string VerifyBenchTable(const VerifyBenchResult& result) {
   std::ostringstream s;
-  s << "Verify: the twin's render against the verifier's judgement of it, medians of " << result.runs << " run(s); "
-    << result.machine << "\n";
+  s << "Verify: the twin's render against the verifier's judgement of it, medians of " << Counted(result.runs, "run")
+    << "; " << result.machine << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles",
                 "twin ms", "verify ms", "ratio", "uncertain", "violations");
@@ -52,8 +53,8 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   // The twin chooses its threads per scene (one for a small frame), so each row's are given.
   std::string threads;
   for (const VerifyBenchRow& r : result.rows) threads += (threads.empty() ? "" : ", ") + std::to_string(r.twin_threads);
-  s << "(twin: RenderOnCpu as render runs it, on " << threads
-    << " thread(s) row by row; verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware "
+  s << "(twin: RenderOnCpu as render runs it, row by row, on each scene's threads: " << threads
+    << "; verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware "
        "thread; uncertain: of the covered pixels)\n";
   if (!result.processes.empty()) PutProcesses(s, result);
   return s.str();

@@ -1,5 +1,6 @@
 #include "scene/gltf_document.hpp"
 
+#include "base/counted.hpp"
 #include "scene/gltf_container.hpp"
 #include "scene/gltf_parse.hpp"
 #include "scene/json_document.hpp"
@@ -228,12 +229,11 @@ void NoteUndrawn(const JsonReader& root, GltfDocument& doc) {
     const std::optional<JsonReader> array = root.Find(key);
     return array && array->IsArray() ? array->ExpectArray() : 0;
   };
-  if (const std::size_t n = count("animations"))
-    doc.ignored.push_back(std::to_string(n) + " animation(s): drawn at rest");
+  if (const std::size_t n = count("animations")) doc.ignored.push_back(Counted(n, "animation") + ": drawn at rest");
   if (const std::size_t n = count("skins"))
-    doc.ignored.push_back(std::to_string(n) + " skin(s): meshes drawn at rest, unskinned");
+    doc.ignored.push_back(Counted(n, "skin") + ": meshes drawn at rest, unskinned");
   if (const std::size_t n = count("images")) {
-    doc.ignored.push_back(std::to_string(n) + " image(s): textures are not drawn, and no image is decoded");
+    doc.ignored.push_back(Counted(n, "image") + ": textures are not drawn, and no image is decoded");
   }
 }
 

@@ -1,4 +1,5 @@
 // The glTF reader's materials, meshes and cameras (gltf_parse.hpp).
+#include "base/counted.hpp"
 #include "scene/gltf_parse.hpp"
 
 #include <cmath>
@@ -97,7 +98,7 @@ void ReadAttributes(const JsonReader& attributes, const GltfDocument& doc, GltfP
     const JsonReader r = *attributes.Find(key);
     const std::uint64_t n = doc.accessors[ReadIndex(r, doc.accessors.size(), "accessors")].count;
     if (n != count) {
-      r.Fail(std::string(key) + " has " + std::to_string(n) + " elements, POSITION " + std::to_string(count) +
+      r.Fail(std::string(key) + " has " + Counted(n, "element") + ", POSITION " + std::to_string(count) +
              ": every attribute of a primitive has the same count");
     }
   }

@@ -1,4 +1,5 @@
 // A glTF primitive as a model (gltf_build.hpp).
+#include "base/counted.hpp"
 #include "scene/gltf_accessors.hpp"
 #include "scene/gltf_build.hpp"
 #include "scene/scene_error.hpp"
@@ -50,7 +51,7 @@ std::vector<std::uint32_t> VertexOrder(const GltfDocument& doc, const GltfPrimit
     if (order[i] >= vertices) {
       throw SceneError(doc.file, where + ".indices",
                        "element " + std::to_string(i) + " is vertex " + std::to_string(order[i]) + ", past the " +
-                           std::to_string(vertices) + " vertices of POSITION");
+                           Counted(vertices, "vertex", "vertices") + " of POSITION");
     }
   }
   return order;

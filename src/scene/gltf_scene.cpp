@@ -1,5 +1,6 @@
 #include "scene/gltf_scene.hpp"
 
+#include "base/counted.hpp"
 #include "scene/framing.hpp"
 #include "scene/gltf_build.hpp"
 #include "scene/scene_error.hpp"
@@ -69,7 +70,7 @@ std::optional<std::size_t> ChosenScene(const GltfDocument& doc, const SceneChoic
     if (*choice.scene >= doc.scenes.size()) {
       throw SceneError(doc.file, "scenes",
                        "--scene " + std::to_string(*choice.scene) + ": the file has " +
-                           std::to_string(doc.scenes.size()) + " scene(s)");
+                           Counted(doc.scenes.size(), "scene") + ValidIndices(doc.scenes.size()));
     }
     return choice.scene;
   }
@@ -138,12 +139,12 @@ void NoteUndrawn(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& w
       single_sided += !(p.material && doc.materials[*p.material].double_sided);
     }
   }
-  if (textured) scene.notes.push_back(std::to_string(textured) + " textured primitive(s): drawn in their base colour");
-  if (skinned) scene.notes.push_back(std::to_string(skinned) + " skinned primitive(s): drawn at rest, unskinned");
-  if (morphed) scene.notes.push_back(std::to_string(morphed) + " primitive(s) with morph targets: drawn without them");
+  if (textured) scene.notes.push_back(Counted(textured, "textured primitive") + ": drawn in their base colour");
+  if (skinned) scene.notes.push_back(Counted(skinned, "skinned primitive") + ": drawn at rest, unskinned");
+  if (morphed) scene.notes.push_back(Counted(morphed, "primitive") + " with morph targets: drawn without them");
   if (single_sided) {
-    scene.notes.push_back(std::to_string(single_sided) +
-                          " single-sided primitive(s): drawn from both sides, as the chapter draws; an engine that "
+    scene.notes.push_back(Counted(single_sided, "single-sided primitive") +
+                          ": drawn from both sides, as the chapter draws; an engine that "
                           "culls their back faces may leave holes where one shows (docs/verify.md)");
   }
   scene.notes.insert(scene.notes.end(), doc.ignored.begin(), doc.ignored.end());

@@ -1,5 +1,6 @@
 #include "scene/model_reader.hpp"
 
+#include "base/counted.hpp"
 #include "scene/gltf_document.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/obj_file.hpp"
@@ -48,8 +49,8 @@ std::vector<Rgb8> ReadVertexColours(const JsonReader& model, std::size_t vertex_
   if (!r->IsArray()) r->Fail("expected a list of colours, one per vertex, found " + r->TypeName());
   const std::size_t count = r->ExpectArray();
   if (count != vertex_count) {
-    r->Fail(std::to_string(count) + " colours for " + std::to_string(vertex_count) +
-            " vertices: give one colour per vertex");
+    r->Fail(Counted(count, "colour") + " for " + Counted(vertex_count, "vertex", "vertices") +
+            ": give one colour per vertex");
   }
   std::vector<Rgb8> colours;
   colours.reserve(count);

@@ -59,6 +59,33 @@ TEST_CASE("bench --json keeps every summary key whatever ran: null where nothing
   REQUIRE(summary["cpu_twin_over_swiftshader"] == nlohmann::json::array());
 }
 
+TEST_CASE("bench's summary has a section only for what ran, and says none down to a ratio only when measured",
+          "[bench][cli]") {
+  const std::string scenes = test::SourcePath("scenes").string();
+  const test::CliResult chapter = test::RunCli(
+      {"bench", "--runs", "1", "--only", "cgfs-scene", "--methods", "compose-f64,cpu-twin", "--scenes", scenes});
+  INFO(chapter.out << chapter.err);
+  REQUIRE(chapter.exit_code == 0);
+  CHECK_THAT(chapter.out, HasSubstring("medians of 1 run; "));
+  CHECK_THAT(chapter.out, HasSubstring("Vertex stage, ms per million vertices (cgfs-scene, 8 vertices):\n"
+                                       "  compose-f64: "));
+  CHECK(chapter.out.find("Vertex error at 1e7") == std::string::npos);  // hard/far-1e7 did not run
+  CHECK(chapter.out.find("Z-fighting") == std::string::npos);           // nor any depth-ratio scene
+  CHECK(chapter.out.find("none down to") == std::string::npos);
+
+  // One standard depth-ratio scene on the twin: its line is a measured result, the reversed one
+  // (not run) is left out, and with no vertex method there is no vertex-stage heading.
+  const test::CliResult depth = test::RunCli(
+      {"bench", "--runs", "1", "--only", "depth-ratio-1e-1.json", "--methods", "cpu-twin", "--scenes", scenes});
+  INFO(depth.out << depth.err);
+  REQUIRE(depth.exit_code == 0);
+  CHECK_THAT(depth.out,
+             HasSubstring("largest near/far that fights):\n  standard Z: none down to near/far = 1.00e-01\n"));
+  CHECK(depth.out.find("reversed Z:") == std::string::npos);
+  CHECK(depth.out.find("Vertex stage") == std::string::npos);
+  CHECK(depth.out.find("Vertex error at 1e7") == std::string::npos);
+}
+
 TEST_CASE("RunBench reports each row through on_row as it is measured, in order, numbered of the total", "[bench]") {
   BenchOptions options;
   options.scenes_dir = test::SourcePath("scenes");

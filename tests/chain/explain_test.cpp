@@ -93,10 +93,10 @@ TEST_CASE("explain --instance and --vertex select one trace, and reject indices 
 
   const test::CliResult bad_instance = test::RunCli({"explain", scene, "--instance", "2"});
   REQUIRE(bad_instance.exit_code == 2);
-  REQUIRE(bad_instance.err.find("--instance 2: the scene has 2 instance(s)") != std::string::npos);
+  REQUIRE(bad_instance.err.find("--instance 2: the scene has 2 instances: give 0 to 1") != std::string::npos);
   const test::CliResult bad_vertex = test::RunCli({"explain", scene, "--vertex", "8"});
   REQUIRE(bad_vertex.exit_code == 2);
-  REQUIRE(bad_vertex.err.find("has 8 vertices") != std::string::npos);
+  REQUIRE(bad_vertex.err.find("has 8 vertices: give 0 to 7") != std::string::npos);
   const test::CliResult not_a_number = test::RunCli({"explain", scene, "--vertex", "x"});
   REQUIRE(not_a_number.exit_code == 2);
   const test::CliResult unknown_option = test::RunCli({"explain", scene, "--verbose"});

@@ -1,5 +1,6 @@
-// The report layer on its own: escaping, links, verdicts and their order, the JUnit counts, plots
-// on log axes, and thumbnails that keep a single marked pixel.
+// The report layer on its own: escaping, links, verdicts and their order, the JUnit counts, counts
+// in words, plots on log axes, and thumbnails that keep a single marked pixel.
+#include "base/counted.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
 #include "report/junit.hpp"
@@ -127,6 +128,25 @@ TEST_CASE("The record's JSON and text: render --json's numbers come from it", "[
   const std::string text = RenderText(r, false);
   CHECK(text.find("gpu vs cpu: 64 x 48: 7 differing pixels") != std::string::npos);
   CHECK(text.find("verdict: the images differ in 7 px, all within what Vulkan allows") != std::string::npos);
+}
+
+TEST_CASE("Counts agree with their nouns: 1 instance, 1 triangle, 1 differing pixel, and 2 of each in the plural",
+          "[report]") {
+  run::RunRecord one = Drawn("one", 1, true);
+  one.instances = 1, one.triangles = 1;
+  const std::string text = RenderText(one, false);
+  CHECK_THAT(text, HasSubstring("scenes/one.json: 1 instance, 1 triangle, 64 x 48"));
+  CHECK_THAT(text, HasSubstring("gpu vs cpu: 64 x 48: 1 differing pixel, max channel difference 3"));
+  run::RunRecord two = Drawn("two", 2, true);
+  two.instances = 2, two.triangles = 2;
+  CHECK_THAT(RenderText(two, false), HasSubstring("scenes/two.json: 2 instances, 2 triangles, 64 x 48"));
+  CHECK_THAT(RenderText(two, false), HasSubstring("64 x 48: 2 differing pixels,"));
+  CHECK(Counted(1, "vertex", "vertices") == "1 vertex");
+  CHECK(Counted(0u, "vertex", "vertices") == "0 vertices");
+  CHECK(Counted(std::size_t{3}, "copy", "copies") == "3 copies");
+  CHECK(ValidIndices(1) == ": give 0");
+  CHECK(ValidIndices(5) == ": give 0 to 4");
+  CHECK(ValidIndices(0).empty());
 }
 
 TEST_CASE("PlotSvg: each point carries its numbers, and on a log axis 0 sits on the floor", "[report]") {
