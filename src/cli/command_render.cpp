@@ -36,6 +36,9 @@ namespace twinraster {
 
 namespace {
 
+// About 11.6 days: any scene's limit, and a wait in milliseconds that fits an int.
+constexpr int kMaxTimeoutSeconds = 1'000'000;
+
 struct RenderArguments {
   std::vector<std::string> scenes;
   std::optional<std::string> output;  // one scene: OUT.png or -; several: a directory
@@ -419,12 +422,13 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "them). --backend cpu opens none: the name alone chooses the twin's rules, and\n"
                    "one it has none for is refused")
       ->type_name("NAME");
-  command
-      ->add_option("--timeout", a->timeout_seconds,
-                   "seconds the Vulkan driver may take for one scene before it is stopped and\n"
-                   "the scene reported as timed out (default 600; 0: no limit)")
-      ->type_name("SECONDS")
-      ->check(CLI::NonNegativeNumber);
+  // The bound keeps the GPU process's wait, in milliseconds, inside an int (poll's timeout).
+  ExpectNumberIn(command
+                     ->add_option("--timeout", a->timeout_seconds,
+                                  "seconds the Vulkan driver may take for one scene before it is stopped and\n"
+                                  "the scene reported as timed out (default 600; 0: no limit; at most 1000000)")
+                     ->type_name("SECONDS"),
+                 0, kMaxTimeoutSeconds, "seconds from 0 (no limit) to " + std::to_string(kMaxTimeoutSeconds));
   ExpectIndex(command
                   ->add_option("--threads", a->threads,
                                "the CPU twin's threads, at most one per 16 rows (default: every core for a\n"
