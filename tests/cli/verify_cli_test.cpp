@@ -233,4 +233,9 @@ TEST_CASE("A scene with nothing in view: render --verify and verify say so, and 
   const test::CliResult verify = test::RunCli({"verify", (dir / "behind.json").string(), image.string()});
   REQUIRE(verify.exit_code == 6);
   REQUIRE(verify.out.find(image.string() + ": " + said) != std::string::npos);
+  const test::CliResult coverage =
+      test::RunCli({"verify", "--coverage", (dir / "behind.json").string(), image.string()});
+  REQUIRE(coverage.exit_code == 6);
+  REQUIRE(coverage.out.find("; nothing is in view (no triangle may cover any pixel), so an image with nothing covered "
+                            "is both the right answer and what a broken engine draws") != std::string::npos);
 }
