@@ -36,6 +36,9 @@ namespace twinraster {
 
 namespace {
 
+// About 11.6 days: any scene's limit, and a wait in milliseconds that fits an int.
+constexpr int kMaxTimeoutSeconds = 1'000'000;
+
 struct RenderArguments {
   std::vector<std::string> scenes;
   std::optional<std::string> output;  // one scene: OUT.png or -; several: a directory
@@ -278,16 +281,23 @@ struct BatchTally {
   }
 };
 
-// The record of a scene that failed on its own, said on standard error.
-run::RunRecord FailedScene(const std::string& scene, const std::exception& e, Progress& progress) {
-  progress.Above([&] { std::cerr << "twinraster: " << e.what() << "\n"; });
-  return run::ErrorRecord(scene, e.what());
+// A scene that failed on its own: said on standard error, and a record of verdict error, which
+// --json prints as any other scene's (so that every scene has its line) and the batch keeps.
+void FailedScene(const RenderArguments& a, const std::string& scene, const std::exception& e, Progress& progress,
+                 BatchTally& tally, bool several) {
+  run::RunRecord record = run::ErrorRecord(scene, e.what());
+  record.rules = a.run.rules;
+  progress.Above([&] {
+    std::cerr << "twinraster: " << e.what() << "\n";
+    if (a.json) PrintRecord(a, record, several);
+  });
+  tally.Add(a, std::move(record));
 }
 
 // One scene at a time: read, draw, write, print. One scene's bad input is the run's error (exit 2,
-// nothing written), unless a report or JUnit file is asked for, which then records it.
+// nothing written), unless a report, a JUnit file or JSON is asked for, which then records it.
 void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& progress, BatchTally& tally) {
-  const bool keep_going = a.report || a.junit;
+  const bool keep_going = a.report || a.junit || a.json;
   for (const std::string& scene : a.scenes) {
     try {
       DrawnScene drawn = DrawScene(a, scene, std::nullopt, gpu, progress);
@@ -296,7 +306,7 @@ void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& prog
       tally.Add(a, std::move(record));
     } catch (const std::exception& e) {
       if (!SceneOwnError(e) || !keep_going) throw;
-      tally.Add(a, FailedScene(scene, e, progress));
+      FailedScene(a, scene, e, progress, tally, false);
     }
   }
 }
@@ -317,14 +327,14 @@ void RenderBatch(const RenderArguments& a, const std::string& directory, run::Gp
           tally.Add(a, std::move(record));
         } catch (const std::exception& e) {
           if (!SceneOwnError(e)) throw;
-          tally.Add(a, FailedScene(scene, e, progress));
+          FailedScene(a, scene, e, progress, tally, true);
         }
       });
     } catch (const std::exception& e) {
       if (!SceneOwnError(e)) throw;  // the queue's scenes are still written first
       const std::string what = e.what();
       writer.Push([&progress, &tally, &a, scene, what] {
-        tally.Add(a, FailedScene(scene, std::runtime_error(what), progress));
+        FailedScene(a, scene, std::runtime_error(what), progress, tally, true);
       });
     }
   }
@@ -411,7 +421,7 @@ CommandRun AddRenderCommand(CLI::App& app) {
                     "implementation may draw, pixel by pixel (docs/verify.md), and write its\n"
                     "map beside it as OUT-map.png (OUT-gpu-map.png with both); exit 1 on a\n"
                     "violation. Without it, a difference between the two images is still judged");
-  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/4, docs/json-output.md)");
+  command->add_flag("--json", a->json, "print the report as JSON (twinraster.render/5, docs/json-output.md)");
   command
       ->add_option("--device", a->device,
                    "the Vulkan device to draw on, whose rules the twin follows: lavapipe (default),\n"
@@ -419,12 +429,13 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "them). --backend cpu opens none: the name alone chooses the twin's rules, and\n"
                    "one it has none for is refused")
       ->type_name("NAME");
-  command
-      ->add_option("--timeout", a->timeout_seconds,
-                   "seconds the Vulkan driver may take for one scene before it is stopped and\n"
-                   "the scene reported as timed out (default 600; 0: no limit)")
-      ->type_name("SECONDS")
-      ->check(CLI::NonNegativeNumber);
+  // The bound keeps the GPU process's wait, in milliseconds, inside an int (poll's timeout).
+  ExpectNumberIn(command
+                     ->add_option("--timeout", a->timeout_seconds,
+                                  "seconds the Vulkan driver may take for one scene before it is stopped and\n"
+                                  "the scene reported as timed out (default 600; 0: no limit; at most 1000000)")
+                     ->type_name("SECONDS"),
+                 0, kMaxTimeoutSeconds, "seconds from 0 (no limit) to " + std::to_string(kMaxTimeoutSeconds));
   ExpectIndex(command
                   ->add_option("--threads", a->threads,
                                "the CPU twin's threads, at most one per 16 rows (default: every core for a\n"

@@ -20,6 +20,32 @@ namespace {
 // The same bound LoadScene() puts on a file: far beyond any scene a person writes.
 constexpr std::size_t kMaxSceneBytes = std::size_t{256} << 20;
 constexpr const char* kStdinName = "<stdin>";
+
+// What text that is not JSON most likely is, for the hint below; "" when nothing stands out.
+std::string_view LikelyKind(std::string_view text) {
+  if (text.starts_with("glTF")) return "a binary glTF file (.glb)";
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return "";
+  const std::string_view line = text.substr(first, text.find('\n', first) - first);
+  // An OBJ file opens with a comment or one of its statements.
+  for (const std::string_view start : {"#", "v ", "vn ", "vt ", "f ", "o ", "g ", "mtllib ", "usemtl ", "s "}) {
+    if (line.starts_with(start)) return "an OBJ mesh";
+  }
+  return "";
+}
+
+// A syntax error in standard input (its place is a line, not a JSON path) is often an OBJ or glTF
+// file piped in: standard input is read as a JSON scene only, which the message then says.
+SceneError WithStdinHint(const SceneError& e, std::string_view text) {
+  if (!e.where().starts_with("line ")) return e;
+  const std::string_view kind = LikelyKind(text);
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (kind.empty() && first != std::string_view::npos && text[first] == '{') return e;  // JSON, just broken
+  std::string hint = " (- reads a JSON scene file only";
+  if (!kind.empty()) hint += "; this looks like " + std::string(kind) + ": give its file name instead";
+  return SceneError(e.file(), e.where(), e.problem() + hint + ")");
+}
+
 }  // namespace
 
 std::string Suffixed(const std::string& out, const std::string& suffix) {
@@ -43,9 +69,13 @@ Scene LoadSceneArgument(const std::string& argument, const SceneChoice& choice) 
     if (n < sizeof buffer) break;
   }
   if (std::ferror(stdin)) throw SceneError(kStdinName, "(file)", std::string("read error: ") + std::strerror(errno));
-  Scene scene = ParseScene(text, kStdinName);
-  ApplyChoice(scene, kStdinName, choice);
-  return scene;
+  try {
+    Scene scene = ParseScene(text, kStdinName);
+    ApplyChoice(scene, kStdinName, choice);
+    return scene;
+  } catch (const SceneError& e) {
+    throw WithStdinHint(e, text);
+  }
 }
 
 void ExpectPngName(const std::string& option, const std::string& name) {

@@ -97,7 +97,12 @@ int Run(int argc, char** argv) {
   }
   CLI::App* command = SelectedCommand(app);
   if (std::string p = LeftoverProblem(app); !p.empty()) return ReportUsageError(nullptr, p);
-  if (!command) return ReportUsageError(nullptr, "missing command");
+  // A bare `twinraster` is most often someone finding out what it does: the usage says more than
+  // "missing command" would. Still a mistake for a script, so on standard error, exit 2.
+  if (!command) {
+    std::cerr << app.help();
+    return kExitBadInput;
+  }
   if (std::string p = LeftoverProblem(*command); !p.empty()) return ReportUsageError(command, p);
   try {
     return commands.at(command->get_name())();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <memory>
 
 namespace twinraster {
@@ -79,6 +80,19 @@ CLI::Option* ExpectIntegerIn(CLI::Option* option, long lo, long hi) {
         return "";
       },
       "", "integer range"));
+}
+
+CLI::Option* ExpectNumberIn(CLI::Option* option, double lo, double hi, const std::string& expected) {
+  return option->check(CLI::Validator(
+      [lo, hi, expected](std::string& value) -> std::string {
+        double x = 0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), x);
+        // from_chars reads "inf" and "nan", which no bound refuses by itself (nan compares false).
+        const bool number = !value.empty() && error == std::errc() && end == value.data() + value.size();
+        if (number && std::isfinite(x) && x >= lo && x <= hi) return "";
+        return "expects " + expected + ", got \"" + value + "\"";
+      },
+      "", "number range"));
 }
 
 CLI::Option* ExpectOneOf(CLI::Option* option, const std::string& noun, const std::vector<std::string>& choices) {

@@ -25,6 +25,9 @@ CLI::App* AddSubcommand(CLI::App& app, const std::string& name, const std::strin
 CLI::Option* ExpectIndex(CLI::Option* option);
 // The value must be an integer in lo..hi.
 CLI::Option* ExpectIntegerIn(CLI::Option* option, long lo, long hi);
+// The value must be a finite number in lo..hi; `expected` describes it in the message, which
+// quotes the value: --timeout: expects seconds from 0 (no limit) to 1000000, got "-1".
+CLI::Option* ExpectNumberIn(CLI::Option* option, double lo, double hi, const std::string& expected);
 // The value must be one of `choices`; `noun` names them in the message, which suggests the
 // closest: unknown backend "gpuu" (did you mean "gpu"?); choose from gpu, cpu, both.
 CLI::Option* ExpectOneOf(CLI::Option* option, const std::string& noun, const std::vector<std::string>& choices);

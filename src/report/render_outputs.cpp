@@ -90,16 +90,23 @@ std::string RenderText(const run::RunRecord& r, bool verify_asked) {
 }
 
 Json RenderJson(const run::RunRecord& r) {
+  // A scene that failed (verdict "error") has its line too, with what the scene would have told
+  // (its size, its counts, what drew) null: a batch's JSON has one line per scene, as its page.
+  const bool read = r.verdict != run::Verdict::kError;
+  const auto if_read = [read](const Json& value) { return read ? value : Json(nullptr); };
   Json j;
   j["format"] = kRenderJsonFormat;
   j["scene"] = r.scene;
+  j["verdict"] = run::VerdictName(r.verdict);
+  j["exit_code"] = run::ExitCodeOf(r.verdict);
+  j["reason"] = VerdictReason(r);
   j["rules"] = run::RulesName(r.rules);
-  j["wireframe"] = r.wireframe;
-  j["width"] = r.width;
-  j["height"] = r.height;
-  j["instances"] = r.instances;
-  j["triangles"] = r.triangles;
-  j["load_ms"] = r.load_ms;
+  j["wireframe"] = if_read(r.wireframe);
+  j["width"] = if_read(r.width);
+  j["height"] = if_read(r.height);
+  j["instances"] = if_read(r.instances);
+  j["triangles"] = if_read(r.triangles);
+  j["load_ms"] = if_read(r.load_ms);
   j["differing_pixels"] = r.comparison ? Json(r.comparison->differing_pixels) : Json(nullptr);
   j["max_channel_difference"] = r.comparison ? Json(r.comparison->max_channel_difference) : Json(nullptr);
   j["diff"] = OrNull(r.diff);

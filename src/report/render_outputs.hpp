@@ -11,13 +11,13 @@ namespace twinraster::report {
 
 // render --json's "format"; any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/).
-inline constexpr const char* kRenderJsonFormat = "twinraster.render/4";
+inline constexpr const char* kRenderJsonFormat = "twinraster.render/5";
 
 // The lines `render` prints for one scene, each ending in "\n"; `verify_asked`: --verify was
 // given, so the verification's own line is printed too.
 std::string RenderText(const run::RunRecord& record, bool verify_asked);
 
-// The twinraster.render/4 object (docs/json-output.md).
+// The twinraster.render/5 object (docs/json-output.md), for any verdict: an error's too.
 nlohmann::ordered_json RenderJson(const run::RunRecord& record);
 
 // One line on why a scene got its verdict: the problem, the verifier's sentence, or the comparison's.

@@ -23,10 +23,16 @@ nlohmann::ordered_json ViolationJson(const std::optional<verify::Violation>& v) 
   return {{"x", v->x}, {"y", v->y}, {"colour", ColourJson(v->colour)}, {"distance", v->distance}, {"allowed", allowed}};
 }
 
+// What a judgement of an image where no triangle may cover any pixel can say (covered == 0).
+constexpr const char* kNothingInView =
+    "nothing is in view (no triangle may cover any pixel), so an empty image is both the right answer "
+    "and what a broken renderer draws";
+
 }  // namespace
 
 std::string InconclusiveReason(const verify::Verification& v) {
   if (v.Verdict() != verify::Judgement::kInconclusive) return "";
+  if (v.covered == 0) return kNothingInView;
   if (v.background_excluded == 0) return "an empty image would pass too";
   const double share = v.covered ? 100.0 * double(v.UncertainOther()) / double(v.covered) : 0.0;
   return std::to_string(int(share)) + " % of the covered pixels are uncertain (shared edges apart)";
@@ -46,7 +52,10 @@ std::string VerificationText(const verify::Verification& v) {
   s << std::fixed;
   const double percent = 100.0 * v.UncertainFraction();
   const verify::Judgement verdict = v.Verdict();
-  if (verdict != verify::Judgement::kFailed) {
+  if (verdict == verify::Judgement::kInconclusive && v.covered == 0) {
+    // No count says more than that: every pixel is the background, certainly.
+    s << "inconclusive: " << kNothingInView << "; all " << v.certain << " px are the background, 0 violations";
+  } else if (verdict != verify::Judgement::kFailed) {
     s << (verdict == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, "
       << v.uncertain << " uncertain (" << percent << " % of the " << v.covered << " covered";
     if (v.uncertain_shared_edges > 0) s << ", " << v.uncertain_shared_edges << " of them on shared edges";

@@ -1,5 +1,7 @@
 #include "run/verdict.hpp"
 
+#include "base/exit_code.hpp"
+
 namespace twinraster::run {
 
 const char* VerdictName(Verdict verdict) {
@@ -22,6 +24,19 @@ Verdict VerdictOf(verify::Judgement judgement) {
     case verify::Judgement::kFailed: break;
   }
   return Verdict::kDiffering;
+}
+
+int ExitCodeOf(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kError: return kExitBadInput;
+    case Verdict::kCrashed: return kExitGpuFailed;
+    case Verdict::kDiffering: return kExitImagesDiffer;
+    case Verdict::kInconclusive: return kExitInconclusive;
+    case Verdict::kVerified:
+    case Verdict::kIdentical:
+    case Verdict::kRendered: return kExitOk;
+  }
+  return kExitInternalError;
 }
 
 bool IsFailure(Verdict verdict) {

@@ -27,4 +27,8 @@ bool IsFailure(Verdict verdict);           // error, crashed, differing
 inline bool IsInconclusive(Verdict verdict) { return verdict == Verdict::kInconclusive; }
 inline bool IsSuccess(Verdict verdict) { return !IsFailure(verdict) && !IsInconclusive(verdict); }
 
+// The exit code of one scene's verdict (base/exit_code.hpp): an error 2, crashed 5, differing 1,
+// inconclusive 6, anything else 0. A batch exits with the worst of its scenes'.
+int ExitCodeOf(Verdict verdict);
+
 }  // namespace twinraster::run

@@ -3,6 +3,7 @@
 #include "scene/json_document.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -108,6 +109,13 @@ JsonReader JsonReader::operator[](std::size_t index) const& {
 std::string JsonReader::String() const {
   if (!value_.is_string()) Fail(std::string("expected a string, found ") + TypeName());
   return std::string(value_.get_string().value_unsafe());
+}
+
+std::string JsonReader::LowercaseString() const {
+  std::string text = String();
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
 }
 
 bool JsonReader::Boolean() const {

@@ -69,6 +69,8 @@ class JsonReader {
   }
 
   std::string String() const;
+  // A name read in any case ("Y", "Red"), in lower case; ASCII letters only are folded.
+  std::string LowercaseString() const;
   bool Boolean() const;
   double Number() const;    // finite, |x| <= kMaxMagnitude
   double Positive() const;  // > 0 and >= kMinPositive

@@ -150,14 +150,19 @@ Model ReadObjModel(const JsonReader& r, const std::string& name, const std::file
 
 Rgb8 ReadColour(const JsonReader& r) {
   if (r.IsString()) {
-    const std::string name = r.String();
+    const std::string name = r.LowercaseString();
     const auto it = NamedColours().find(name);
     if (it != NamedColours().end()) return it->second;
     std::vector<std::string> names;
-    for (const auto& entry : NamedColours()) names.push_back(entry.first);
+    std::string list;
+    for (const auto& entry : NamedColours()) {
+      names.push_back(entry.first);
+      list += (list.empty() ? "" : ", ") + entry.first;
+    }
     const std::string suggestion = ClosestMatch(name, names);
-    r.Fail("unknown colour \"" + name + "\"" + (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") +
-           "; use a name or [r, g, b] with 0..255");
+    r.Fail("unknown colour \"" + r.String() + "\"" +
+           (suggestion.empty() ? "" : " (did you mean \"" + suggestion + "\"?)") + "; use one of " + list +
+           " (in any case), or [r, g, b] with 0..255");
   }
   if (!r.IsArray()) r.Fail("expected a colour name or [r, g, b], found " + r.TypeName());
   r.ExpectArray(3);

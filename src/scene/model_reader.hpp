@@ -10,7 +10,7 @@
 
 namespace twinraster {
 
-// A colour name (the chapter's six, white, black, gray) or [r, g, b] with 0..255.
+// A colour name in any case (the chapter's six, white, black, gray) or [r, g, b] with 0..255.
 Rgb8 ReadColour(const JsonReader& r);
 
 // "unlit", "flat" or "gouraud", as scene files write them.

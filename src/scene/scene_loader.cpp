@@ -22,13 +22,15 @@ namespace twinraster {
 
 namespace {
 
+constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+
 glm::dvec3 ReadAxis(const JsonReader& r) {
   if (r.IsString()) {
-    const std::string name = r.String();
+    const std::string name = r.LowercaseString();  // "Y" as the chapter's text writes it
     if (name == "x") return {1, 0, 0};
     if (name == "y") return {0, 1, 0};
     if (name == "z") return {0, 0, 1};
-    r.Fail("unknown axis \"" + name + "\"; use \"x\", \"y\", \"z\" or a vector [x, y, z]");
+    r.Fail("unknown axis \"" + r.String() + "\"; use \"x\", \"y\", \"z\" (in any case) or a vector [x, y, z]");
   }
   const glm::dvec3 axis = r.Vec3();
   const double length = glm::length(axis);
@@ -307,11 +309,16 @@ bool NeedsLocatingParser(simdjson::dom::element root) {
 // `directory`: where the paths of OBJ files start.
 Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name,
                 const std::filesystem::path& directory) {
-  const std::string_view view(text.data(), text.size());
+  // A UTF-8 byte-order mark, as Notepad saves it, is skipped: simdjson refuses it with a message
+  // that names no place. Lines and columns are then counted as an editor shows them, without it.
+  const std::size_t bom = std::string_view(text.data(), text.size()).starts_with(kUtf8ByteOrderMark) ? 3 : 0;
+  const std::string_view view(text.data() + bom, text.size() - bom);
   RejectBinaryText(view, file_name);
   simdjson::dom::parser parser;
   simdjson::dom::element document;
-  if (const simdjson::error_code error = parser.parse(text).get(document); error != simdjson::SUCCESS) {
+  // The padding past the text's end is still there, so simdjson need not copy it.
+  if (const simdjson::error_code error = parser.parse(view.data(), view.size(), false).get(document);
+      error != simdjson::SUCCESS) {
     ExplainBadJson(view, file_name, simdjson::error_message(error));
   }
   if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem

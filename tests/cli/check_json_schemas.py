@@ -156,7 +156,8 @@ def main():
             (GPU_CRASH, "render", ["render", transforms, "--json", "-o", out("crash.png")], None, 5,
              lambda d: d["backends"]["gpu"]["status"] == "crashed" and d["backends"]["gpu"]["output"] is None
              and "(SIGABRT)" in d["backends"]["gpu"]["problem"] and d["backends"]["cpu"]["output"] == out("crash-cpu.png")
-             and d["differing_pixels"] is None and d["twin_rules"] is not None),
+             and d["differing_pixels"] is None and d["twin_rules"] is not None
+             and d["verdict"] == "crashed" and d["exit_code"] == 5 and "(SIGABRT)" in d["reason"]),
             (GPU_HANG, "render", ["render", transforms, "--json", "--timeout", "1", "--backend", "gpu",
              "-o", out("hang.png")], None, 5,
              lambda d: d["backends"]["gpu"]["status"] == "timed out" and d["twin_rules"] is None),
@@ -168,7 +169,16 @@ def main():
             ("render several scenes: JSON Lines, one object per scene", "render",
              ["render", transforms, os.path.join(scenes, "lookat.json"), "--json", "--backend", "cpu", "-o", out("many")],
              None, 0, lambda ds: [d["scene"] for d in ds] == [transforms, os.path.join(scenes, "lookat.json")] and
-             ds[1]["backends"]["cpu"]["output"] == os.path.join(out("many"), "lookat.png") and ds[1]["instances"] == 3),
+             ds[1]["backends"]["cpu"]["output"] == os.path.join(out("many"), "lookat.png") and ds[1]["instances"] == 3
+             and all(d["verdict"] == "rendered" and d["exit_code"] == 0 for d in ds)),
+            ("render several scenes, one unreadable: its line too, verdict error", "render",
+             ["render", transforms, out("broken.json"), "--json", "--backend", "cpu", "-o", out("some")], None, 2,
+             lambda ds: [d["verdict"] for d in ds] == ["rendered", "error"] and ds[1]["exit_code"] == 2
+             and ds[1]["reason"].startswith(out("broken.json") + ": line 1, column ") and ds[1]["width"] is None
+             and ds[1]["backends"] == {"gpu": None, "cpu": None}),
+            ("render of one scene that cannot be read, --rules book", "render",
+             ["render", out("broken.json"), "--json", "--rules", "book", "-o", out("broken.png")], None, 2,
+             lambda d: d["verdict"] == "error" and d["rules"] == "book" and d["twin_rules"] is None),
             ("verify lavapipe's image", "verify",
              ["verify", transforms, out("b-gpu.png"), "--json", "--subpixel-bits", "8"], None, 0,
              lambda d: d["passed"] and d["verdict"] == "passed" and d["pixels"]["violations"] == 0 and d["worst"] is None
@@ -196,6 +206,7 @@ def main():
                                 out("nosse.png")], None, 6,
              lambda d: d["differing_pixels"] > 0 and not d["twin_rules"]["exact"]
              and d["verify"]["verdict"] == "inconclusive" and d["verify"]["pixels"]["violations"] == 0
+             and d["verdict"] == "inconclusive" and d["exit_code"] == 6
              and d["verify"]["map"] is None),
             ("compare identical", "compare", ["compare", out("b-gpu.png"), out("b-cpu.png"), "--json"], None, 0,
              lambda d: d["identical"] and d["diff"] is None),
@@ -243,6 +254,8 @@ def main():
         ]
         with open(out("tiny.gltf"), "w") as f:
             json.dump(tiny_gltf(), f)
+        with open(out("broken.json"), "w") as f:
+            f.write('{"canvas": ')
         for i, command in enumerate(setup):
             subprocess.run([args.exe] + command, check=True, capture_output=True,
                            input=json.dumps(W_ZERO_SCENE).encode() if i == 1 else None)

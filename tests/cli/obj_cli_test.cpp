@@ -6,7 +6,9 @@
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"
 
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace twinraster;
@@ -84,4 +86,29 @@ TEST_CASE("render and explain --help say that SCENE may be an OBJ file", "[cli][
     REQUIRE(r.out.find("OBJ mesh") != std::string::npos);
     REQUIRE(r.out.find(".obj") != std::string::npos);
   }
+}
+
+TEST_CASE("An OBJ or glTF file piped to SCENE - is named as such: - reads a JSON scene only", "[cli][obj][bad-input]") {
+  const test::TempDir dir;
+  const std::string glb("glTF\x02\0\0\0\x14\0\0\0\0\0\0\0JSON", 20);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"# an octahedron\n" + kOctahedron, "; this looks like an OBJ mesh: give its file name instead)\n"},
+      {kOctahedron, "; this looks like an OBJ mesh: give its file name instead)\n"},
+      {glb, "; this looks like a binary glTF file (.glb): give its file name instead)\n"},
+      {"canvas: 600", " (- reads a JSON scene file only)\n"},
+  };
+  for (const auto& [input, ending] : cases) {
+    INFO(input);
+    const test::CliResult r = test::RunCliWithInput({"render", "-", "-o", (dir / "o.png").string()}, input);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.rfind("twinraster: <stdin>: line 1, column ", 0) == 0);
+    REQUIRE(r.err.find("(- reads a JSON scene file only") != std::string::npos);
+    REQUIRE(r.err.ends_with(ending));
+    REQUIRE(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  // A JSON scene with a syntax error is JSON: its message needs no hint.
+  const test::CliResult json = test::RunCliWithInput({"render", "-", "-o", (dir / "o.png").string()}, "{\"canvas\": ");
+  REQUIRE(json.exit_code == 2);
+  REQUIRE(json.err.find("reads a JSON scene") == std::string::npos);
 }

@@ -28,8 +28,11 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["format"] == "twinraster.render/4");
+  REQUIRE(j["format"] == "twinraster.render/5");
   REQUIRE(j["scene"] == kScene);
+  REQUIRE(j["verdict"] == "identical");
+  REQUIRE(j["exit_code"] == 0);
+  REQUIRE(j["reason"] == "0 differing pixels");
   REQUIRE(j["width"] == 600);
   REQUIRE(j["height"] == 600);
   REQUIRE(j["differing_pixels"] == 0);
@@ -163,13 +166,14 @@ TEST_CASE("render --json keeps every key with one backend: the other backend and
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key :
-       {"format", "scene", "rules", "wireframe", "width", "height", "instances", "triangles", "load_ms",
-        "differing_pixels", "max_channel_difference", "diff", "backends", "twin_rules", "verify"}) {
+  for (const char* key : {"format", "scene", "verdict", "exit_code", "reason", "rules", "wireframe", "width", "height",
+                          "instances", "triangles", "load_ms", "differing_pixels", "max_channel_difference", "diff",
+                          "backends", "twin_rules", "verify"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
-  REQUIRE(j.size() == 15);
+  REQUIRE(j.size() == 18);
+  REQUIRE(j["verdict"] == "rendered");
   REQUIRE(j["verify"].is_null());  // not asked for, and nothing differs
   REQUIRE(j["rules"] == "vulkan");
   REQUIRE(j["wireframe"] == false);
@@ -350,6 +354,19 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
       test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
   REQUIRE(good.exit_code == 0);
   REQUIRE(ReadPng(out / "lookat.png").width == 640);
+  // One scene that cannot be read, with --json: its object says so, as a batch's line would.
+  const test::CliResult alone = test::RunCli(
+      {"render", (dir / "broken.json").string(), "-o", out.string() + "/b.png", "--backend", "cpu", "--json"});
+  REQUIRE(alone.exit_code == 2);
+  REQUIRE(alone.err ==
+          "twinraster: " + (dir / "broken.json").string() + ": line 1, column 12: " +
+              "syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal\n");
+  const auto j = nlohmann::json::parse(alone.out);
+  REQUIRE(j["verdict"] == "error");
+  REQUIRE(j["exit_code"] == 2);
+  REQUIRE(j["width"].is_null());
+  REQUIRE(j["backends"]["cpu"].is_null());
+  REQUIRE_FALSE(std::filesystem::exists(out / "b.png"));
   // -o naming a file, and - among several scenes, are refused before anything runs.
   test::WriteFile(dir / "plain.txt", "x");
   REQUIRE(test::RunCli({"render", kScene, lookat, "-o", (dir / "plain.txt").string()}).exit_code == 2);
@@ -373,17 +390,24 @@ TEST_CASE("render with several scenes: records in the order given, each scene's 
   const test::CliResult r = test::RunCli(args);
   INFO(r.err);
   REQUIRE(r.exit_code == 2);
-  // One JSON line per readable scene, in order; the twin, drawn while the GPU process drew the
-  // later scenes, matches it.
+  // One JSON line per scene, in order, the broken one's too, each with its verdict and exit code;
+  // the twin, drawn while the GPU process drew the later scenes, matches it.
   std::vector<std::string> printed;
   std::istringstream lines(r.out);
   for (std::string line; std::getline(lines, line);) {
     const auto j = nlohmann::json::parse(line);
     printed.push_back(j["scene"]);
-    CHECK(j["differing_pixels"] == 0);
+    INFO(line);
+    const bool broken = j["scene"] == scenes[1];
+    CHECK(j["verdict"] == (broken ? "error" : "identical"));
+    CHECK(j["exit_code"] == (broken ? 2 : 0));
+    CHECK(j["differing_pixels"] == (broken ? nlohmann::json(nullptr) : nlohmann::json(0)));
+    if (broken) CHECK(j["reason"].get<std::string>().rfind(scenes[1] + ": line 1, column ", 0) == 0);
   }
-  REQUIRE(printed == std::vector<std::string>{scenes[0], scenes[2], scenes[3]});
-  // The JUnit file has every scene, the broken one in its place.
+  REQUIRE(printed == scenes);
+  // The JUnit file has every scene, the broken one in its place, with the verdict JSON gave it.
+  REQUIRE(test::ReadFile(dir / "j.xml").find("<error type=\"error\" message=\"" + scenes[1] + ": line 1") !=
+          std::string::npos);
   const std::string xml = test::ReadFile(dir / "j.xml");
   std::size_t at = 0;
   for (const std::string& scene : scenes) {

@@ -19,7 +19,6 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
     std::string message, hint;
   };
   const std::vector<Case> cases = {
-      {{}, "twinraster: missing command", "see 'twinraster --help'"},
       {{"frobnicate"}, "twinraster: unknown command \"frobnicate\"", "see 'twinraster --help'"},
       {{"rendr", scene}, "twinraster: unknown command \"rendr\" (did you mean \"render\"?)", "see 'twinraster --help'"},
       {{"--frobnicate"}, "twinraster: unknown option --frobnicate", "see 'twinraster --help'"},
@@ -66,6 +65,22 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
        "twinraster render: two scenes are named \"cgfs-scene\": their images would overwrite each other; render them "
        "in separate calls",
        "see 'twinraster render --help'"},
+      // Never CLI11's "Value -1 not in range 0.000000 to 1797...", and never nan or inf let through.
+      {{"render", scene, "--timeout", "-1"},
+       "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"-1\"",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--timeout", "abc"},
+       "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"abc\"",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--timeout", "inf"},
+       "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"inf\"",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--timeout=nan"},
+       "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"nan\"",
+       "see 'twinraster render --help'"},
+      {{"render", scene, "--timeout", "1e7"},
+       "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"1e7\"",
+       "see 'twinraster render --help'"},
       {{"bench", "--runs", "0"},
        "twinraster bench: --runs: expects an integer in 1..1000, got \"0\"",
        "see 'twinraster bench --help'"},
@@ -79,6 +94,31 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
     REQUIRE(r.exit_code == 2);
     REQUIRE(r.out.empty());
     REQUIRE(r.err == c.message + "\n" + c.hint + "\n");
+  }
+}
+
+TEST_CASE("A bare twinraster prints the usage, on standard error, and exits 2", "[cli][usage]") {
+  const test::CliResult r = test::RunCli({});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.out.empty());
+  REQUIRE(r.err.find("missing command") == std::string::npos);
+  REQUIRE(r.err.find("Usage: twinraster [OPTIONS] [COMMAND]\n") != std::string::npos);
+  for (const char* command : {"explain", "render", "verify", "compare", "bench", "Exit codes"}) {
+    INFO(command);
+    REQUIRE(r.err.find(command) != std::string::npos);
+  }
+}
+
+TEST_CASE("render --timeout takes a fraction of a second, and 0 for no limit", "[cli][usage]") {
+  const test::TempDir dir;
+  const std::string scene = test::SourcePath("scenes/cgfs-scene.json").string();
+  for (const char* seconds : {"0", "0.5e3", "1000000"}) {
+    INFO(seconds);
+    const test::CliResult r =
+        test::RunCli({"render", scene, "--backend", "cpu", "--timeout", seconds, "-o", (dir / "t.png").string(), "-q"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
   }
 }
 

@@ -207,3 +207,35 @@ TEST_CASE(
   CHECK_THAT(r.out, HasSubstring("llvmpipe"));
   CHECK_THAT(r.out, HasSubstring("twin: bit-exact (lavapipe rules"));
 }
+
+TEST_CASE("A scene with nothing in view: render --verify and verify say so, and stay inconclusive (exit 6)",
+          "[cli][verify]") {
+  const test::TempDir dir;
+  // The chapter's cube behind the camera: nothing may cover any pixel, so the right image is empty.
+  test::WriteFile(dir / "behind.json", R"({
+    "canvas": {"width": 64, "height": 48},
+    "viewport": {"width": 1, "height": 1, "distance": 1},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"quad": {"vertices": [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0]],
+                        "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"]]}},
+    "instances": [{"model": "quad", "transform": {"translation": [0, 0, -7]}}]
+  })");
+  const std::string said =
+      "inconclusive: nothing is in view (no triangle may cover any pixel), so an empty image is both the right "
+      "answer and what a broken renderer draws; all 3072 px are the background, 0 violations";
+  const auto image = dir / "b.png";
+  const test::CliResult render =
+      test::RunCli({"render", (dir / "behind.json").string(), "--backend", "cpu", "--verify", "-o", image.string()});
+  INFO(render.err);
+  REQUIRE(render.exit_code == 6);
+  REQUIRE(render.out.find("verify: cpu image " + said) != std::string::npos);
+  REQUIRE(render.out.find("of the 0 covered") == std::string::npos);
+  const test::CliResult verify = test::RunCli({"verify", (dir / "behind.json").string(), image.string()});
+  REQUIRE(verify.exit_code == 6);
+  REQUIRE(verify.out.find(image.string() + ": " + said) != std::string::npos);
+  const test::CliResult coverage =
+      test::RunCli({"verify", "--coverage", (dir / "behind.json").string(), image.string()});
+  REQUIRE(coverage.exit_code == 6);
+  REQUIRE(coverage.out.find("; nothing is in view (no triangle may cover any pixel), so an image with nothing covered "
+                            "is both the right answer and what a broken engine draws") != std::string::npos);
+}

@@ -187,8 +187,12 @@ def case_batch(a):
     # Exit 2: the unreadable scene is bad input, which outranks the inconclusive judgement's 6.
     lines, page, junit = render_batch(a, scenes, work, 2, {"GALLIUM_OVERRIDE_CPU_CAPS": "nosse"}, cwd=a.source)
     by_scene = {j["scene"]: j for j in lines}
-    check(len(lines) == len(scenes) - 1, "batch: one JSON line per readable scene, got %d" % len(lines))
-    check(sorted(by_scene) == sorted(scenes[:-1]), "batch: --json lines for %s, expected the readable %s" % (sorted(by_scene), sorted(scenes[:-1])))
+    check(len(lines) == len(scenes), "batch: one JSON line per scene, the unreadable one's too, got %d" % len(lines))
+    check(sorted(by_scene) == sorted(scenes), "batch: --json lines for %s, expected %s" % (sorted(by_scene), sorted(scenes)))
+    unreadable = by_scene.get(scenes[-1], {})
+    check(unreadable.get("verdict") == "error" and unreadable.get("exit_code") == 2,
+          "batch: the unreadable scene's --json line says %s" % unreadable)
+    drawn = [j for j in lines if j["verdict"] != "error"]
 
     driver = browser()
     try:
@@ -200,8 +204,10 @@ def case_batch(a):
         judged, unjudged = 0, []
         for row in rows:
             j = by_scene.get(row["scene"])
-            if j is None:
-                unjudged.append(row["scene"])  # render prints no --json line for a scene it cannot read
+            check(j is not None and row["verdict"] == j["verdict"],
+                  "batch: %s is %s on the page, %s in --json" % (row["scene"], row["verdict"], j and j["verdict"]))
+            if j is None or j["verdict"] == "error":
+                unjudged.append(row["scene"])  # nothing was drawn, compared or judged
                 continue
             judged += 1
             want = "-" if j["differing_pixels"] is None else str(j["differing_pixels"])
@@ -211,15 +217,15 @@ def case_batch(a):
             check(row["violations"] == want, "batch: %s violations %s on the page, %s in --json" % (row["scene"], row["violations"], want))
             expected = "identical" if j["differing_pixels"] == 0 else (v["verdict"].replace("passed", "verified").replace("failed", "differing") if v else "differing")
             check(row["verdict"] == expected, "batch: %s is %s on the page, %s by its --json" % (row["scene"], row["verdict"], expected))
-        check(judged == len(scenes) - 1, "batch: %d rows matched a --json line, expected %d (every drawn scene)" % (judged, len(scenes) - 1))
-        check(unjudged == [scenes[-1]], "batch: rows without a --json line %s, expected only the unreadable %s" % (unjudged, scenes[-1]))
-        verified = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["passed"])
-        identical = sum(1 for j in lines if j["differing_pixels"] == 0)
-        inconclusive = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["verdict"] == "inconclusive")
-        differing = sum(1 for j in lines if j["differing_pixels"] and j["verify"]["verdict"] == "failed")
-        check(verified + identical + inconclusive + differing == len(lines),
-              "batch: %d --json lines, but %d identical, %d verified, %d inconclusive and %d differing"
-              % (len(lines), identical, verified, inconclusive, differing))
+        check(judged == len(scenes) - 1, "batch: %d rows matched a drawn scene's --json line, expected %d" % (judged, len(scenes) - 1))
+        check(unjudged == [scenes[-1]], "batch: rows of scenes not drawn %s, expected only the unreadable %s" % (unjudged, scenes[-1]))
+        verified = sum(1 for j in drawn if j["differing_pixels"] and j["verify"]["passed"])
+        identical = sum(1 for j in drawn if j["differing_pixels"] == 0)
+        inconclusive = sum(1 for j in drawn if j["differing_pixels"] and j["verify"]["verdict"] == "inconclusive")
+        differing = sum(1 for j in drawn if j["differing_pixels"] and j["verify"]["verdict"] == "failed")
+        check(verified + identical + inconclusive + differing == len(drawn),
+              "batch: %d drawn scenes' --json lines, but %d identical, %d verified, %d inconclusive and %d differing"
+              % (len(drawn), identical, verified, inconclusive, differing))
         check(inconclusive >= 1, "batch: no inconclusive judgement (hard/depth-ratio-1e-4 without SSE gives one)")
         check(verified >= 1, "batch: lavapipe without SSE made no difference to judge (the test needs one)")
         s = summary_of(driver)

@@ -66,6 +66,12 @@ TEST_CASE("Verdicts: failures, inconclusive and success are three kinds, and eac
   CHECK(run::VerdictOf(verify::Judgement::kInconclusive) == Verdict::kInconclusive);
   CHECK(run::VerdictOf(verify::Judgement::kFailed) == Verdict::kDiffering);
   CHECK(std::string(run::VerdictName(Verdict::kInconclusive)) == "inconclusive");
+  // Each verdict's exit code, which render's JSON reports per scene (docs/commands.md).
+  CHECK(run::ExitCodeOf(Verdict::kError) == 2);
+  CHECK(run::ExitCodeOf(Verdict::kCrashed) == 5);
+  CHECK(run::ExitCodeOf(Verdict::kDiffering) == 1);
+  CHECK(run::ExitCodeOf(Verdict::kInconclusive) == 6);
+  for (Verdict v : {Verdict::kVerified, Verdict::kIdentical, Verdict::kRendered}) CHECK(run::ExitCodeOf(v) == 0);
   CHECK(std::string(run::StatusName(run::BackendStatus::kTimedOut)) == "timed out");
   CHECK(std::string(run::BackendName(run::Backend::kGpu)) == "gpu");
 }
