@@ -178,6 +178,7 @@ void PrepareDestinations(const RenderArguments& a) {
     for (const std::string& file : SceneFiles(a, out)) paths.File(a.output ? option : "SCENE " + scene, file);
   }
   if (a.report) {
+    paths.Directory("--report " + *a.report, *a.report);
     paths.Directory("--report " + *a.report, std::filesystem::path(*a.report) / "thumbs");
     paths.File("--report " + *a.report, std::filesystem::path(*a.report) / "index.html");
   }
