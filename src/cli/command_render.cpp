@@ -423,7 +423,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
   CLI::App* command = AddSubcommand(
       app, "render", "draw a scene on Vulkan, on the CPU twin, or on both and compare; or as the book's demos do",
       "Each PNG is written whole to a temporary file and renamed into place: a failed run leaves\n"
-      "earlier files untouched. On a terminal, progress shows on standard error.\n"
+      "earlier files untouched, and a read-only file is never replaced. Every output is checked\n"
+      "before anything is drawn. On a terminal, progress shows on standard error.\n"
       "The Vulkan work runs in a child process: when the driver crashes or passes --timeout, the\n"
       "report says so, the twin's image is still written, and later scenes still render.\n"
       "Exit codes: 0 done (both: identical images, or different where the twin has no rules for\n"
@@ -443,8 +444,9 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "gpu, cpu: write OUT.png; both: OUT-gpu.png, OUT-cpu.png and, when\n"
                    "they differ, OUT-diff.png. Default: the scene's name in the current\n"
                    "directory. - writes the PNG to standard output (gpu or cpu only).\n"
-                   "Several scenes: OUT is a directory (made if missing; default .) and\n"
-                   "each scene's files are named after it")
+                   "DIR/ (a final /) or an existing directory, and with several scenes any\n"
+                   "name but OUT.png (default .): each scene's files go there, named after it.\n"
+                   "Missing directories are made, for every option that writes")
       ->type_name("OUT.png|DIR");
   ExpectIntegerIn(command
                       ->add_option("--png-level", a->png_level,
@@ -489,7 +491,10 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "images as thumbnails (DIR/thumbs/) with its verdict, counts, device and times;\n"
                    "every verification's map is written too")
       ->type_name("DIR");
-  command->add_option("--junit", a->junit, "also write the batch as JUnit XML (one testcase per scene) to FILE")
+  command
+      ->add_option("--junit", a->junit,
+                   "also write the batch as JUnit XML (one testcase per scene) to FILE; - writes it\n"
+                   "to standard output, and the report to standard error")
       ->type_name("FILE");
   return [a, backend] {
     a->backend_given = backend->count() > 0;

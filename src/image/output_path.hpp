@@ -12,7 +12,7 @@
 namespace twinraster {
 
 // Mode bits as the owner's intent: a file or directory without any write bit (chmod a-w) is
-// read-only even for root, whom access(2) lets write anything, as `rm` and `install` warn about it.
+// read-only even for root, whom access(2) lets write anything.
 bool ReadOnlyByMode(mode_t mode);
 
 // Why `file` cannot be written whole and renamed into place, or "" when it can: it names a
