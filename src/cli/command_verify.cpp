@@ -54,6 +54,7 @@ bool MapToStandardOutput(const VerifyArguments& a) { return a.map && IsStandardS
 // Where the map goes, checked (and its directories made) before the scene is read: a map that
 // cannot be written fails at once, not after the judgement. -: standard output, not a terminal.
 void PrepareMap(const VerifyArguments& a) {
+  if (a.map && !IsStandardStream(*a.map)) ExpectPngName("--map", *a.map);
   if (a.no_map) return;
   if (MapToStandardOutput(a)) {
     if (a.json) throw UsageError("--map - and --json both want standard output: drop one of them");
@@ -62,7 +63,6 @@ void PrepareMap(const VerifyArguments& a) {
     }
     return;
   }
-  if (a.map) ExpectPngName("--map", *a.map);
   OutputPaths paths;
   paths.File(a.map ? "--map " + *a.map : "the map beside IMAGE.png (--map MAP.png or --no-map to change it)",
              a.map.value_or(Suffixed(a.image, "map")));

@@ -221,6 +221,7 @@ TEST_CASE("verify checks its map beside the image before judging, and leaves a r
   CHECK(r.out.empty());
   CHECK(test::ReadFile(dir / "in-map.png") == "earlier map");
   CHECK(test::RunCli({"verify", kScene, png, "--no-map"}).exit_code == 0);
+  CHECK(test::RunCli({"verify", kScene, png, "--no-map", "--map", (dir / "m.jpg").string()}).exit_code == 2);
   MakeReadOnly(dir / "d.png", "earlier diff");
   CHECK(test::RunCli({"compare", png, png, "--diff", (dir / "d.png").string()}).exit_code == 2);
   CHECK(test::ReadFile(dir / "d.png") == "earlier diff");  // not removed as stale either
