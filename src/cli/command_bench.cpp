@@ -10,6 +10,7 @@
 #include "bench/verify_bench.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "image/staged_file.hpp"
@@ -45,17 +46,56 @@ struct BenchArguments {
   std::size_t batch_scenes = 1000;  // --scale's batch of small scenes
 };
 
-using Files = std::vector<std::pair<std::filesystem::path, std::string>>;
+// The files each bench writes into --out, in the order its WriteTogether() call gives their texts.
+std::vector<std::string> OutFiles(const BenchArguments& a) {
+  if (a.scale) return {"scale.csv", "scale.svg", "scale-stages.svg", "scale.html", "scale.json", "scale.txt"};
+  if (a.verify) return {"verify.json", "verify.txt"};
+  if (a.loaders) return {"loaders.json", "loaders.txt"};
+  return {"bench.csv", "bench.svg", "bench.html", "bench.json", "bench.txt"};
+}
+
+bool ToStandardOutput(const std::optional<std::string>& file) { return file && IsStandardStream(*file); }
+
+// Where the table goes: standard error when --html - or --svg - takes standard output.
+std::ostream& TableStream(const BenchArguments& a) {
+  return ToStandardOutput(a.html) || ToStandardOutput(a.svg) ? std::cerr : std::cout;
+}
 
 // Staged together: either every output (in --out, and --html and --svg) is replaced or none is.
-void WriteTogether(const BenchArguments& a, const Files& in_out, const std::string& page, const std::string& plot) {
+// `in_out`: the texts of OutFiles(a), in order.
+void WriteTogether(const BenchArguments& a, const std::vector<std::string>& in_out, const std::string& page,
+                   const std::string& plot) {
   std::vector<StagedFile> staged;
   if (a.out) {
-    for (const auto& [name, text] : in_out) staged.emplace_back(std::filesystem::path(*a.out) / name, text);
+    const std::vector<std::string> names = OutFiles(a);
+    for (std::size_t i = 0; i < names.size() && i < in_out.size(); ++i) {
+      staged.emplace_back(std::filesystem::path(*a.out) / names[i], in_out[i]);
+    }
   }
-  if (a.html) staged.emplace_back(*a.html, page);
-  if (a.svg) staged.emplace_back(*a.svg, plot);
+  if (a.html && !ToStandardOutput(a.html)) staged.emplace_back(*a.html, page);
+  if (a.svg && !ToStandardOutput(a.svg)) staged.emplace_back(*a.svg, plot);
   for (StagedFile& file : staged) file.Commit();
+  if (ToStandardOutput(a.html)) WriteStandardOutput(page);
+  if (ToStandardOutput(a.svg)) WriteStandardOutput(plot);
+}
+
+// Every destination checked, and --out's directories made, before the minutes of measuring.
+void PrepareOutputs(const BenchArguments& a) {
+  if (ToStandardOutput(a.out)) throw UsageError("--out -: the results are several files; give a directory");
+  if (ToStandardOutput(a.html) && ToStandardOutput(a.svg))
+    throw UsageError("--html - and --svg -: standard output takes one of them; give the other a file");
+  if ((ToStandardOutput(a.html) || ToStandardOutput(a.svg)) && a.json) {
+    throw UsageError(std::string(ToStandardOutput(a.html) ? "--html -" : "--svg -") +
+                     " and --json both want standard output: drop one of them");
+  }
+  OutputPaths paths;
+  if (a.out) {
+    paths.Directory("--out " + *a.out, *a.out);
+    for (const std::string& name : OutFiles(a)) paths.File("--out " + *a.out, std::filesystem::path(*a.out) / name);
+  }
+  if (a.html && !ToStandardOutput(a.html)) paths.File("--html " + *a.html, *a.html);
+  if (a.svg && !ToStandardOutput(a.svg)) paths.File("--svg " + *a.svg, *a.svg);
+  paths.MakeDirectories();
 }
 
 // bench --scale: the million cubes at growing instance counts.
@@ -84,17 +124,13 @@ int BenchScale(const BenchArguments& a) {
   const std::string table = report::ScaleTable(result), plot = report::ScaleChartSvg(result);
   const std::string page = report::ScalePageHtml(result, table);
   WriteTogether(a,
-                {{"scale.csv", report::ScaleCsv(result)},
-                 {"scale.svg", plot},
-                 {"scale-stages.svg", report::ScaleStagesSvg(result)},
-                 {"scale.html", page},
-                 {"scale.json", report::ScaleJson(result).dump(2) + "\n"},
-                 {"scale.txt", table}},
+                {report::ScaleCsv(result), plot, report::ScaleStagesSvg(result), page,
+                 report::ScaleJson(result).dump(2) + "\n", table},
                 page, plot);
   if (a.json)
     std::cout << report::ScaleJson(result).dump(2) << "\n";
   else
-    std::cout << report::ScaleTable(result);
+    TableStream(a) << report::ScaleTable(result);
   return kExitOk;
 }
 
@@ -115,10 +151,7 @@ int BenchVerify(const BenchArguments& a) {
   // The whole processes are this very executable, started as a user starts it.
   const VerifyBenchResult result = RunVerifyBench(scenes, a.runs, std::filesystem::read_symlink("/proc/self/exe"));
   progress.Clear();
-  WriteTogether(a,
-                {{"verify.json", report::VerifyBenchJson(result).dump(2) + "\n"},
-                 {"verify.txt", report::VerifyBenchTable(result)}},
-                "", "");
+  WriteTogether(a, {report::VerifyBenchJson(result).dump(2) + "\n", report::VerifyBenchTable(result)}, "", "");
   if (a.json)
     std::cout << report::VerifyBenchJson(result).dump(2) << "\n";
   else
@@ -141,26 +174,18 @@ int BenchLoaders(const BenchArguments& a) {
                                                    .executable = std::filesystem::read_symlink("/proc/self/exe")});
   progress.Clear();
   const std::string table = report::LoaderBenchTable(result), json = report::LoaderBenchJson(result).dump(2) + "\n";
-  WriteTogether(a, {{"loaders.json", json}, {"loaders.txt", table}}, "", "");
+  WriteTogether(a, {json, table}, "", "");
   std::cout << (a.json ? json : table);
   return kExitOk;
 }
 
 int Bench(const BenchArguments& a) {
-  if (a.out) MakeDirectory(*a.out);
-  // Checked before the minutes of measuring, not after.
-  for (const auto& [flag, file] : {std::pair{"--html", a.html}, std::pair{"--svg", a.svg}}) {
-    if (!file) continue;
-    const std::filesystem::path parent = std::filesystem::path(*file).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-      throw UsageError(std::string(flag) + " " + *file + ": no directory " + parent.string());
-    }
-  }
   if ((a.verify || a.loaders) && (a.html || a.svg))
     throw UsageError(std::string("--html and --svg plot the suite or --scale; bench ") +
                      (a.verify ? "--verify" : "--loaders") + " prints a table");
   if (int(a.scale) + int(a.verify) + int(a.loaders) > 1)
     throw UsageError("--scale, --verify and --loaders are three benches: one at a time");
+  PrepareOutputs(a);
   if (a.scale) return BenchScale(a);
   if (a.verify) return BenchVerify(a);
   if (a.loaders) return BenchLoaders(a);
@@ -182,17 +207,11 @@ int Bench(const BenchArguments& a) {
   const BenchResult result = RunBench(options);
   const std::string table = report::BenchTable(result), plot = report::BenchChartSvg(result);
   const std::string page = report::BenchPageHtml(result, table);
-  WriteTogether(a,
-                {{"bench.csv", report::BenchCsv(result)},
-                 {"bench.svg", plot},
-                 {"bench.html", page},
-                 {"bench.json", report::BenchJson(result).dump(2) + "\n"},
-                 {"bench.txt", table}},
-                page, plot);
+  WriteTogether(a, {report::BenchCsv(result), plot, page, report::BenchJson(result).dump(2) + "\n", table}, page, plot);
   if (a.json) {
     std::cout << report::BenchJson(result).dump(2) << "\n";
   } else {
-    std::cout << report::BenchTable(result);
+    TableStream(a) << report::BenchTable(result);
   }
   return kExitOk;
 }
@@ -212,9 +231,11 @@ CommandRun AddBenchCommand(CLI::App& app) {
   command
       ->add_option("--html", a->html,
                    "also write a page (self-contained, inline SVG) plotting each method's time against\n"
-                   "its error for every scene; with --scale, cost against instance count")
+                   "its error for every scene; with --scale, cost against instance count; - writes\n"
+                   "it to standard output, and the table to standard error")
       ->type_name("FILE");
-  command->add_option("--svg", a->svg, "also write the main plot alone as an SVG file")->type_name("FILE");
+  command->add_option("--svg", a->svg, "also write the main plot alone as an SVG file (- : to standard output)")
+      ->type_name("FILE");
   ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1,
                   1000);
   command->add_option("--only", a->only, "only the scenes whose path contains TEXT")->type_name("TEXT");

@@ -4,6 +4,7 @@
 #include "chain/explanation.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
 #include "image/staged_file.hpp"
@@ -51,6 +52,13 @@ int RunExplain(const ExplainArguments& a) {
   if (a.all_vertices && a.vertex) {
     throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
   }
+  const bool page_to_stdout = a.html && IsStandardStream(*a.html);
+  if (page_to_stdout && a.json) throw UsageError("--html - and --json both want standard output: drop one of them");
+  if (a.html && !page_to_stdout) {
+    OutputPaths paths;  // before the scene is read: a bad destination costs nothing
+    paths.File("--html " + *a.html, *a.html);
+    paths.MakeDirectories();
+  }
   const Scene scene = LoadSceneArgument(a.scene, ChoiceOf(a.choice));
   PrintSceneNotes(scene, a.scene);
   if (a.html) {
@@ -58,6 +66,10 @@ int RunExplain(const ExplainArguments& a) {
     // Explain checks --instance and --vertex before the file is written.
     const Explanation page_chain = Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll});
     CheckDrawable(page_chain);
+    if (page_to_stdout) {
+      WriteStandardOutput(report::ChainPageHtml(page_chain));
+      return kExitOk;
+    }
     StagedFile page(*a.html, report::ChainPageHtml(page_chain));
     page.Commit();
     if (!a.json) {
@@ -100,7 +112,8 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "draw the chain as a page instead of the text, and print where it went: the\n"
                    "model, the world from above and the side with the camera's frustum, camera\n"
                    "space, NDC and the canvas, each with its matrix and the traced vertex\n"
-                   "(--instance, --vertex; default: instance 0's first vertex in view)")
+                   "(--instance, --vertex; default: instance 0's first vertex in view); - writes\n"
+                   "the page to standard output")
       ->type_name("FILE");
   AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("--json", a->json,

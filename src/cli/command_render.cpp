@@ -8,6 +8,7 @@
 #include "book/book_renderer.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_choice_options.hpp"
@@ -26,6 +27,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -41,7 +44,8 @@ constexpr int kMaxTimeoutSeconds = 1'000'000;
 
 struct RenderArguments {
   std::vector<std::string> scenes;
-  std::optional<std::string> output;  // one scene: OUT.png or -; several: a directory
+  std::optional<std::string> output;     // one scene: OUT.png, - or a directory; several: a directory
+  std::optional<std::string> directory;  // where each scene's files go, named after it (CheckOutput)
   int png_level = kPngFastest;
   std::string backend = "both";
   bool backend_given = false;  // --backend on the command line, rather than the default
@@ -85,37 +89,63 @@ void ResolveOptions(RenderArguments& a) {
   a.run.backends = run::Backends::kCpu;
 }
 
-// Every check on the arguments that needs no scene and no device, so that a mistake costs nothing.
-void CheckOutput(const RenderArguments& a) {
-  if (a.scenes.size() > 1) {
-    // Several scenes: -o is a directory, and each scene's files are named after it.
-    std::set<std::string> names;
-    for (const std::string& scene : a.scenes) {
-      if (IsStandardStream(scene)) throw UsageError("SCENE - (standard input) can only be rendered on its own");
-      const std::string name = std::filesystem::path(scene).stem().string();
-      if (!names.insert(name).second) {
-        throw UsageError("two scenes are named \"" + name +
-                         "\": their images would overwrite each other; render them "
-                         "in separate calls");
-      }
+// A name that ends in .png (in any case) and so looks like one file, not a directory of several.
+bool LooksLikePng(const std::string& name) {
+  std::string end = name.size() > 4 ? name.substr(name.size() - 4) : "";
+  std::transform(end.begin(), end.end(), end.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return end == ".png";
+}
+
+// Several scenes: -o is a directory (default .), and each scene's files are named after it.
+void CheckSeveralScenes(RenderArguments& a) {
+  std::set<std::string> names;
+  for (const std::string& scene : a.scenes) {
+    if (IsStandardStream(scene)) throw UsageError("SCENE - (standard input) can only be rendered on its own");
+    const std::string name = std::filesystem::path(scene).stem().string();
+    if (!names.insert(name).second) {
+      throw UsageError("two scenes are named \"" + name +
+                       "\": their images would overwrite each other; render them "
+                       "in separate calls");
     }
-    if (a.output && IsStandardStream(*a.output))
-      throw UsageError("-o -: several scenes make several PNGs; give a directory");
-    std::error_code ignored;
-    if (a.output && std::filesystem::exists(*a.output, ignored) && !std::filesystem::is_directory(*a.output, ignored)) {
-      throw UsageError("-o " + *a.output + ": with several scenes, -o names a directory, and this is a file");
-    }
-    return;
   }
+  if (a.output && IsStandardStream(*a.output))
+    throw UsageError("-o -: several scenes make several PNGs; give a directory");
+  std::error_code ignored;
+  if (a.output && std::filesystem::exists(*a.output, ignored) && !std::filesystem::is_directory(*a.output, ignored)) {
+    throw UsageError("-o " + *a.output + ": with several scenes, -o names a directory, and this is a file");
+  }
+  // multi.png would become a directory of PNGs: almost surely a slip for one scene's file name.
+  if (a.output && !NamesDirectory(*a.output) && LooksLikePng(*a.output)) {
+    throw UsageError("-o " + *a.output + ": several scenes are written into a directory, and this names a PNG; give " +
+                     "a directory (-o " + a.output->substr(0, a.output->size() - 4) + "/), or " + *a.output +
+                     "/ for a directory of that name");
+  }
+  a.directory = a.output.value_or(".");
+}
+
+// Every check on the arguments that needs no scene and no device, so that a mistake costs nothing.
+void CheckOutput(RenderArguments& a) {
+  if (a.report && IsStandardStream(*a.report))
+    throw UsageError("--report -: the report is a directory (index.html and thumbs/); give a directory");
+  if (a.junit && IsStandardStream(*a.junit)) {
+    if (a.json) throw UsageError("--junit - and --json both want standard output: drop one of them");
+    if (a.output && IsStandardStream(*a.output))
+      throw UsageError("--junit - and -o - both want standard output: give one of them a file");
+  }
+  if (a.scenes.size() > 1) return CheckSeveralScenes(a);
   const std::string& scene = a.scenes.front();
   if (IsStandardStream(scene) && !a.output) {
     throw UsageError("SCENE - (standard input) needs -o OUT.png, or -o - for the PNG on standard output");
   }
   if (!a.output || !IsStandardStream(*a.output)) {
-    if (a.output) ExpectPngName("-o", *a.output);
-    std::error_code ignored;
-    if (a.output && std::filesystem::is_directory(*a.output, ignored)) {
-      throw UsageError("-o " + *a.output + ": give a file name (OUT.png), not a directory");
+    // -o DIR/ or an existing directory: the scene's files go there, named after it, as in a batch.
+    if (a.output && NamesDirectory(*a.output)) {
+      if (IsStandardStream(scene))
+        throw UsageError("-o " + *a.output + ": SCENE - (standard input) has no name for its files; give -o OUT.png");
+      a.directory = *a.output;
+    } else if (a.output) {
+      ExpectPngName("-o", *a.output);
     }
     return;
   }
@@ -129,6 +159,45 @@ void CheckOutput(const RenderArguments& a) {
   if (StandardOutputIsTerminal()) {
     throw UsageError("-o -: standard output is a terminal; redirect it (> out.png) or pipe it to another program");
   }
+}
+
+// A scene's PNG (or the stem of its PNGs): in the directory, -o OUT.png, - or the scene's name.
+std::string SceneOut(const RenderArguments& a, const std::string& scene_argument) {
+  const std::string name = std::filesystem::path(scene_argument).stem().string() + ".png";
+  return a.directory ? (std::filesystem::path(*a.directory) / name).string() : a.output.value_or(name);
+}
+
+// Every file a scene may write at `out` (StageImages names them): its image or images, their
+// maps (which backend is judged is known only after the draw), the diff.
+std::vector<std::string> SceneFiles(const RenderArguments& a, const std::string& out) {
+  const bool both = a.run.backends == run::Backends::kBoth;
+  std::vector<std::string> files;
+  for (const std::string& image : both ? std::vector{Suffixed(out, "gpu"), Suffixed(out, "cpu")} : std::vector{out}) {
+    files.push_back(image);
+    if (a.verify || a.report) files.push_back(Suffixed(image, "map"));
+  }
+  if (both) files.push_back(Suffixed(out, "diff"));
+  return files;
+}
+
+// Every destination checked (docs/commands.md, "Output paths") and its missing directories made,
+// before any scene is read or the GPU process started.
+void PrepareDestinations(const RenderArguments& a) {
+  OutputPaths paths;
+  const std::string option = "-o " + a.output.value_or(".");
+  if (a.directory) paths.Directory(option, *a.directory);
+  for (const std::string& scene : a.scenes) {
+    const std::string out = SceneOut(a, scene);
+    if (IsStandardStream(out)) continue;
+    for (const std::string& file : SceneFiles(a, out)) paths.File(a.output ? option : "SCENE " + scene, file);
+  }
+  if (a.report) {
+    paths.Directory("--report " + *a.report, *a.report);
+    paths.Directory("--report " + *a.report, std::filesystem::path(*a.report) / "thumbs");
+    paths.File("--report " + *a.report, std::filesystem::path(*a.report) / "index.html");
+  }
+  if (a.junit && !IsStandardStream(*a.junit)) paths.File("--junit " + *a.junit, *a.junit);
+  paths.MakeDirectories();
 }
 
 // A report shows the map of every judgement; --verify asks for it; -o - has nowhere to put it.
@@ -197,9 +266,9 @@ struct DrawnScene {
 };
 
 // Reads one scene and runs it: everything is drawn before anything is written, so that a run that
-// fails writes no file at all. `directory`: where several scenes' files go.
-DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument,
-                     const std::optional<std::string>& directory, run::GpuSession& gpu, Progress& progress) {
+// fails writes no file at all.
+DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument, run::GpuSession& gpu,
+                     Progress& progress) {
   progress.Status("reading " + scene_argument + "...");
   DrawnScene drawn;
   const std::string source = IsStandardStream(scene_argument) ? "<stdin>" : scene_argument;
@@ -207,8 +276,7 @@ DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument
   if (!a.quiet) PrintSceneNotes(scene, source);
   const double load_ms = drawn.clock.Milliseconds();
   if (a.wireframe) scene.wireframe = true;
-  drawn.out = directory ? (std::filesystem::path(*directory) / (scene.name + ".png")).string()
-                        : a.output.value_or(scene.name + ".png");
+  drawn.out = SceneOut(a, scene_argument);
   try {
     drawn.result = run::RunScene(scene, source, RunOptionsOf(a, IsStandardStream(drawn.out)), gpu,
                                  [&](std::string_view text) { progress.Status(text); });
@@ -249,7 +317,9 @@ void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool se
               << std::flush;
     return;
   }
-  const bool to_stdout = !several && a.output && IsStandardStream(*a.output);
+  // Standard output carries the PNG (-o -) or the JUnit XML (--junit -) alone.
+  const bool to_stdout =
+      (!several && a.output && IsStandardStream(*a.output)) || (a.junit && IsStandardStream(*a.junit));
   if (to_stdout && a.quiet) return;
   (to_stdout ? std::cerr : std::cout) << report::RenderText(record, a.verify) << std::flush;
 }
@@ -261,8 +331,10 @@ void WriteBatchReports(const RenderArguments& a, const std::vector<run::RunRecor
     staged.emplace_back(std::filesystem::path(*a.report) / "index.html",
                         report::BatchPageHtml(records, *a.report, total_ms));
   }
-  if (a.junit) staged.emplace_back(*a.junit, report::JUnitXml(records, total_ms, a.verify));
+  const bool junit_to_stdout = a.junit && IsStandardStream(*a.junit);
+  if (a.junit && !junit_to_stdout) staged.emplace_back(*a.junit, report::JUnitXml(records, total_ms, a.verify));
   for (StagedFile& file : staged) file.Commit();
+  if (junit_to_stdout) WriteStandardOutput(report::JUnitXml(records, total_ms, a.verify));
 }
 
 // Whether a scene's failure is its own (bad input, an output that cannot be written), which a batch
@@ -300,7 +372,7 @@ void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& prog
   const bool keep_going = a.report || a.junit || a.json;
   for (const std::string& scene : a.scenes) {
     try {
-      DrawnScene drawn = DrawScene(a, scene, std::nullopt, gpu, progress);
+      DrawnScene drawn = DrawScene(a, scene, gpu, progress);
       run::RunRecord record = WriteScene(a, drawn, progress);
       PrintRecord(a, record, false);
       tally.Add(a, std::move(record));
@@ -315,11 +387,11 @@ void RenderInTurn(const RenderArguments& a, run::GpuSession& gpu, Progress& prog
 // still render. Each scene's files are written and its record printed on a thread of its own, in
 // order, while the next scene draws: the PNGs and the file system's waits take the other core.
 // `writer` is idle whenever the GPU process forks (Render sets that up).
-void RenderBatch(const RenderArguments& a, const std::string& directory, run::GpuSession& gpu, Progress& progress,
-                 BatchTally& tally, SerialQueue& writer) {
+void RenderBatch(const RenderArguments& a, run::GpuSession& gpu, Progress& progress, BatchTally& tally,
+                 SerialQueue& writer) {
   for (const std::string& scene : a.scenes) {
     try {
-      auto drawn = std::make_shared<DrawnScene>(DrawScene(a, scene, directory, gpu, progress));
+      auto drawn = std::make_shared<DrawnScene>(DrawScene(a, scene, gpu, progress));
       writer.Push([&a, &progress, &tally, scene, drawn] {
         try {
           run::RunRecord record = WriteScene(a, *drawn, progress);
@@ -344,6 +416,7 @@ void RenderBatch(const RenderArguments& a, const std::string& directory, run::Gp
 int Render(RenderArguments& a) {
   ResolveOptions(a);
   CheckOutput(a);
+  PrepareDestinations(a);
   Progress progress = Progress::OnStandardError(a.quiet);
   const bool several = a.scenes.size() > 1;
   SerialQueue writer(2);  // several scenes: each written while the next draws; each waiting holds its images
@@ -352,14 +425,11 @@ int Render(RenderArguments& a) {
   isolation.timeout_seconds = a.timeout_seconds;
   if (several) isolation.before_fork = [&writer] { writer.WaitIdle(); };
   run::GpuSession gpu(isolation);  // a child process, made for the first GPU draw and kept
-  const std::string directory = several ? a.output.value_or(".") : "";
-  if (several) MakeDirectory(directory);
-  if (a.report) MakeDirectory((std::filesystem::path(*a.report) / "thumbs").string());  // and DIR with it
   // The exit code is the worst of the scenes'. No Vulkan device ends the run (exit 3).
   Stopwatch batch_clock;
   BatchTally tally;
   if (several) {
-    RenderBatch(a, directory, gpu, progress, tally, writer);
+    RenderBatch(a, gpu, progress, tally, writer);
   } else {
     RenderInTurn(a, gpu, progress, tally);
   }
@@ -374,7 +444,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
   CLI::App* command = AddSubcommand(
       app, "render", "draw a scene on Vulkan, on the CPU twin, or on both and compare; or as the book's demos do",
       "Each PNG is written whole to a temporary file and renamed into place: a failed run leaves\n"
-      "earlier files untouched. On a terminal, progress shows on standard error.\n"
+      "earlier files untouched, and a read-only file is never replaced. Every output is checked\n"
+      "before anything is drawn. On a terminal, progress shows on standard error.\n"
       "The Vulkan work runs in a child process: when the driver crashes or passes --timeout, the\n"
       "report says so, the twin's image is still written, and later scenes still render.\n"
       "Exit codes: 0 done (both: identical images, or different where the twin has no rules for\n"
@@ -394,8 +465,9 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "gpu, cpu: write OUT.png; both: OUT-gpu.png, OUT-cpu.png and, when\n"
                    "they differ, OUT-diff.png. Default: the scene's name in the current\n"
                    "directory. - writes the PNG to standard output (gpu or cpu only).\n"
-                   "Several scenes: OUT is a directory (made if missing; default .) and\n"
-                   "each scene's files are named after it")
+                   "DIR/ (a final /) or an existing directory, and with several scenes any\n"
+                   "name but OUT.png (default .): each scene's files go there, named after it.\n"
+                   "Missing directories are made, for every option that writes")
       ->type_name("OUT.png|DIR");
   ExpectIntegerIn(command
                       ->add_option("--png-level", a->png_level,
@@ -453,7 +525,10 @@ CommandRun AddRenderCommand(CLI::App& app) {
                    "images as thumbnails (DIR/thumbs/) with its verdict, counts, device and times;\n"
                    "every verification's map is written too")
       ->type_name("DIR");
-  command->add_option("--junit", a->junit, "also write the batch as JUnit XML (one testcase per scene) to FILE")
+  command
+      ->add_option("--junit", a->junit,
+                   "also write the batch as JUnit XML (one testcase per scene) to FILE; - writes it\n"
+                   "to standard output, and the report to standard error")
       ->type_name("FILE");
   return [a, backend] {
     a->backend_given = backend->count() > 0;

@@ -6,6 +6,7 @@
 #include "cli/colour_argument.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
 #include "image/png_file.hpp"
@@ -48,25 +49,56 @@ verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<
   return options;
 }
 
+bool MapToStandardOutput(const VerifyArguments& a) { return a.map && IsStandardStream(*a.map) && !a.no_map; }
+
+// Where the map goes, checked (and its directories made) before the scene is read: a map that
+// cannot be written fails at once, not after the judgement. -: standard output, not a terminal.
+void PrepareMap(const VerifyArguments& a) {
+  if (a.map && !IsStandardStream(*a.map)) ExpectPngName("--map", *a.map);
+  if (a.no_map) return;
+  if (MapToStandardOutput(a)) {
+    if (a.json) throw UsageError("--map - and --json both want standard output: drop one of them");
+    if (StandardOutputIsTerminal()) {
+      throw UsageError("--map -: standard output is a terminal; redirect it (> map.png) or pipe it to another program");
+    }
+    return;
+  }
+  OutputPaths paths;
+  paths.File(a.map ? "--map " + *a.map : "the map beside IMAGE.png (--map MAP.png or --no-map to change it)",
+             a.map.value_or(Suffixed(a.image, "map")));
+  paths.MakeDirectories();
+}
+
+// Writes the map, staged, or to standard output; returns what the report calls it.
+std::string WriteMap(const VerifyArguments& a, const Image& map) {
+  if (MapToStandardOutput(a)) {
+    WriteStandardOutput(EncodePng(map));
+    return "standard output";
+  }
+  const std::string file = a.map.value_or(Suffixed(a.image, "map"));
+  StagePng(file, map).Commit();
+  return file;
+}
+
+// The report goes to standard error when standard output carries the map.
+std::ostream& ReportStream(const VerifyArguments& a) { return MapToStandardOutput(a) ? std::cerr : std::cout; }
+
 // --coverage's run: the same image and rules, judged by where it is covered.
 int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& image,
                    const std::optional<verify::DrawnBy>& drawn_by, const verify::CoverageOptions& options) {
   const run::CoverageJudgement judgement = run::JudgeCoverage(scene, image, options, !a.no_map);
   std::optional<std::string> map;
-  if (judgement.map) {
-    map = a.map.value_or(Suffixed(a.image, "map"));
-    StagePng(*map, *judgement.map).Commit();
-  }
+  if (judgement.map) map = WriteMap(a, *judgement.map);
   const report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
   if (a.json)
     std::cout << report::CoverageJson(outputs).dump(2) << "\n";
   else
-    std::cout << report::CoverageReportText(outputs);
+    ReportStream(a) << report::CoverageReportText(outputs);
   return ExitCodeOf(judgement.verdict);
 }
 
 int Verify(const VerifyArguments& a) {
-  if (a.map) ExpectPngName("--map", *a.map);
+  PrepareMap(a);
   // --coverage's options are checked before the scene is read, so that a mistake costs nothing.
   verify::CoverageOptions coverage;
   if (!a.coverage && (a.background || a.hole_tolerance))
@@ -91,15 +123,12 @@ int Verify(const VerifyArguments& a) {
   }
   const run::ImageJudgement judgement = run::JudgeImage(scene, image, DeviceRules(a, drawn_by), !a.no_map);
   std::optional<std::string> map;
-  if (judgement.map) {
-    map = a.map.value_or(Suffixed(a.image, "map"));
-    StagePng(*map, *judgement.map).Commit();
-  }
+  if (judgement.map) map = WriteMap(a, *judgement.map);
   const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
   if (a.json)
     std::cout << report::VerifyJson(outputs).dump(2) << "\n";
   else
-    std::cout << report::VerifyText(outputs);
+    ReportStream(a) << report::VerifyText(outputs);
   return ExitCodeOf(judgement.verdict);
 }
 
@@ -140,7 +169,10 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                   ->type_name("BOOL")
                   ->each([a](const std::string&) { a->strict_given = true; }),
               "value", {"true", "false"});
-  command->add_option("--map", a->map, "write the verification map here (default: IMAGE-map.png)")
+  command
+      ->add_option("--map", a->map,
+                   "write the verification map here (default: IMAGE-map.png); - writes it\n"
+                   "to standard output, and the report to standard error")
       ->type_name("MAP.png");
   command->add_flag("--no-map", a->no_map, "write no map");
   AddSceneChoiceOptions(*command, a->choice);

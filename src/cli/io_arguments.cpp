@@ -87,12 +87,6 @@ void ExpectPngName(const std::string& option, const std::string& name) {
   }
 }
 
-void MakeDirectory(const std::string& directory) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) throw FileError(directory + ": cannot create the directory: " + error.message());
-}
-
 bool StandardOutputIsTerminal() { return ::isatty(STDOUT_FILENO) == 1; }
 
 void WriteStandardOutput(std::string_view bytes) {

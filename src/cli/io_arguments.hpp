@@ -27,9 +27,6 @@ void ExpectPngName(const std::string& option, const std::string& name);
 // diff and map images, verify's map).
 std::string Suffixed(const std::string& out, const std::string& suffix);
 
-// Makes `directory` and its parents where missing; throws FileError naming it.
-void MakeDirectory(const std::string& directory);
-
 bool StandardOutputIsTerminal();
 // All of `bytes` to standard output, flushed; throws FileError naming standard output.
 void WriteStandardOutput(std::string_view bytes);

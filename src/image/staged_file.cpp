@@ -1,5 +1,7 @@
 #include "image/staged_file.hpp"
 
+#include "image/output_path.hpp"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,9 +19,10 @@ std::string SystemError() { return std::strerror(errno); }
 StagedFile::StagedFile(std::filesystem::path target, std::string_view bytes) : target_(std::move(target)) {
   // Checked here, not at Commit(): every output is staged before the first is committed, so a
   // target that cannot take a file must fail while nothing has been replaced yet.
-  std::error_code ignored;
-  if (target_.filename().empty() || std::filesystem::is_directory(target_, ignored)) {
-    throw FileError(target_.string() + ": is a directory, not a file name");
+  // The same rule as the command line's checks before the work (output_path.hpp), for a file that
+  // changed since or was never checked: a read-only target is never replaced.
+  if (const std::string problem = FileTargetProblem(target_); !problem.empty()) {
+    throw FileError(target_.string() + ": " + problem);
   }
   // Same directory as the target, so that the final rename() is atomic (one file system).
   const std::filesystem::path temporary = target_.string() + ".tmp-" + std::to_string(::getpid());

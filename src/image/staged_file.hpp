@@ -1,5 +1,6 @@
 // An output file written in full to a temporary file beside its target and renamed into place by
-// Commit(): a run that fails part-way never leaves a truncated file or destroys an earlier one.
+// Commit(): a run that fails part-way never leaves a truncated file or destroys an earlier one, and
+// a read-only file is never replaced (output_path.hpp). It makes no directory.
 #pragma once
 
 #include <filesystem>
