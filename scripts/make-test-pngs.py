@@ -176,6 +176,16 @@ def malformed_files():
     files["bad-filter-type.png"] = png(header, zlib.compress(bytes(bad_filter), 9))
     # Image data that ends a row early (too few bytes for 7 rows of 13 pixels).
     files["too-little-data.png"] = png(header, zlib.compress(scanlines(good_rows, 8, False)[:100], 9))
+    # Headers no PNG has, each followed by image data that would otherwise read: a colour type that
+    # does not exist (5), a bit depth that does not exist (7), one the colour type does not allow.
+    files["ihdr-colour-type-5.png"] = png(ihdr(W, H, 8, 5), good_idat)
+    files["ihdr-bit-depth-7.png"] = png(ihdr(W, H, 7, 6), good_idat)
+    files["ihdr-palette-16-bit.png"] = png(ihdr(W, H, 16, 3), good_idat, chunk(b"PLTE", bytes([0, 0, 0])))
+    # Cut off inside a header whose colour type is already wrong: the colour type is named, from a
+    # file as from memory.
+    files["ihdr-cut-after-colour-type-5.png"] = SIGNATURE + ihdr(W, H, 8, 5)[:8 + 10]
+    # A text chunk that says it runs past the end of the file.
+    files["text-past-the-end.png"] = SIGNATURE + header + struct.pack(">I", 4096) + b"tEXtComment\0cut"
     return files
 
 

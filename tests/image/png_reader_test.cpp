@@ -91,6 +91,11 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
       {"too-little-data.png", "corrupt: the image data inflates to 100 bytes, not the 371 bytes its header needs"},
       {"truncated-in-idat.png", "truncated"},
       {"ztxt-bomb.png", "an ancillary chunk holds more than twinraster keeps"},
+      {"ihdr-colour-type-5.png", "corrupt: IHDR declares colour type 5 (a PNG's is 0, 2, 3, 4 or 6)"},
+      {"ihdr-bit-depth-7.png", "corrupt: IHDR declares bit depth 7 (a PNG's is 1, 2, 4, 8 or 16)"},
+      {"ihdr-palette-16-bit.png", "corrupt: IHDR declares bit depth 16 with colour type 3, which allows 1, 2, 4 or 8"},
+      {"ihdr-cut-after-colour-type-5.png", "corrupt: IHDR declares colour type 5"},
+      {"text-past-the-end.png", "cannot read as PNG: the file ends before the PNG does (truncated)"},
   };
   // Like verify's canvas check: a size is refused before anything is decoded (the bomb would be
   // 1 GiB of RGBA).
@@ -120,6 +125,27 @@ TEST_CASE("PNG reader: bytes in memory are read as a file is, and refused as a f
   const std::string bad = test::ReadFile(Png("malformed", "palette-index-out-of-range.png"));
   CHECK_THROWS_WITH(DecodePng(bad, "bytes"), HasSubstring("bytes: cannot read as PNG: corrupt: palette index 3"));
   CHECK_THROWS_WITH(DecodePng("", "nothing"), HasSubstring("nothing: cannot read as PNG: the file ends"));
+}
+
+TEST_CASE("PNG reader: every malformed file is refused in the same words from a file and from memory",
+          "[png][reader]") {
+  // One structure check for both: reading a file it could seek past the end, which a buffer cannot.
+  int compared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+    const std::string file = entry.path().string();
+    INFO(file);
+    const std::string from_file = Refusal(entry.path());
+    std::string from_memory;
+    try {
+      DecodePng(test::ReadFile(entry.path()), file);
+    } catch (const FileError& e) {
+      from_memory = e.what();
+    }
+    CHECK_FALSE(from_file.empty());
+    CHECK(from_file == from_memory);
+    ++compared;
+  }
+  CHECK(compared == 26);
 }
 
 TEST_CASE("PNG reader: a missing file or a folder is named, not decoded", "[png][reader]") {
