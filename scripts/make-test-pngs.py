@@ -189,6 +189,19 @@ def malformed_files():
     return files
 
 
+def large_files():
+    """Valid files that declare far more pixels than their bytes: what a reader must not hold whole."""
+    # 16384 x 16384 1-bit grey, all zero rows: 32 KB of file, 1 GiB as RGBA.
+    rows = zlib.compress(b"\0" * (16384 * (1 + 2048)), 9)
+    # Interlaced, 8192 x 4097 1-bit grey: one row over 2^25 pixels, what compare holds whole.
+    w, h, interlaced = 8192, 4097, 0
+    for x0, y0, dx, dy in ADAM7:
+        pw, ph = max(0, -(-(w - x0) // dx)), max(0, -(-(h - y0) // dy))
+        interlaced += ph * (1 + -(-pw // 8)) if pw and ph else 0
+    return {"declares-16384x16384.png": png(ihdr(16384, 16384, 1, 0), rows),
+            "interlaced-8192x4097.png": png(ihdr(w, h, 1, 0, 1), zlib.compress(b"\0" * interlaced, 9))}
+
+
 def paeth(a, b, c):
     p = a + b - c
     pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
@@ -255,7 +268,7 @@ def main():
             with open(os.path.join(a.out, name), "wb") as f:
                 f.write(data)
         return
-    for sub, files in (("valid", valid_files()), ("malformed", malformed_files())):
+    for sub, files in (("valid", valid_files()), ("malformed", malformed_files()), ("large", large_files())):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
         for name, data in sorted(files.items()):
             with open(os.path.join(a.out, sub, name), "wb") as f:

@@ -153,15 +153,23 @@ Image Decode(std::istream& chunks, const Source& source, const std::string& name
 struct FileClose {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
+using File = std::unique_ptr<std::FILE, FileClose>;
+
+// Opens the file twice, for libspng and for the structure check; refuses a folder or nothing.
+File OpenPng(const std::filesystem::path& file, std::ifstream& chunks) {
+  File in(std::fopen(file.c_str(), "rb"));
+  chunks.open(file, std::ios::binary);
+  std::error_code error;
+  if (!in || !chunks || std::filesystem::is_directory(file, error))
+    throw FileError(file.string() + ": cannot open for reading");
+  return in;
+}
 
 }  // namespace
 
 Image ReadPng(const std::filesystem::path& file, const PngSizeCheck& check) {
-  const std::unique_ptr<std::FILE, FileClose> in(std::fopen(file.c_str(), "rb"));
-  std::ifstream chunks(file, std::ios::binary);
-  std::error_code error;
-  if (!in || !chunks || std::filesystem::is_directory(file, error))
-    throw FileError(file.string() + ": cannot open for reading");
+  std::ifstream chunks;
+  const File in = OpenPng(file, chunks);
   return Decode(
       chunks,
       [&](spng_ctx* ctx) {
@@ -175,6 +183,86 @@ Image DecodePng(std::string_view bytes, const std::string& name, const PngSizeCh
   std::istringstream chunks{std::string(bytes)};
   return Decode(
       chunks, [&](spng_ctx* ctx) { return spng_set_png_buffer(ctx, bytes.data(), bytes.size()); }, name, check);
+}
+
+}  // namespace twinraster
+
+namespace twinraster {
+
+PngSize ReadPngSize(const std::filesystem::path& file) {
+  std::ifstream chunks;
+  OpenPng(file, chunks);
+  const png_structure::Header h = png_structure::CheckHeader(chunks, file.string(), {});
+  return {h.width, h.height};
+}
+
+struct PngRowReader::State {
+  std::string name;
+  File file;
+  Source source;
+  Context ctx;
+  spng_ihdr ihdr{};
+  std::optional<Image> whole;  // an interlaced file, deinterlaced
+  std::vector<std::uint8_t> row;
+  std::uint32_t next = 0;
+};
+
+PngRowReader::PngRowReader(const std::filesystem::path& file, std::uint64_t whole_up_to)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.name = file.string();
+  std::ifstream chunks;
+  s.file = OpenPng(file, chunks);
+  const png_structure::Header h = png_structure::CheckHeader(chunks, s.name, {});
+  const std::uint64_t pixels = std::uint64_t{h.width} * h.height;
+  if (h.interlace != 0 && pixels > kMaxWholePixels) {
+    Refuse(s.name, "an interlaced PNG is decoded whole, and its " + std::to_string(h.width) + " x " +
+                       std::to_string(h.height) + " pixels are over the " + std::to_string(kMaxWholePixels) +
+                       " twinraster holds whole (write it without interlacing)");
+  }
+  // A small image is read whole, by the fast reader when it can: a render's rows cost more one by
+  // one through libspng than the whole image held (16 MiB at most).
+  if (h.interlace != 0 || pixels <= whole_up_to) {
+    s.whole = ReadPng(file);
+    return;
+  }
+  png_structure::CheckStructure(chunks, s.name, {});
+  std::FILE* in = s.file.get();
+  s.source = [in](spng_ctx* ctx) {
+    std::rewind(in);
+    return spng_set_png_file(ctx, in);
+  };
+  s.ctx = NewDecoder(s.source, s.name);
+  if (const int e = spng_get_ihdr(s.ctx.get(), &s.ihdr)) Refuse(s.name, Problem(e));
+  if (const int e =
+          spng_decode_image(s.ctx.get(), nullptr, 0, SPNG_FMT_RGBA8, SPNG_DECODE_TRNS | SPNG_DECODE_PROGRESSIVE))
+    Refuse(s.name, Problem(e));
+  s.row.resize(std::size_t{s.ihdr.width} * 4);
+}
+
+PngRowReader::~PngRowReader() = default;
+
+PngSize PngRowReader::Size() const {
+  const State& s = *state_;
+  return s.whole ? PngSize{s.whole->width, s.whole->height} : PngSize{s.ihdr.width, s.ihdr.height};
+}
+
+const std::uint8_t* PngRowReader::NextRow() {
+  State& s = *state_;
+  if (s.next >= Size().height) throw std::logic_error("PngRowReader::NextRow past the last row");
+  if (s.whole) return s.whole->pixel(0, s.next++);
+  // SPNG_EOI comes with the last row, written like the others.
+  const int e = spng_decode_row(s.ctx.get(), s.row.data(), s.row.size());
+  if (e != 0 && e != SPNG_EOI) Refuse(s.name, Problem(e));
+  ++s.next;
+  return s.row.data();
+}
+
+void PngRowReader::Finish() {
+  State& s = *state_;
+  if (s.whole) return;  // ReadPng checked it all
+  if (const int e = spng_decode_chunks(s.ctx.get())) Refuse(s.name, Problem(e));
+  if (s.ihdr.color_type == SPNG_COLOR_TYPE_INDEXED) CheckPaletteIndices(s.source, s.name, s.ihdr);
 }
 
 }  // namespace twinraster

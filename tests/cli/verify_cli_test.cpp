@@ -6,6 +6,7 @@
 #include "support/test_support.hpp"
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -213,6 +214,34 @@ TEST_CASE("verify and compare: every malformed PNG exits 2, naming the file, wit
   const test::CliResult bomb =
       test::RunCli({"verify", scene, test::SourcePath("tests/image/pngs/malformed/bomb-16384-truncated.png").string()});
   CHECK_THAT(bomb.err, HasSubstring("the image is 16384 x 16384, but"));
+}
+
+TEST_CASE("compare: a valid PNG that declares 16384 x 16384 pixels is read a row at a time, in little memory",
+          "[cli][compare][png]") {
+  const std::string big = test::SourcePath("tests/image/pngs/large/declares-16384x16384.png").string();
+  const std::string small = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
+  const test::TempDir dir;
+  const std::string diff = (dir / "d.png").string();
+  test::WriteFile(diff, "an earlier diff");
+  // Both headers are read before either file is decoded: a diff it would need 1 GiB for is refused at once.
+  const test::CliResult refused = test::RunCli({"compare", big, big, "--diff", diff});
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.err, HasSubstring("--diff " + diff +
+                                       ": a diff image is drawn whole, for at most 33554432 pixels, and these are "
+                                       "16384 x 16384: compare them without --diff\n"));
+  CHECK(test::ReadFile(diff) == "an earlier diff");
+  // Of another size, it is still read through (a corrupt file is refused whatever its size).
+  const test::CliResult r = test::RunCli({"compare", big, small, "--json"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["a"]["width"] == 16384);
+  CHECK(j["same_size"] == false);
+  // The largest child's peak memory (CTest runs each case in a process of its own): a few rows,
+  // where holding the image would take 1 GiB (2.1 GB before, with both held).
+  rusage usage{};
+  REQUIRE(getrusage(RUSAGE_CHILDREN, &usage) == 0);
+  CHECK(usage.ru_maxrss < 256 * 1024);  // KiB
 }
 
 TEST_CASE("render --verify judges lavapipe's image and writes OUT-gpu-map.png, and --rules book refuses it",

@@ -148,6 +148,64 @@ TEST_CASE("PNG reader: every malformed file is refused in the same words from a 
   CHECK(compared == 26);
 }
 
+namespace {
+
+// The image PngRowReader gives, row by row (none read whole but the interlaced), or the message it
+// throws.
+std::pair<Image, std::string> ReadRows(const std::filesystem::path& file) {
+  try {
+    PngRowReader rows(file, 0);
+    Image image(rows.Size().width, rows.Size().height);
+    for (std::uint32_t y = 0; y < image.height; ++y)
+      std::copy_n(rows.NextRow(), std::size_t{image.width} * 4, image.pixel(0, y));
+    rows.Finish();
+    return {image, ""};
+  } catch (const FileError& e) {
+    return {Image(), e.what()};
+  }
+}
+
+}  // namespace
+
+TEST_CASE(
+    "PNG reader: a row at a time, every valid file reads as ReadPng reads it, and every malformed one is refused "
+    "in its words",
+    "[png][reader]") {
+  int read = 0;
+  for (const char* folder : {"valid", "malformed"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/") / folder)) {
+      INFO(entry.path().string());
+      const auto [image, message] = ReadRows(entry.path());
+      CHECK(message == Refusal(entry.path()));
+      if (message.empty()) {
+        CHECK(image.rgba == ReadPng(entry.path()).rgba);
+        CHECK(ReadPngSize(entry.path()) == PngSize{image.width, image.height});
+      }
+      ++read;
+    }
+  }
+  CHECK(read == 27 + 26);
+}
+
+TEST_CASE("PNG reader: a row at a time, a file that declares 16384 x 16384 pixels gives its rows one by one",
+          "[png][reader]") {
+  const auto file = Png("large", "declares-16384x16384.png");
+  CHECK(ReadPngSize(file) == PngSize{16384, 16384});
+  PngRowReader rows(file);
+  REQUIRE(rows.Size() == PngSize{16384, 16384});
+  // Its first and last rows: black and opaque (1-bit grey 0).
+  const std::uint8_t* first = rows.NextRow();
+  CHECK((first[0] == 0 && first[3] == 255 && first[16383 * 4 + 3] == 255));
+  // An interlaced file is decoded whole, so one over kMaxWholePixels is refused before anything is.
+  const auto interlaced = Png("large", "interlaced-8192x4097.png");
+  CHECK_THROWS_WITH(PngRowReader(interlaced),
+                    interlaced.string() +
+                        ": cannot read as PNG: an interlaced PNG is decoded whole, and its 8192 x 4097 "
+                        "pixels are over the 33554432 twinraster holds whole (write it without "
+                        "interlacing)");
+  // The rest is `compare`'s test (tests/cli/verify_cli_test.cpp), which measures its memory.
+}
+
 TEST_CASE("PNG reader: a missing file or a folder is named, not decoded", "[png][reader]") {
   const test::TempDir dir;
   CHECK_THAT(Refusal(dir / "missing.png"), HasSubstring("missing.png: cannot open for reading"));
