@@ -176,7 +176,30 @@ def malformed_files():
     files["bad-filter-type.png"] = png(header, zlib.compress(bytes(bad_filter), 9))
     # Image data that ends a row early (too few bytes for 7 rows of 13 pixels).
     files["too-little-data.png"] = png(header, zlib.compress(scanlines(good_rows, 8, False)[:100], 9))
+    # Headers no PNG has, each followed by image data that would otherwise read: a colour type that
+    # does not exist (5), a bit depth that does not exist (7), one the colour type does not allow.
+    files["ihdr-colour-type-5.png"] = png(ihdr(W, H, 8, 5), good_idat)
+    files["ihdr-bit-depth-7.png"] = png(ihdr(W, H, 7, 6), good_idat)
+    files["ihdr-palette-16-bit.png"] = png(ihdr(W, H, 16, 3), good_idat, chunk(b"PLTE", bytes([0, 0, 0])))
+    # Cut off inside a header whose colour type is already wrong: the colour type is named, from a
+    # file as from memory.
+    files["ihdr-cut-after-colour-type-5.png"] = SIGNATURE + ihdr(W, H, 8, 5)[:8 + 10]
+    # A text chunk that says it runs past the end of the file.
+    files["text-past-the-end.png"] = SIGNATURE + header + struct.pack(">I", 4096) + b"tEXtComment\0cut"
     return files
+
+
+def large_files():
+    """Valid files that declare far more pixels than their bytes: what a reader must not hold whole."""
+    # 16384 x 16384 1-bit grey, all zero rows: 32 KB of file, 1 GiB as RGBA.
+    rows = zlib.compress(b"\0" * (16384 * (1 + 2048)), 9)
+    # Interlaced, 8192 x 4097 1-bit grey: one row over 2^25 pixels, what compare holds whole.
+    w, h, interlaced = 8192, 4097, 0
+    for x0, y0, dx, dy in ADAM7:
+        pw, ph = max(0, -(-(w - x0) // dx)), max(0, -(-(h - y0) // dy))
+        interlaced += ph * (1 + -(-pw // 8)) if pw and ph else 0
+    return {"declares-16384x16384.png": png(ihdr(16384, 16384, 1, 0), rows),
+            "interlaced-8192x4097.png": png(ihdr(w, h, 1, 0, 1), zlib.compress(b"\0" * interlaced, 9))}
 
 
 def paeth(a, b, c):
@@ -245,7 +268,7 @@ def main():
             with open(os.path.join(a.out, name), "wb") as f:
                 f.write(data)
         return
-    for sub, files in (("valid", valid_files()), ("malformed", malformed_files())):
+    for sub, files in (("valid", valid_files()), ("malformed", malformed_files()), ("large", large_files())):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
         for name, data in sorted(files.items()):
             with open(os.path.join(a.out, sub, name), "wb") as f:

@@ -1,7 +1,9 @@
-// `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image.
+// `twinraster compare A.png B.png`: counts differing pixels, optionally writing a diff image; both
+// headers are checked before either file is decoded, and the files are read a row at a time.
 #include "base/usage_error.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/image_compare.hpp"
@@ -44,16 +46,55 @@ void PrepareDiff(const CompareArguments& args) {
   paths.MakeDirectories();
 }
 
+// Every row of a file read and checked, none kept: a file of another size is still refused
+// when it is corrupt, as one compared would be.
+void CheckRows(PngRowReader& file) {
+  for (std::uint32_t y = 0; y < file.Size().height; ++y) file.NextRow();
+  file.Finish();
+}
+
+// The two files compared a row at a time, the diff's rows drawn into `diff` when given.
+Comparison CompareRows(PngRowReader& a, PngRowReader& b, Image* diff) {
+  Comparison c;
+  const PngSize size = a.Size();
+  for (std::uint32_t y = 0; y < size.height; ++y) {
+    const std::uint8_t *row_a = a.NextRow(), *row_b = b.NextRow();
+    CompareRow(row_a, row_b, size.width, c);
+    if (diff) DiffRow(row_a, row_b, size.width, diff->pixel(0, y));
+  }
+  a.Finish();
+  b.Finish();
+  return c;
+}
+
 int Compare(const CompareArguments& args) {
   PrepareDiff(args);
-  const Image a = ReadPng(args.a);
-  const Image b = ReadPng(args.b);
-  const Comparison comparison = CompareImages(a, b);
-  const bool wrote_diff = args.diff && comparison.same_size && !comparison.Equal();
+  // Both headers before either file is decoded: a refusal, or sizes that differ, cost nothing.
+  const PngSize size_a = ReadPngSize(args.a), size_b = ReadPngSize(args.b);
+  const bool same_size = size_a == size_b;
+  const std::uint64_t pixels = std::uint64_t{size_a.width} * size_a.height;
+  if (args.diff && same_size && pixels > kMaxWholePixels) {
+    throw UsageError("--diff " + *args.diff + ": a diff image is drawn whole, for at most " +
+                     std::to_string(kMaxWholePixels) + " pixels, and these are " + std::to_string(size_a.width) +
+                     " x " + std::to_string(size_a.height) + ": compare them without --diff");
+  }
+  // Read a row at a time, never whole: memory stays a few rows, whatever size the files declare.
+  PngRowReader a(args.a), b(args.b);
+  Comparison comparison;
+  std::optional<Image> diff;
+  if (!same_size) {
+    comparison.same_size = false;
+    CheckRows(a);
+    CheckRows(b);
+  } else {
+    if (args.diff) diff.emplace(size_a.width, size_a.height, Image::Uncleared{});
+    comparison = CompareRows(a, b, diff ? &*diff : nullptr);
+  }
+  const bool wrote_diff = diff && !comparison.Equal();
   if (wrote_diff && DiffToStandardOutput(args)) {
-    WriteStandardOutput(EncodePng(DiffImage(a, b)));
+    WriteStandardOutput(EncodePng(*diff));
   } else if (wrote_diff) {
-    WritePng(*args.diff, DiffImage(a, b));
+    WritePng(*args.diff, *diff);
   }
   // A diff left by an earlier run would now describe images that no longer differ.
   std::error_code ignored;
@@ -62,14 +103,15 @@ int Compare(const CompareArguments& args) {
     std::filesystem::remove(*args.diff, ignored);
   }
 
+  const report::NamedImage named_a{args.a, size_a.width, size_a.height}, named_b{args.b, size_b.width, size_b.height};
   if (args.json) {
-    std::cout
-        << report::CompareJson({args.a, a}, {args.b, b}, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
-        << "\n";
+    std::cout << report::CompareJson(named_a, named_b, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
+              << "\n";
   } else {
     const std::string diff_name = DiffToStandardOutput(args) ? "standard output" : args.diff.value_or("");
     (DiffToStandardOutput(args) ? std::cerr : std::cout)
-        << report::ComparisonText(a, b, comparison) << (wrote_diff ? ", diff in " + diff_name : "") << "\n";
+        << report::ComparisonText(named_a, named_b, comparison) << (wrote_diff ? ", diff in " + diff_name : "")
+        << "\n";
   }
   return comparison.Equal() ? kExitOk : kExitImagesDiffer;
 }

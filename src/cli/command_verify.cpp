@@ -13,6 +13,7 @@
 #include "report/coverage_report.hpp"
 #include "report/image_notes.hpp"
 #include "report/verify_report.hpp"
+#include "run/device_rules.hpp"
 #include "run/judge_coverage.hpp"
 #include "run/judge_image.hpp"
 
@@ -41,12 +42,22 @@ struct VerifyArguments {
   std::optional<std::string> background, hole_tolerance;  // --coverage's, parsed by colour_argument.hpp
 };
 
+// The Vulkan spec's least subPixelPrecisionBits (its "Required Limits" table): no conformant device
+// snaps coarser, so fewer bits would judge by rules no device has.
+constexpr int kMinSubpixelBits = 4;
+
+// --subpixel-bits below the spec's minimum, refused with the reason (ExpectIntegerIn names the range).
+std::string BelowSpecMinimum(std::string& value) {
+  return value.size() == 1 && value[0] >= '0' && value[0] < '0' + kMinSubpixelBits
+             ? "Vulkan requires subPixelPrecisionBits of at least " + std::to_string(kMinSubpixelBits) +
+                   " (the spec's Required Limits), got " + value
+             : "";
+}
+
 // The device's rules: each option given, else what the image's notes say, else the loosest.
-verify::VerifyOptions DeviceRules(const VerifyArguments& a, const std::optional<verify::DrawnBy>& drawn_by) {
-  verify::VerifyOptions options = drawn_by ? drawn_by->rasterizes : verify::VerifyOptions{};
-  if (a.bits_given) options.subpixel_bits = a.subpixel_bits;
-  if (a.strict_given) options.strict_lines = a.strict_lines == "true";
-  return options;
+run::DeviceRules DeviceRulesOf(const VerifyArguments& a, const std::optional<verify::DrawnBy>& drawn_by) {
+  return run::ChooseDeviceRules(drawn_by, a.bits_given ? std::optional<int>(a.subpixel_bits) : std::nullopt,
+                                a.strict_given ? std::optional<bool>(a.strict_lines == "true") : std::nullopt);
 }
 
 bool MapToStandardOutput(const VerifyArguments& a) { return a.map && IsStandardStream(*a.map) && !a.no_map; }
@@ -85,11 +96,13 @@ std::ostream& ReportStream(const VerifyArguments& a) { return MapToStandardOutpu
 
 // --coverage's run: the same image and rules, judged by where it is covered.
 int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& image,
-                   const std::optional<verify::DrawnBy>& drawn_by, const verify::CoverageOptions& options) {
+                   const std::optional<verify::DrawnBy>& drawn_by, verify::CoverageOptions options) {
+  const run::DeviceRules rules = DeviceRulesOf(a, drawn_by);
+  options.rules = rules.rules;
   const run::CoverageJudgement judgement = run::JudgeCoverage(scene, image, options, !a.no_map);
   std::optional<std::string> map;
   if (judgement.map) map = WriteMap(a, *judgement.map);
-  const report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
+  const report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
   if (a.json)
     std::cout << report::CoverageJson(outputs).dump(2) << "\n";
   else
@@ -98,6 +111,8 @@ int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& im
 }
 
 int Verify(const VerifyArguments& a) {
+  if (a.map && a.no_map)
+    throw UsageError("--map " + *a.map + " writes the map and --no-map writes none: give one of them");
   PrepareMap(a);
   // --coverage's options are checked before the scene is read, so that a mistake costs nothing.
   verify::CoverageOptions coverage;
@@ -117,14 +132,12 @@ int Verify(const VerifyArguments& a) {
     }
   });
   const std::optional<verify::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
-  if (a.coverage) {
-    coverage.rules = DeviceRules(a, drawn_by);
-    return VerifyCoverage(a, scene, image, drawn_by, coverage);
-  }
-  const run::ImageJudgement judgement = run::JudgeImage(scene, image, DeviceRules(a, drawn_by), !a.no_map);
+  if (a.coverage) return VerifyCoverage(a, scene, image, drawn_by, coverage);
+  const run::DeviceRules rules = DeviceRulesOf(a, drawn_by);
+  const run::ImageJudgement judgement = run::JudgeImage(scene, image, rules.rules, !a.no_map);
   std::optional<std::string> map;
   if (judgement.map) map = WriteMap(a, *judgement.map);
-  const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, judgement, map};
+  const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
   if (a.json)
     std::cout << report::VerifyJson(outputs).dump(2) << "\n";
   else
@@ -141,7 +154,9 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                     "Each pixel is certain (only one surface, or only the background, may show there),\n"
                     "uncertain (the spec lets more than one show) or a violation (no conformant\n"
                     "implementation may write that colour there). docs/verify.md lists the freedoms allowed.\n"
-                    "The device's rules come from the image's PNG notes (render writes them), else the options.\n"
+                    "The device's rules come from the options, else the image's PNG notes (render writes them),\n"
+                    "else the spec's loosest (4 subpixel bits, non-strict lines), which the output then says.\n"
+                    "Alpha is not judged: the output says how many pixels are not opaque.\n"
                     "Exit codes: 0 the image passes, 1 it has violations, 2 bad input or usage, 4 internal error,\n"
                     "6 inconclusive (no violation, but too little is certain to tell a broken image).\n"
                     "--coverage judges only where the image is covered, for engines with their own shading: each\n"
@@ -160,8 +175,9 @@ CommandRun AddVerifyCommand(CLI::App& app) {
                                    "the device's subPixelPrecisionBits (default: the image's notes, else 4,\n"
                                    "the spec's minimum; lavapipe has 8, SwiftShader 4)")
                       ->type_name("N")
-                      ->each([a](const std::string&) { a->bits_given = true; }),
-                  0, 16);
+                      ->each([a](const std::string&) { a->bits_given = true; })
+                      ->check(CLI::Validator(BelowSpecMinimum, "", "spec minimum")),
+                  kMinSubpixelBits, 16);
   ExpectOneOf(command
                   ->add_option("--strict-lines", a->strict_lines,
                                "the device's strictLines (default: the image's notes, else false, which\n"
@@ -177,7 +193,7 @@ CommandRun AddVerifyCommand(CLI::App& app) {
   command->add_flag("--no-map", a->no_map, "write no map");
   AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("--json", a->json,
-                    "print one JSON object (twinraster.verify/2, with --coverage twinraster.verify-coverage/1;\n"
+                    "print one JSON object (twinraster.verify/3, with --coverage twinraster.verify-coverage/2;\n"
                     "docs/json-output.md)");
   command->add_flag("--coverage", a->coverage,
                     "judge only which pixels are covered, not their colours: for images from engines whose\n"

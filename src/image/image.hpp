@@ -23,4 +23,11 @@ struct Image {
   const std::uint8_t* pixel(std::uint32_t x, std::uint32_t y) const { return &rgba[(std::size_t{y} * width + x) * 4]; }
 };
 
+// Pixels whose alpha is not 255: what `verify`, which judges colour and not alpha, reports.
+inline std::uint64_t NotOpaquePixels(const Image& image) {
+  std::uint64_t n = 0;
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) n += image.rgba[i] != 255;
+  return n;
+}
+
 }  // namespace twinraster

@@ -18,6 +18,11 @@ struct Comparison {
 };
 
 Comparison CompareImages(const Image& a, const Image& b);
+// One row of two images of one size, `width` RGBA pixels each, added to `c`: for a caller that
+// reads the images a row at a time (compare) rather than holding them.
+void CompareRow(const std::uint8_t* a, const std::uint8_t* b, std::uint32_t width, Comparison& c);
+// One row of the diff image (below) into `out`, `width` RGBA pixels.
+void DiffRow(const std::uint8_t* a, const std::uint8_t* b, std::uint32_t width, std::uint8_t* out);
 
 // Differing pixels in red over a faded grey copy of `a`; images must have the same size.
 Image DiffImage(const Image& a, const Image& b);

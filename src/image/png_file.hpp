@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -55,6 +56,44 @@ using PngSizeCheck = std::function<void(std::uint32_t width, std::uint32_t heigh
 Image ReadPng(const std::filesystem::path& file, const PngSizeCheck& check = {});
 // The same from bytes in memory; `name` is what the messages call them.
 Image DecodePng(std::string_view bytes, const std::string& name, const PngSizeCheck& check = {});
+// What compare holds whole, at most: an interlaced image (Adam7 spreads each row over seven
+// passes, so its rows come only once all are decoded) and the diff image, 4 bytes a pixel: 2^25
+// pixels, 128 MiB, an 8K UHD frame (7680 x 4320) and more.
+inline constexpr std::uint64_t kMaxWholePixels = std::uint64_t{1} << 25;
+
+// The size a PNG declares, once its signature and IHDR pass the structure check and each side is
+// within kMaxPngSide; nothing after IHDR is read. Throws FileError as ReadPng does.
+struct PngSize {
+  std::uint32_t width = 0, height = 0;
+  bool operator==(const PngSize&) const = default;
+};
+PngSize ReadPngSize(const std::filesystem::path& file);
+
+// A PNG read a row at a time, for a caller that need not hold the image: the same checks as ReadPng
+// (the structure check when constructed, every row's as it is decoded, the chunks to IEND and every
+// palette index at Finish), each throwing FileError in ReadPng's words. Memory: one row, plus
+// libspng's state, for an image over `whole_up_to` pixels; a smaller one is read whole (by default
+// 2^22 pixels, 16 MiB: faster, by the fast reader), and so is an interlaced file, refused over
+// kMaxWholePixels.
+class PngRowReader {
+ public:
+  static constexpr std::uint64_t kReadWholePixels = std::uint64_t{1} << 22;
+  explicit PngRowReader(const std::filesystem::path& file, std::uint64_t whole_up_to = kReadWholePixels);
+  ~PngRowReader();
+  PngRowReader(const PngRowReader&) = delete;
+  PngRowReader& operator=(const PngRowReader&) = delete;
+
+  PngSize Size() const;
+  // The next row, Size().width RGBA pixels, valid until the next call; at most Size().height calls.
+  const std::uint8_t* NextRow();
+  // After the last row: the chunks up to IEND, and a palette image's indices.
+  void Finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // The first 64 notes before the pixels whose chunk CRC is right and that pass the rules above;
 // the rest are dropped. Never throws on a file's contents: a file that cannot be opened or is not
 // a PNG has no notes (ReadPng reports that), and a malformed or cut-off chunk ends the walk.

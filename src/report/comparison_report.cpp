@@ -12,8 +12,7 @@ nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, con
   Json out;
   out["format"] = kCompareJsonFormat;
   for (const NamedImage* image : {&a, &b}) {
-    out[image == &a ? "a" : "b"] = {
-        {"file", image->file}, {"width", image->image.width}, {"height", image->image.height}};
+    out[image == &a ? "a" : "b"] = {{"file", image->file}, {"width", image->width}, {"height", image->height}};
   }
   out["same_size"] = c.same_size;
   // Pixels are compared only between images of one size.
@@ -24,7 +23,7 @@ nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, con
   return out;
 }
 
-std::string ComparisonText(const Image& a, const Image& b, const Comparison& c) {
+std::string ComparisonText(const NamedImage& a, const NamedImage& b, const Comparison& c) {
   if (!c.same_size) {
     return "sizes differ: " + std::to_string(a.width) + " x " + std::to_string(a.height) + " and " +
            std::to_string(b.width) + " x " + std::to_string(b.height);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -18,13 +19,13 @@ inline constexpr const char* kCompareJsonFormat = "twinraster.compare/1";
 
 struct NamedImage {
   std::string file;
-  const Image& image;
+  std::uint32_t width = 0, height = 0;
 };
 
 // The whole `compare --json` object; `diff` is the diff image written, if one was.
 nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
                                    const std::optional<std::string>& diff);
-std::string ComparisonText(const Image& a, const Image& b, const Comparison& c);
+std::string ComparisonText(const NamedImage& a, const NamedImage& b, const Comparison& c);
 // Two images of one size, `width` x `height`.
 std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c);
 

@@ -1,6 +1,7 @@
 #include "report/coverage_report.hpp"
 
 #include "base/counted.hpp"
+#include "report/verify_report.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -75,6 +76,8 @@ nlohmann::ordered_json CoverageJson(const CoverageReport& r) {
           {"image", r.image},
           {"wireframe", r.wireframe},
           {"drawn_by", r.drawn_by ? Json(r.drawn_by->device) : Json(nullptr)},
+          {"rules_from", RulesFromJson(r.rules)},
+          {"alpha", AlphaJson(r.judgement.not_opaque)},
           {"verdict", verify::JudgementName(c.Verdict())},
           {"passed", c.Verdict() == verify::Judgement::kPassed},
           {"reason", reason.empty() ? Json(nullptr) : Json(reason)},
@@ -104,7 +107,10 @@ nlohmann::ordered_json CoverageJson(const CoverageReport& r) {
 std::string CoverageReportText(const CoverageReport& r) {
   std::ostringstream s;
   if (r.drawn_by) s << r.image << ": drawn by " << r.drawn_by->device << " (its PNG notes)\n";
-  s << r.image << ": " << CoverageText(r.judgement.coverage) << "\n";
+  s << AssumedRulesText(r.image, r.rules);
+  const verify::CoverageVerification& c = r.judgement.coverage;
+  s << r.image << ": " << CoverageText(c) << "\n";
+  s << AlphaText(r.image, r.judgement.not_opaque, std::uint64_t{c.width} * c.height);
   if (r.map) {
     s << "map: " << *r.map
       << " (grey: agrees, amber: uncertain, red: covered where nothing may reach, blue: clear colour where a "

@@ -114,6 +114,30 @@ std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Veri
   return s.str();
 }
 
+std::string AssumedRulesText(const std::string& image, const run::DeviceRules& d) {
+  if (!d.AnyAssumed()) return "";
+  const bool bits = d.subpixel_bits == run::RuleSource::kAssumed, lines = d.strict_lines == run::RuleSource::kAssumed;
+  const std::string both = bits && lines ? " and " : "";
+  return image +
+         ": its PNG notes do not say how the device rasterizes (a tool that re-saved it may have dropped them): "
+         "assumed the spec's loosest, " +
+         (bits ? "subpixel bits " + std::to_string(d.rules.subpixel_bits) : "") + both +
+         (lines ? "non-strict lines" : "") + "; give the device's with " + (bits ? "--subpixel-bits N" : "") + both +
+         (lines ? "--strict-lines true|false" : "") + "\n";
+}
+
+std::string AlphaText(const std::string& image, std::uint64_t not_opaque, std::uint64_t pixels) {
+  return image + ": alpha is not judged: " + std::to_string(not_opaque) + " of " + std::to_string(pixels) +
+         " px are not opaque\n";
+}
+
+nlohmann::ordered_json RulesFromJson(const run::DeviceRules& d) {
+  return {{"subpixel_bits", run::RuleSourceName(d.subpixel_bits)},
+          {"strict_lines", run::RuleSourceName(d.strict_lines)}};
+}
+
+nlohmann::ordered_json AlphaJson(std::uint64_t not_opaque) { return {{"judged", false}, {"not_opaque", not_opaque}}; }
+
 nlohmann::ordered_json VerifyJson(const VerifyReport& r) {
   nlohmann::ordered_json j;
   j["format"] = kVerifyJsonFormat;
@@ -121,6 +145,8 @@ nlohmann::ordered_json VerifyJson(const VerifyReport& r) {
   j["image"] = r.image;
   j["wireframe"] = r.wireframe;
   j["drawn_by"] = r.drawn_by ? nlohmann::ordered_json(r.drawn_by->device) : nlohmann::ordered_json(nullptr);
+  j["rules_from"] = RulesFromJson(r.rules);
+  j["alpha"] = AlphaJson(r.judgement.not_opaque);
   const nlohmann::ordered_json verdict = VerificationJson(r.judgement.verification, r.map, r.judgement.verify_ms);
   for (const auto& [key, value] : verdict.items()) j[key] = value;
   return j;
@@ -129,7 +155,10 @@ nlohmann::ordered_json VerifyJson(const VerifyReport& r) {
 std::string VerifyText(const VerifyReport& r) {
   std::ostringstream s;
   if (r.drawn_by) s << r.image << ": drawn by " << r.drawn_by->device << " (its PNG notes)\n";
-  s << r.image << ": " << VerificationText(r.judgement.verification) << "\n";
+  s << AssumedRulesText(r.image, r.rules);
+  const verify::Verification& v = r.judgement.verification;
+  s << r.image << ": " << VerificationText(v) << "\n";
+  s << AlphaText(r.image, r.judgement.not_opaque, std::uint64_t{v.width} * v.height);
   if (r.map) s << "map: " << *r.map << " (grey: certain, amber: uncertain, red: not allowed)\n";
   return s.str();
 }

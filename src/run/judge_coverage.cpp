@@ -23,6 +23,7 @@ CoverageJudgement JudgeCoverage(const Scene& scene, const DrawList& list, const 
   j.verify_ms = clock.Milliseconds();
   if (map) j.map = verify::CoverageMap(image, j.coverage);
   j.verdict = VerdictOf(j.coverage.Verdict());
+  j.not_opaque = NotOpaquePixels(image);
   return j;
 }
 

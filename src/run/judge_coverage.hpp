@@ -16,6 +16,7 @@
 #include "scene/scene.hpp"
 #include "verify/coverage_judgement.hpp"
 
+#include <cstdint>
 #include <optional>
 
 namespace twinraster::run {
@@ -25,6 +26,7 @@ struct CoverageJudgement {
   double verify_ms = 0;
   std::optional<Image> map;              // when asked for (verify::CoverageMap)
   Verdict verdict = Verdict::kVerified;  // kVerified, kInconclusive or kDiffering
+  std::uint64_t not_opaque = 0;          // pixels whose alpha is not 255: alpha is not judged
 };
 
 // Throws std::invalid_argument when the image is not the scene's canvas size, or an option is out

@@ -19,6 +19,7 @@ ImageJudgement JudgeImage(const Scene& scene, const DrawList& list, const Image&
   j.verify_ms = clock.Milliseconds();
   if (map) j.map = verify::VerificationMap(image, j.verification);
   j.verdict = VerdictOf(j.verification.Verdict());
+  j.not_opaque = NotOpaquePixels(image);
   return j;
 }
 

@@ -9,6 +9,7 @@
 #include "scene/scene.hpp"
 #include "verify/verification.hpp"
 
+#include <cstdint>
 #include <optional>
 
 namespace twinraster::run {
@@ -18,6 +19,7 @@ struct ImageJudgement {
   double verify_ms = 0;
   std::optional<Image> map;              // when asked for
   Verdict verdict = Verdict::kVerified;  // kVerified, kInconclusive or kDiffering
+  std::uint64_t not_opaque = 0;          // pixels whose alpha is not 255: alpha is not judged
 };
 
 ImageJudgement JudgeImage(const Scene& scene, const Image& image, const verify::VerifyOptions& rules, bool map);

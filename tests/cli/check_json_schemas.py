@@ -182,6 +182,7 @@ def main():
             ("verify lavapipe's image", "verify",
              ["verify", transforms, out("b-gpu.png"), "--json", "--subpixel-bits", "8"], None, 0,
              lambda d: d["passed"] and d["verdict"] == "passed" and d["pixels"]["violations"] == 0 and d["worst"] is None
+             and d["rules_from"] == {"subpixel_bits": "option", "strict_lines": "notes"} and d["alpha"]["not_opaque"] == 0
              and d["map"] == out("b-gpu-map.png") and d["pixels"]["certain"] + d["pixels"]["uncertain"] == 600 * 600),
             ("verify another scene's image: violations", "verify",
              ["verify", transforms, out("other.png"), "--json", "--no-map"], None, 1,
@@ -189,7 +190,7 @@ def main():
              and d["map"] is None),
             ("verify --coverage of the twin's image, its clear colour given", "verify",
              ["verify", transforms, out("c.png"), "--coverage", "--background", "255,255,255", "--json"], None, 0,
-             lambda d: d["format"] == "twinraster.verify-coverage/1" and d["passed"] and d["background_from"] == "option"
+             lambda d: d["format"] == "twinraster.verify-coverage/2" and d["passed"] and d["background_from"] == "option"
              and d["pixels"]["violations"] == 0 and d["first_spill"] is None and d["map"] == out("c-map.png")
              and d["pixels"]["certainly_covered"] + d["pixels"]["certainly_uncovered"] + d["pixels"]["uncertain"]
              == 600 * 600),

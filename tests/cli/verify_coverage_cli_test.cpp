@@ -79,7 +79,7 @@ TEST_CASE("verify --coverage: an engine's own shading and clear colour pass (exi
   INFO(wrong.out << wrong.err);
   CHECK(wrong.exit_code == 1);
   const auto j = nlohmann::json::parse(wrong.out);
-  CHECK(j["format"] == "twinraster.verify-coverage/1");
+  CHECK(j["format"] == "twinraster.verify-coverage/2");
   CHECK(j["background_from"] == "scene");
   CHECK(j["pixels"]["spills"] == j["pixels"]["certainly_uncovered"]);
   CHECK(j["pixels"]["spills"].get<std::uint64_t>() > 0);

@@ -91,6 +91,11 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
       {"too-little-data.png", "corrupt: the image data inflates to 100 bytes, not the 371 bytes its header needs"},
       {"truncated-in-idat.png", "truncated"},
       {"ztxt-bomb.png", "an ancillary chunk holds more than twinraster keeps"},
+      {"ihdr-colour-type-5.png", "corrupt: IHDR declares colour type 5 (a PNG's is 0, 2, 3, 4 or 6)"},
+      {"ihdr-bit-depth-7.png", "corrupt: IHDR declares bit depth 7 (a PNG's is 1, 2, 4, 8 or 16)"},
+      {"ihdr-palette-16-bit.png", "corrupt: IHDR declares bit depth 16 with colour type 3, which allows 1, 2, 4 or 8"},
+      {"ihdr-cut-after-colour-type-5.png", "corrupt: IHDR declares colour type 5"},
+      {"text-past-the-end.png", "cannot read as PNG: the file ends before the PNG does (truncated)"},
   };
   // Like verify's canvas check: a size is refused before anything is decoded (the bomb would be
   // 1 GiB of RGBA).
@@ -120,6 +125,85 @@ TEST_CASE("PNG reader: bytes in memory are read as a file is, and refused as a f
   const std::string bad = test::ReadFile(Png("malformed", "palette-index-out-of-range.png"));
   CHECK_THROWS_WITH(DecodePng(bad, "bytes"), HasSubstring("bytes: cannot read as PNG: corrupt: palette index 3"));
   CHECK_THROWS_WITH(DecodePng("", "nothing"), HasSubstring("nothing: cannot read as PNG: the file ends"));
+}
+
+TEST_CASE("PNG reader: every malformed file is refused in the same words from a file and from memory",
+          "[png][reader]") {
+  // One structure check for both: reading a file it could seek past the end, which a buffer cannot.
+  int compared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+    const std::string file = entry.path().string();
+    INFO(file);
+    const std::string from_file = Refusal(entry.path());
+    std::string from_memory;
+    try {
+      DecodePng(test::ReadFile(entry.path()), file);
+    } catch (const FileError& e) {
+      from_memory = e.what();
+    }
+    CHECK_FALSE(from_file.empty());
+    CHECK(from_file == from_memory);
+    ++compared;
+  }
+  CHECK(compared == 26);
+}
+
+namespace {
+
+// The image PngRowReader gives, row by row (none read whole but the interlaced), or the message it
+// throws.
+std::pair<Image, std::string> ReadRows(const std::filesystem::path& file) {
+  try {
+    PngRowReader rows(file, 0);
+    Image image(rows.Size().width, rows.Size().height);
+    for (std::uint32_t y = 0; y < image.height; ++y)
+      std::copy_n(rows.NextRow(), std::size_t{image.width} * 4, image.pixel(0, y));
+    rows.Finish();
+    return {image, ""};
+  } catch (const FileError& e) {
+    return {Image(), e.what()};
+  }
+}
+
+}  // namespace
+
+TEST_CASE(
+    "PNG reader: a row at a time, every valid file reads as ReadPng reads it, and every malformed one is refused "
+    "in its words",
+    "[png][reader]") {
+  int read = 0;
+  for (const char* folder : {"valid", "malformed"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/") / folder)) {
+      INFO(entry.path().string());
+      const auto [image, message] = ReadRows(entry.path());
+      CHECK(message == Refusal(entry.path()));
+      if (message.empty()) {
+        CHECK(image.rgba == ReadPng(entry.path()).rgba);
+        CHECK(ReadPngSize(entry.path()) == PngSize{image.width, image.height});
+      }
+      ++read;
+    }
+  }
+  CHECK(read == 27 + 26);
+}
+
+TEST_CASE("PNG reader: a row at a time, a file that declares 16384 x 16384 pixels gives its rows one by one",
+          "[png][reader]") {
+  const auto file = Png("large", "declares-16384x16384.png");
+  CHECK(ReadPngSize(file) == PngSize{16384, 16384});
+  PngRowReader rows(file);
+  REQUIRE(rows.Size() == PngSize{16384, 16384});
+  // Its first and last rows: black and opaque (1-bit grey 0).
+  const std::uint8_t* first = rows.NextRow();
+  CHECK((first[0] == 0 && first[3] == 255 && first[16383 * 4 + 3] == 255));
+  // An interlaced file is decoded whole, so one over kMaxWholePixels is refused before anything is.
+  const auto interlaced = Png("large", "interlaced-8192x4097.png");
+  CHECK_THROWS_WITH(PngRowReader(interlaced),
+                    interlaced.string() +
+                        ": cannot read as PNG: an interlaced PNG is decoded whole, and its 8192 x 4097 "
+                        "pixels are over the 33554432 twinraster holds whole (write it without "
+                        "interlacing)");
+  // The rest is `compare`'s test (tests/cli/verify_cli_test.cpp), which measures its memory.
 }
 
 TEST_CASE("PNG reader: a missing file or a folder is named, not decoded", "[png][reader]") {
