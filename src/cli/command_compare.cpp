@@ -4,7 +4,6 @@
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/output_paths.hpp"
-#include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_file.hpp"
@@ -110,8 +109,7 @@ int Compare(const CompareArguments& args) {
   } else {
     const std::string diff_name = DiffToStandardOutput(args) ? "standard output" : args.diff.value_or("");
     (DiffToStandardOutput(args) ? std::cerr : std::cout)
-        << report::ComparisonText(named_a, named_b, comparison) << (wrote_diff ? ", diff in " + diff_name : "")
-        << "\n";
+        << report::ComparisonText(named_a, named_b, comparison) << (wrote_diff ? ", diff in " + diff_name : "") << "\n";
   }
   return comparison.Equal() ? kExitOk : kExitImagesDiffer;
 }
