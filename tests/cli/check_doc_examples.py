@@ -158,9 +158,10 @@ class Machine:
     def __init__(self, exe):
         text = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=TIMEOUT_SECONDS).stdout
         path = re.search(r"^lavapipe's CPU path on this machine: (.+)$", text, re.M)
-        release = re.search(r"llvmpipe, Mesa (\S+) \(LLVM (\S+)\)", text)
+        # A distribution may append its package revision ("Mesa 25.0.7-2"); the twin names the release alone.
+        release = re.search(r"llvmpipe, Mesa (\d+(?:\.\d+)+)\S* \(LLVM (\S+)\)", text)
         self.swaps = []  # (this machine's text as a pattern, the reference's)
-        device = re.search(r"^  (llvmpipe \([^)]*\)): ", text, re.M)
+        device = re.search(r"^  (?:lavapipe \()?(llvmpipe \([^)]*\))\)?: ", text, re.M)
         if device and device.group(1) != REFERENCE["device"]:
             self.swaps.append((re.escape(device.group(1)), REFERENCE["device"]))
         if path and path.group(1) != REFERENCE["cpu_path"]:
