@@ -2,10 +2,14 @@
 #include "base/counted.hpp"
 #include "scene/gltf_accessors.hpp"
 #include "scene/gltf_build.hpp"
+#include "scene/json_reader.hpp"  // kMaxMagnitude: a glTF file's numbers are bounded as a scene's are
 #include "scene/scene_error.hpp"
 #include "scene/srgb.hpp"
 
 #include <glm/geometric.hpp>
+
+#include <cmath>
+#include <sstream>
 
 namespace twinraster::gltf {
 
@@ -36,6 +40,27 @@ GltfAccessor Unsparse(const GltfDocument& doc, std::size_t accessor, const std::
                      "accessor " + std::to_string(accessor) + " is sparse; twinraster does not read sparse accessors");
   }
   return a;
+}
+
+// glTF forbids NaN and infinite values in accessors (glTF 2.0, 3.6.2.2), and a scene's numbers
+// are bounded (kMaxMagnitude): a value past either would reach the chain as NaN, so the file is
+// refused, naming the element.
+template <class Vector>
+std::vector<Vector> Bounded(const GltfDocument& doc, std::vector<Vector> values, const std::string& where) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (glm::length_t k = 0; k < Vector::length(); ++k) {
+      const double x = values[i][k];
+      if (std::isfinite(x) && std::abs(x) <= kMaxMagnitude) continue;
+      std::ostringstream s;
+      s << "element " << i << ", component " << k << ", is " << x;
+      if (std::isfinite(x))
+        s << ": absurd (magnitude above " << kMaxMagnitude << ")";
+      else
+        s << ": glTF forbids NaN and infinite values (glTF 2.0, 3.6.2.2)";
+      throw SceneError(doc.file, where, s.str());
+    }
+  }
+  return values;
 }
 
 // The primitive's vertex indices in order: its index accessor's, each checked, or 0, 1, 2, ...
@@ -117,19 +142,22 @@ std::optional<Model> PrimitiveModel(const GltfDocument& doc, std::size_t mesh, s
   Model model;
   model.name = ModelName(doc, mesh, primitive);
   model.source = doc.file;
-  model.vertices = ReadVec3s(doc, positions);
+  model.vertices = Bounded(doc, ReadVec3s(doc, positions), where + ".attributes.POSITION");
   const Rgb8 colour = SrgbColour(material.base_colour);
   model.triangles.reserve(corners.size());
   for (const auto& c : corners) model.triangles.push_back(Triangle{c, colour});
   if (p.colour) {
     // The spec's base colour is baseColorFactor times COLOR_0, both linear: multiplied in double,
     // then encoded once per vertex; the rasterizer interpolates the bytes (docs/scene-format.md).
-    const std::vector<glm::dvec4> colours = ReadColours(doc, Unsparse(doc, *p.colour, where + ".attributes.COLOR_0"));
+    const std::string colour_where = where + ".attributes.COLOR_0";
+    const std::vector<glm::dvec4> colours =
+        Bounded(doc, ReadColours(doc, Unsparse(doc, *p.colour, colour_where)), colour_where);
     model.vertex_colours.reserve(colours.size());
     for (const glm::dvec4& c : colours) model.vertex_colours.push_back(SrgbColour(c * material.base_colour));
   }
   if (p.normal) {
-    model.normals = ReadVec3s(doc, Unsparse(doc, *p.normal, where + ".attributes.NORMAL"));
+    const std::string normal_where = where + ".attributes.NORMAL";
+    model.normals = Bounded(doc, ReadVec3s(doc, Unsparse(doc, *p.normal, normal_where)), normal_where);
     model.triangle_normals = corners;  // a vertex's normal has the vertex's index
   }
   // Unlit materials keep their colour; the rest take the headlight, with their normals

@@ -191,6 +191,36 @@ TEST_CASE("glTF: 8-, 16- and 32-bit indices, and interleaved positions and norma
   }
 }
 
+TEST_CASE("glTF: NaN, infinite and absurd values are refused, naming the accessor's element") {
+  // The spec forbids NaN and infinities in accessors (glTF 2.0, 3.6.2.2); past 1e12 a scene's
+  // numbers are refused, as in a scene file. Either would reach the framing and the chain as NaN.
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  for (const auto& [bad, problem] :
+       std::vector<std::pair<float, std::string>>{{nan, "is nan: glTF forbids NaN and infinite values"},
+                                                  {-inf, "is -inf: glTF forbids NaN and infinite values"},
+                                                  {1e13f, "is 1e+13: absurd (magnitude above 1e+12)"}}) {
+    INFO(problem);
+    std::vector<std::uint8_t> bytes = TriangleBytes();
+    std::memcpy(bytes.data() + 4 * 4, &bad, 4);  // vertex 1, component y
+    Json doc = TriangleDocument({{{"mesh", 0}}});
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + Base64(bytes);
+    CHECK_THAT(Refusal(doc),
+               HasSubstring("meshes[0].primitives[0].attributes.POSITION: element 1, component 1, " + problem));
+    // The same value as a normal: good positions (bytes 0-35), the bad ones as normals (36-71).
+    doc = TriangleDocument({{{"mesh", 0}}});
+    doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    const std::vector<std::uint8_t> good = TriangleBytes();
+    bytes.insert(bytes.begin(), good.begin(), good.begin() + 36);
+    doc["buffers"][0] = {{"byteLength", bytes.size()},
+                         {"uri", "data:application/octet-stream;base64," + Base64(bytes)}};
+    doc["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+                          {{"buffer", 0}, {"byteOffset", 72}, {"byteLength", 6}},
+                          {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 36}}};
+    doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
+    CHECK_THAT(Refusal(doc), HasSubstring("attributes.NORMAL: element 1, component 1, " + problem));
+  }
+}
+
 TEST_CASE("glTF: a primitive without normals is lit flat, an unlit material is unlit, colours become sRGB bytes") {
   Json doc = TriangleDocument({{{"mesh", 0}}});
   CHECK(SceneOf(doc).models[0].shading == Shading::kFlat);
