@@ -228,8 +228,10 @@ def main():
             ("bench --scale with the fixed costs, a batch of 12", "bench-scale",
              ["bench", "--scale", "--counts", "8", "--runs", "1", "--scenes", scenes, "--batch-scenes", "12", "--json",
               "-q"], None, 0,
+             # Measured, not ordered: on a loaded machine a scene's process may time under the
+             # floor's (the bench reports that ratio; a test cannot assert it).
              lambda d: d["processes"]["batch_scenes"] == 12 and d["processes"]["batch_ms"] > 0
-             and d["processes"]["cpu_scene_ms"] > d["processes"]["floor_ms"] > 0),
+             and d["processes"]["cpu_scene_ms"] > 0 and d["processes"]["floor_ms"] > 0),
             ("bench --verify, the chapter's scene", "bench-verify",
              ["bench", "--verify", "--only", "cgfs-transforms", "--runs", "1", "--scenes", scenes, "--json", "-q"], None, 0,
              lambda d: len(d["rows"]) == 1 and d["rows"][0]["violations"] == 0 and d["rows"][0]["triangles"] == 24),
