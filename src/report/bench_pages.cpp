@@ -27,8 +27,7 @@ std::string ColourOf(const std::string& method) {
 
 // A row's name in a series: frame rows differ by thread count.
 std::string SeriesName(const BenchRow& r) {
-  return r.vertex_ms >= 0 ? r.method
-                          : r.method + ", " + std::to_string(r.threads) + (r.threads == 1 ? " thread" : " threads");
+  return r.vertex_ms >= 0 ? r.method : r.method + ", " + Counted(r.threads, "thread");
 }
 
 // An error of exactly 0 has no place on a log axis: it is drawn at the floor, marked "≤".

@@ -269,8 +269,8 @@ std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t
   const std::string count = std::to_string(total);
   std::string number = std::to_string(done);
   number.insert(0, count.size() > number.size() ? count.size() - number.size() : 0, ' ');  // rows line up
-  std::string line = "[" + number + "/" + count + "] " + row.scene + " " + row.method + ", " +
-                     std::to_string(row.threads) + (row.threads == 1 ? " thread" : " threads") + ": ";
+  std::string line =
+      "[" + number + "/" + count + "] " + row.scene + " " + row.method + ", " + Counted(row.threads, "thread") + ": ";
   char numbers[160];
   std::snprintf(numbers, sizeof numbers, "frame %.2f ms", row.frame_ms);
   line += numbers;

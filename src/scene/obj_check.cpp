@@ -1,5 +1,6 @@
 #include "scene/obj_check.hpp"
 
+#include "base/counted.hpp"
 #include "scene/json_reader.hpp"  // kMaxMagnitude: an OBJ's numbers are bounded as a scene's are
 #include "scene/scene_error.hpp"
 
@@ -64,8 +65,7 @@ std::string CommentHint(std::string_view word) {
 }
 
 std::string Count(std::size_t n, const char* singular, const char* plural) {
-  if (n == 0) return std::string("no ") + plural;
-  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+  return n == 0 ? std::string("no ") + plural : Counted(n, singular, plural);
 }
 
 // What an index refers to: the words for messages, and how many of them the file has.
@@ -121,7 +121,7 @@ class LineChecker {
 
   std::string NumbersFound() const {
     const std::size_t n = words_.size() - 1;
-    return n == 0 ? "none" : n == 1 ? "1 number" : std::to_string(n) + " numbers";
+    return n == 0 ? "none" : Counted(n, "number");
   }
 
   void CheckNumbers() const {
