@@ -57,6 +57,6 @@ find "$out" -type f \( -name '*.out' -o -name '*.err' -o -name '*.xml' -o -name 
   xargs -0 sed -i -E \
     -e "s#$out#OUT#g" -e "s#$repo#REPO#g" -e 's#"timings_ms": *\{[^}]*\}#"timings_ms": T#g' \
     -e 's#"(ms|seconds|[a-z_]*_ms|[a-z_]*_seconds|time[a-z_]*|threads)": *[0-9.e+-]+#"\1": T#g' \
-    -e 's#[0-9]+(\.[0-9]+)? ?(ms|s|µs)\b#T\2#g' \
+    -e 's#[0-9][0-9.]*(e[+-]?[0-9]+)? ?(ms|s|µs)\b#T\2#g' \
     -e 's#(load|gpu|cpu|verify) [0-9.e+-]+([,<])#\1 T\2#g' -e 's#time="[0-9.]+"#time="T"#g' -e 's#timestamp="[^"]*"#timestamp="T"#g'
 echo "snapshot written to $out"
