@@ -6,6 +6,9 @@
 
 namespace twinraster::run {
 
+// counts_ has a slot for each verdict: a verdict added to the enum needs kVerdictCount raised.
+static_assert(static_cast<std::size_t>(Verdict::kRendered) + 1 == kVerdictCount);
+
 int Severity(Verdict verdict) {
   switch (verdict) {
     case Verdict::kIdentical: return 0;
