@@ -12,10 +12,6 @@ class App;  // CLI11 itself is included only by the .cpp files: it is a large he
 
 namespace twinraster {
 
-// Of two scenes' exit codes, the one a batch reports: any problem outranks an inconclusive
-// judgement, which outranks success.
-int WorseExit(int a, int b);
-
 // Runs a parsed command and returns the exit code; throws SceneError, FileError, UsageError or
 // GpuUnavailable for main() to report.
 using CommandRun = std::function<int()>;

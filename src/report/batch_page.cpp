@@ -61,24 +61,6 @@ std::string TimesText(const run::RunRecord& r) {
 
 }  // namespace
 
-BatchSummary Summarize(const std::vector<run::RunRecord>& records, double total_ms) {
-  BatchSummary s;
-  s.scenes = records.size();
-  s.total_ms = total_ms;
-  for (const run::RunRecord& r : records) {
-    switch (r.verdict) {
-      case run::Verdict::kError: ++s.errors; break;
-      case run::Verdict::kCrashed: ++s.crashed; break;
-      case run::Verdict::kDiffering: ++s.differing; break;
-      case run::Verdict::kInconclusive: ++s.inconclusive; break;
-      case run::Verdict::kVerified: ++s.verified; break;
-      case run::Verdict::kIdentical: ++s.identical; break;
-      case run::Verdict::kRendered: ++s.rendered; break;
-    }
-  }
-  return s;
-}
-
 const char* ImageKindName(ImageKind kind) {
   switch (kind) {
     case ImageKind::kGpu: return "gpu";
@@ -109,20 +91,23 @@ std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& 
   return order;
 }
 
-std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir,
-                          double total_ms) {
-  const BatchSummary s = Summarize(records, total_ms);
+std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::path& dir) {
+  using run::Verdict;
   std::ostringstream page;
-  page << PageStart("twinraster render: " + Counted(s.scenes, "scene")) << "<h1>twinraster render</h1>\n";
+  page << PageStart("twinraster render: " + Counted(batch.Scenes(), "scene")) << "<h1>twinraster render</h1>\n";
   page << "<table class=\"summary\" id=\"summary\"><tr>";
-  const std::pair<const char*, std::size_t> counts[] = {{"scenes", s.scenes},       {"identical", s.identical},
-                                                        {"verified", s.verified},   {"inconclusive", s.inconclusive},
-                                                        {"differing", s.differing}, {"crashed", s.crashed},
-                                                        {"errors", s.errors},       {"drawn only", s.rendered}};
+  const std::pair<const char*, std::size_t> counts[] = {{"scenes", batch.Scenes()},
+                                                        {"identical", batch.Count(Verdict::kIdentical)},
+                                                        {"verified", batch.Count(Verdict::kVerified)},
+                                                        {"inconclusive", batch.Count(Verdict::kInconclusive)},
+                                                        {"differing", batch.Count(Verdict::kDiffering)},
+                                                        {"crashed", batch.Count(Verdict::kCrashed)},
+                                                        {"errors", batch.Count(Verdict::kError)},
+                                                        {"drawn only", batch.Count(Verdict::kRendered)}};
   for (const auto& [name, count] : counts) page << "<th class=\"n\">" << name << "</th>";
   page << "<th class=\"n\">total time</th></tr>\n<tr>";
   for (const auto& [name, count] : counts) page << "<td class=\"n\" data-count=\"" << name << "\">" << count << "</td>";
-  page << "<td class=\"n\" data-count=\"seconds\">" << Number(total_ms / 1000, 4) << " s</td></tr></table>\n";
+  page << "<td class=\"n\" data-count=\"seconds\">" << Number(batch.total_ms / 1000, 4) << " s</td></tr></table>\n";
   page << "<p>identical: the GPU's and the twin's images agree bit for bit. verified: they differ (or one image "
           "was judged) and every pixel is one Vulkan allows. inconclusive: no pixel is wrong, but too few are certain "
           "to tell a broken image (docs/verify.md). differing: a pixel the verifier rejects, or a difference "
@@ -131,7 +116,7 @@ std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std:
       << "<table id=\"scenes\">\n<thead><tr><th>scene</th><th>GPU</th><th>twin</th><th>difference</th><th>verification "
          "map</th><th>verdict</th><th class=\"n\">differing px</th><th class=\"n\">violating px</th><th>device, rules "
          "and times</th></tr></thead>\n<tbody>\n";
-  for (const run::RunRecord* r : PageOrder(records)) {
+  for (const run::RunRecord* r : PageOrder(batch.Records())) {
     const run::Verdict verdict = r->verdict;
     std::ostringstream row;
     row << "<tr class=\"scene\" data-verdict=\"" << run::VerdictName(verdict) << "\" data-scene=\"" << Escape(r->scene)

@@ -1,24 +1,18 @@
 // `render --report DIR`: one page for a batch of scenes, failures first, each row the scene's
 // images as thumbnails (linked to the full PNGs), its verdict, counts, device, rules and times.
-// Self-contained: inline CSS, no script, PNGs beside it; it reads the records and nothing else.
+// Self-contained: inline CSS, no script, PNGs beside it; it reads the batch's result (its records,
+// counts and time) and nothing else.
 #pragma once
 
+#include "run/batch_result.hpp"
 #include "run/run_record.hpp"
 
-#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace twinraster::report {
-
-struct BatchSummary {
-  std::size_t scenes = 0, identical = 0, verified = 0, inconclusive = 0, differing = 0, crashed = 0, errors = 0,
-              rendered = 0;
-  double total_ms = 0;  // the whole batch, wall clock
-};
-BatchSummary Summarize(const std::vector<run::RunRecord>& records, double total_ms);
 
 // The longer side of a thumbnail, in pixels.
 inline constexpr std::uint32_t kThumbnailSide = 96;
@@ -37,7 +31,6 @@ std::filesystem::path ThumbnailPath(const run::RunRecord& record, ImageKind kind
 std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& records);
 
 // The page, for `dir`/index.html: links to images are relative to `dir`.
-std::string BatchPageHtml(const std::vector<run::RunRecord>& records, const std::filesystem::path& dir,
-                          double total_ms);
+std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::path& dir);
 
 }  // namespace twinraster::report

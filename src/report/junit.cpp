@@ -19,20 +19,18 @@ std::string Seconds(double ms) {
 
 }  // namespace
 
-std::string JUnitXml(const std::vector<run::RunRecord>& records, double total_ms, bool verify_asked) {
-  std::size_t failures = 0, errors = 0, skipped = 0;
-  for (const run::RunRecord& r : records) {
-    if (r.verdict == run::Verdict::kDiffering) ++failures;
-    if (r.verdict == run::Verdict::kError || r.verdict == run::Verdict::kCrashed) ++errors;
-    if (run::IsInconclusive(r.verdict)) ++skipped;
-  }
-  const std::string counts = "tests=\"" + std::to_string(records.size()) + "\" failures=\"" + std::to_string(failures) +
+std::string JUnitXml(const run::BatchResult& batch, bool verify_asked) {
+  using run::Verdict;
+  const std::size_t failures = batch.Count(Verdict::kDiffering);
+  const std::size_t errors = batch.Count(Verdict::kError) + batch.Count(Verdict::kCrashed);
+  const std::size_t skipped = batch.Count(Verdict::kInconclusive);
+  const std::string counts = "tests=\"" + std::to_string(batch.Scenes()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) + "\"";
-  const std::string seconds = Seconds(total_ms);
+  const std::string seconds = Seconds(batch.total_ms);
   std::ostringstream xml;
   xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"twinraster render\" " << counts << " time=\""
       << seconds << "\">\n<testsuite name=\"twinraster render\" " << counts << " time=\"" << seconds << "\">\n";
-  for (const run::RunRecord& r : records) {
+  for (const run::RunRecord& r : batch.Records()) {
     const run::Verdict v = r.verdict;
     xml << "<testcase classname=\"twinraster.render\" name=\"" << Escape(r.scene) << "\" time=\"" << Seconds(r.total_ms)
         << "\">\n";

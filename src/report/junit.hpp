@@ -3,15 +3,14 @@
 // Jenkins xUnit plugin's JUnit schema describes (docs/schemas/junit.xsd, checked by the tests).
 #pragma once
 
-#include "run/run_record.hpp"
+#include "run/batch_result.hpp"
 
 #include <string>
-#include <vector>
 
 namespace twinraster::report {
 
 // errors: bad input and crashed drivers; failures: differing images. Each failure's message says
-// why (VerdictReason); the scene's report lines are its system-out.
-std::string JUnitXml(const std::vector<run::RunRecord>& records, double total_ms, bool verify_asked);
+// why (VerdictReason); the scene's report lines are its system-out. The counts are the batch's.
+std::string JUnitXml(const run::BatchResult& batch, bool verify_asked);
 
 }  // namespace twinraster::report

@@ -5,6 +5,8 @@
 
 #include "verify/verification.hpp"
 
+#include <cstddef>
+
 namespace twinraster::run {
 
 // In the batch page's order: failures first.
@@ -17,6 +19,7 @@ enum class Verdict {
   kIdentical,     // gpu and cpu agree bit for bit
   kRendered,      // one backend drew, nothing was compared or judged
 };
+inline constexpr std::size_t kVerdictCount = 7;  // kError to kRendered: a count for each
 
 // The verdict a judgement alone gives: passed is verified, failed is differing.
 Verdict VerdictOf(verify::Judgement judgement);
@@ -28,7 +31,7 @@ inline bool IsInconclusive(Verdict verdict) { return verdict == Verdict::kInconc
 inline bool IsSuccess(Verdict verdict) { return !IsFailure(verdict) && !IsInconclusive(verdict); }
 
 // The exit code of one scene's verdict (base/exit_code.hpp): an error 2, crashed 5, differing 1,
-// inconclusive 6, anything else 0. A batch exits with the worst of its scenes'.
+// inconclusive 6, anything else 0. A batch exits with its worst verdict's (batch_result.hpp).
 int ExitCodeOf(Verdict verdict);
 
 }  // namespace twinraster::run

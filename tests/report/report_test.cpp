@@ -89,15 +89,10 @@ TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort firs
   for (const run::RunRecord* r : PageOrder(records)) order.push_back(r->name);
   CHECK(order == std::vector<std::string>{"broken", "crashed", "wrong", "promised", "allowed", "same", "same2"});
 
-  const BatchSummary s = Summarize(records, 1500);
-  CHECK(s.scenes == 7);
-  CHECK(s.errors == 1);
-  CHECK(s.crashed == 1);
-  CHECK(s.differing == 2);
-  CHECK(s.verified == 1);
-  CHECK(s.identical == 2);
-
-  const std::string xml = JUnitXml(records, 1500, false);
+  run::BatchResult batch;
+  for (const run::RunRecord& r : records) batch.Add(r);
+  batch.total_ms = 1500;
+  const std::string xml = JUnitXml(batch, false);
   CHECK(Count(xml, "<testcase ") == 7);
   CHECK(Count(xml, "<failure ") == 2);
   CHECK(Count(xml, "<error ") == 2);
@@ -110,13 +105,21 @@ TEST_CASE("Batch page: a row per scene, links relative to the page, thumbnails o
   const std::vector<run::RunRecord> records = {Drawn("same", 0, std::nullopt), Drawn("allowed", 7, true)};
   std::vector<run::RunRecord> with_diff = records;
   with_diff[1].diff = "out/allowed-diff.png";
-  const std::string page = BatchPageHtml(with_diff, "report", 2000);
+  run::BatchResult batch;
+  for (const run::RunRecord& r : with_diff) batch.Add(r);
+  batch.total_ms = 2000;
+  const std::string page = BatchPageHtml(batch, "report");
   CHECK(Count(page, "<tr class=\"scene\"") == 2);
   CHECK(page.find("href=\"../out/same-gpu.png\"") != std::string::npos);
   CHECK(page.find("src=\"thumbs/allowed-diff.png\"") != std::string::npos);
   CHECK(page.find("src=\"thumbs/same-diff.png\"") == std::string::npos);
   CHECK(page.find("loading=\"lazy\"") != std::string::npos);
   CHECK(page.find("<script") == std::string::npos);
+  // The summary's counts are the batch's.
+  CHECK(page.find("data-count=\"scenes\">2<") != std::string::npos);
+  CHECK(page.find("data-count=\"identical\">1<") != std::string::npos);
+  CHECK(page.find("data-count=\"verified\">1<") != std::string::npos);
+  CHECK(page.find("data-count=\"seconds\">2 s<") != std::string::npos);
 }
 
 TEST_CASE("The record's JSON and text: render --json's numbers come from it", "[report]") {
