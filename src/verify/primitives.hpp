@@ -57,6 +57,8 @@ struct DrawReach {
   bool Contains(int x, int y) const { return x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1; }
 };
 
+// The primitives of a frame's draws as a device with `options`' rasterization assembles them, one
+// draw at a time, each bounded by how far a conformant implementation may move it.
 class Primitives {
  public:
   Primitives(const FrameShared& shared, const DrawList& list, const VerifyOptions& options)
