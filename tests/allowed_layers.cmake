@@ -4,7 +4,7 @@
 # no source file.
 #
 # A target's stage is the folder its CMakeLists.txt is in (the target's SOURCE_DIR): src/<stage>/
-# is <stage>, a folder at the top of the repository (shaders/) is its name. So a new folder of src/
+# and any folder under it is <stage>, a folder at the top of the repository (shaders/) its name. So a new folder of src/
 # needs no entry anywhere: its CMakeLists.txt defines its library (twinraster_<folder>, by the
 # house's naming) and links the stages it uses. A folder links what it links directly (PRIVATE
 # too); through those, only what they pass on (PUBLIC and INTERFACE links).
@@ -28,7 +28,7 @@ function(twinraster_stage_of target source_dir out)
   endif()
   get_target_property(dir ${target} SOURCE_DIR)
   file(RELATIVE_PATH where ${source_dir} ${dir})
-  if(where MATCHES "^src/([^/]+)$")
+  if(where MATCHES "^src/([^/]+)")
     set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
   elseif(where MATCHES "^[^/.]+$")
     set(${out} ${where} PARENT_SCOPE)
@@ -74,13 +74,24 @@ function(twinraster_stages_passed_on target source_dir out)
   set(${out} ${stages} PARENT_SCOPE)
 endfunction()
 
+# The targets defined in `dir` and in the folders it adds, at any depth.
+function(twinraster_targets_under dir out)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(subdir IN LISTS subdirs)
+    twinraster_targets_under(${subdir} more)
+    list(APPEND targets ${more})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
+
 function(twinraster_write_allowed_layers source_dir file)
   get_property(built DIRECTORY ${source_dir}/src PROPERTY SUBDIRECTORIES)
   set(text "# Written at configure time by tests/allowed_layers.cmake, from the targets' links.\n")
   foreach(dir IN LISTS built)
     get_filename_component(folder ${dir} NAME)
     set(allowed ${folder})
-    get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+    twinraster_targets_under(${dir} targets)
     foreach(target IN LISTS targets)
       get_target_property(type ${target} TYPE)
       if(type STREQUAL "UTILITY")
