@@ -1,10 +1,20 @@
 #!/usr/bin/env python3
-"""Writes the generated scene files: scenes/hard/*.json (the cases that break naive renderers),
-scenes/bench/*.json (the benchmark's large scene) and the grid scenes (scenes/one-million-cubes.json,
-scenes/catlike-grid.json). Run from the repository root; the output is
-committed, so this only needs to run again when a case changes."""
+"""Writes the generated scene files: scenes/hard/*.json (the cases that break naive renderers; the
+three hard/lit-*.json scenes are written by hand), scenes/bench/*.json (the benchmark's large
+scene), the grid scenes (scenes/one-million-cubes.json, scenes/catlike-grid.json), the book's
+figures 10-4 and 10-5 and scenes/catlike-orthographic.json.
+
+Rerun with `python3 scripts/make-scenes.py` (from any directory; `--out DIR` writes into DIR
+instead of scenes/, which a CTest test uses to check that the committed files are this script's
+output). The output is deterministic, byte for byte, and committed, so this only needs to run again
+when a case changes."""
+import argparse
 import json
 import math
+import os
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT_DIR = os.path.join(ROOT, "scenes")
 
 CUBE_V = [[1, 1, 1], [-1, 1, 1], [-1, -1, 1], [1, -1, 1], [1, 1, -1], [-1, 1, -1], [-1, -1, -1], [1, -1, -1]]
 CUBE_T = [[0, 1, 2, "red"], [0, 2, 3, "red"], [4, 0, 3, "green"], [4, 3, 7, "green"], [5, 4, 7, "blue"],
@@ -30,8 +40,15 @@ def dump(obj, indent=0):
     return json.dumps(obj)
 
 
-def write(path, scene):
-    with open(path, "w") as f:
+def out_path(name):
+    """Where a file of scenes/ goes: `name` is its path inside scenes/."""
+    path = os.path.join(OUT_DIR, name)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    return path
+
+
+def write(name, scene):
+    with open(out_path(name), "w") as f:
         f.write(dump(scene) + "\n")
 
 
@@ -63,7 +80,7 @@ def far_scenes():
                                             "translation": at(1.61, -0.43, 6.29)}},
             {"model": "cube", "transform": {"scale": 0.173, "translation": at(0.07, 0.33, 2.77)}},
         ]
-        write(f"scenes/hard/far-1e{exponent}.json", s)
+        write(f"hard/far-1e{exponent}.json", s)
 
 
 def near_plane_scenes():
@@ -79,7 +96,7 @@ def near_plane_scenes():
                      [4, -3, -6], [-4, 3, 9], [4, 3, 9]],            # long: from behind to far ahead
         "triangles": [[0, 1, 2, "red"], [3, 4, 5, "green"], [6, 7, 8, "blue"], [9, 10, 11, [255, 128, 0]]]}}
     s["instances"] = [{"model": "tris"}]
-    write("scenes/hard/near-plane.json", s)
+    write("hard/near-plane.json", s)
 
     s = small("The camera inside a cube: every face straddles or surrounds the camera, several cross z = 0. "
               "Expected: the inside of the cube fills the view, faces meeting at clipped edges without gaps. GPU == CPU twin.")
@@ -87,7 +104,7 @@ def near_plane_scenes():
     s["camera"] = {"position": [0.2, -0.3, 0.1], "rotation": [{"axis": "y", "degrees": 25}, {"axis": "x", "degrees": -15}]}
     s["models"] = {"cube": cube()}
     s["instances"] = [{"model": "cube", "transform": {"scale": 2.0}}]
-    write("scenes/hard/camera-inside-cube.json", s)
+    write("hard/camera-inside-cube.json", s)
 
 
 def depth_scenes():
@@ -113,7 +130,7 @@ def depth_scenes():
                 {"model": "back", "transform": {"scale": 18, "rotation": tilt, "translation": [0, 0, 45.02]}},
                 {"model": "front", "transform": {"scale": 18, "rotation": tilt, "translation": [0, 0, 45.0]}},
             ]
-            write(f"scenes/hard/{name}.json", s)
+            write(f"hard/{name}.json", s)
 
 
 def degenerate_scene():
@@ -133,7 +150,7 @@ def degenerate_scene():
         "triangles": [[0, 1, 2, "red"], [3, 4, 5, "red"], [6, 7, 8, "blue"], [9, 10, 11, "purple"],
                       [12, 13, 14, [200, 200, 200]], [15, 16, 17, [0, 160, 0]]]}}
     s["instances"] = [{"model": "degenerate"}]
-    write("scenes/hard/degenerate.json", s)
+    write("hard/degenerate.json", s)
 
 
 def transform_scenes():
@@ -147,7 +164,7 @@ def transform_scenes():
         {"model": "cube", "transform": {"scale": [-1, 1, 1], "rotation": {"axis": "y", "degrees": 30}, "translation": [0, 0, 0]}},
         {"model": "cube", "transform": {"scale": -0.7, "rotation": {"axis": "x", "degrees": 20}, "translation": [2.5, 0, 0]}},
     ]
-    write("scenes/hard/zero-negative-scale.json", s)
+    write("hard/zero-negative-scale.json", s)
 
     s = small("Scales from 1e-6 to 1e6: a cube scaled 1e-6 (sub-pixel), one scaled 1e6 far away (and around the "
               "camera's line of sight), and ordinary ones. Expected: the tiny cube covers at most a pixel; the huge cube is "
@@ -162,7 +179,7 @@ def transform_scenes():
         {"model": "cube", "transform": {"scale": 1e3, "translation": [-2500, 1200, 9000]}},
         {"model": "cube", "transform": {"scale": 1e6, "rotation": {"axis": "z", "degrees": 10}, "translation": [0, -1.5e6, 4e6]}},
     ]
-    write("scenes/hard/extreme-scales.json", s)
+    write("hard/extreme-scales.json", s)
 
     s = small("Up vector 1e-7 away from parallel to the view direction: the lookat camera must still build an "
               "orthonormal frame (the loader rejects only exact parallelism). Expected: a valid, if arbitrary-looking, "
@@ -171,7 +188,7 @@ def transform_scenes():
     s["models"] = {"cube": cube()}
     s["instances"] = [{"model": "cube", "transform": {"rotation": {"axis": "y", "degrees": 30}, "translation": [0.5, 0.3, 0]}},
                       {"model": "cube", "transform": {"scale": 0.5, "translation": [-2, 1, 2]}}]
-    write("scenes/hard/up-near-parallel.json", s)
+    write("hard/up-near-parallel.json", s)
 
     for reortho in (False, True):
         s = small("A camera rotation accumulated from a million small steps (30 degrees about a tilted axis in 1e6 steps, "
@@ -183,7 +200,7 @@ def transform_scenes():
         s["models"] = {"cube": cube()}
         s["instances"] = [{"model": "cube", "transform": {"translation": [1.5, 0, 1]}},
                           {"model": "cube", "transform": {"scale": 0.5, "translation": [-1, 0.5, 2]}}]
-        write("scenes/hard/accumulated-rotation" + ("-reorthonormalized" if reortho else "") + ".json", s)
+        write("hard/accumulated-rotation" + ("-reorthonormalized" if reortho else "") + ".json", s)
 
 
 def bench_scene():
@@ -218,7 +235,7 @@ def bench_scene():
         instances.append({"model": "sphere", "transform": {"scale": 1.4 + 0.1 * (i % 3), "rotation": {"axis": "y", "degrees": 17 * i},
                                                            "translation": [x, math.sin(i) * 0.8, z]}})
     s["instances"] = instances
-    with open("scenes/bench/spheres-100k.json", "w") as f:
+    with open(out_path("bench/spheres-100k.json"), "w") as f:
         json.dump(s, f, separators=(",", ":"))
         f.write("\n")
 
@@ -242,7 +259,7 @@ def transform_order_scenes():
         s["models"] = {"cube": cube()}
         s["instances"] = [{"model": "cube", "transform": {"scale": 0.15}},
                           {"model": "cube", "transform": steps}]
-        write(f"scenes/cgfs-figure-{figure}.json", s)
+        write(f"cgfs-figure-{figure}.json", s)
 
 
 def orthographic_scenes():
@@ -258,7 +275,7 @@ def orthographic_scenes():
     s["models"] = {"cube": cube()}
     s["instances"] = [{"model": "cube", "transform": {"scale": 0.25},
                        "grid": {"count": [10, 10, 10], "spacing": [1, 1, 1]}}]
-    write("scenes/catlike-orthographic.json", s)
+    write("catlike-orthographic.json", s)
 
     # Hard cases of the orthographic projection.
     s = small("Orthographic, edge-on: a triangle whose plane contains the viewing direction (x = 0, camera looking "
@@ -274,7 +291,7 @@ def orthographic_scenes():
         {"model": "tri", "transform": {"rotation": {"axis": "y", "degrees": 0.001}, "translation": [-0.9, 0, 0]}},
         {"model": "tri", "transform": {"rotation": {"axis": "y", "degrees": 30}, "translation": [0.9, 0, 0]}},
     ]
-    write("scenes/hard/orthographic-edge-on.json", s)
+    write("hard/orthographic-edge-on.json", s)
 
     for reversed_z in (False, True):
         s = small("Orthographic, geometry at the near and far planes: squares exactly at z = near (depth 0, or 1 "
@@ -293,7 +310,7 @@ def orthographic_scenes():
             {"model": "square", "transform": {"translation": [x, y, z]}}
             for (x, y, z) in ((-2.5, 1.5, 2), (-1.2, 1.5, 2 + 1e-6), (0.1, 1.5, 2 - 1e-6),
                               (-2.5, -1.5, 10), (-1.2, -1.5, 10 - 1e-6), (0.1, -1.5, 10 + 1e-6))]
-        write("scenes/hard/orthographic-near-far" + ("-reversed" if reversed_z else "") + ".json", s)
+        write("hard/orthographic-near-far" + ("-reversed" if reversed_z else "") + ".json", s)
 
 
 def grid_scenes():
@@ -306,7 +323,7 @@ def grid_scenes():
     s["models"] = {"cube": cube()}
     s["instances"] = [{"model": "cube", "transform": {"scale": 0.3},
                        "grid": {"count": [100, 100, 100], "spacing": [1, 1, 1]}}]
-    write("scenes/one-million-cubes.json", s)
+    write("one-million-cubes.json", s)
 
     # Catlike Coding's transformation grid (Rendering 1): 10 x 10 x 10 points 1 apart, centred on
     # the origin, seen by a camera on the -z side with a 60-degree vertical field of view (Unity's
@@ -320,10 +337,13 @@ def grid_scenes():
     s["models"] = {"cube": cube()}
     s["instances"] = [{"model": "cube", "transform": {"scale": 0.25},
                        "grid": {"count": [10, 10, 10], "spacing": [1, 1, 1]}}]
-    write("scenes/catlike-grid.json", s)
+    write("catlike-grid.json", s)
 
 
 if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description="Writes the project's generated scene files.")
+    parser.add_argument("--out", help="the directory to write into (default: scenes)")
+    OUT_DIR = os.path.abspath(parser.parse_args().out or OUT_DIR)
     far_scenes()
     near_plane_scenes()
     depth_scenes()

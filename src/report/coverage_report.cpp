@@ -25,7 +25,7 @@ nlohmann::ordered_json PositionJson(const std::optional<verify::CoveragePosition
 }  // namespace
 
 std::string CoverageInconclusiveReason(const verify::CoverageVerification& c) {
-  if (c.Verdict() != verify::Judgement::kInconclusive) return "";
+  if (verify::JudgementOf(c) != verify::Judgement::kInconclusive) return "";
   // No primitive may reach any pixel: verify's own words for the same case (verify_report.cpp).
   if (c.certainly_covered == 0 && c.uncertain == 0) {
     return "nothing is in view (no triangle may cover any pixel), so an image with nothing covered is both the "
@@ -40,11 +40,11 @@ std::string CoverageInconclusiveReason(const verify::CoverageVerification& c) {
 
 std::string CoverageText(const verify::CoverageVerification& c) {
   std::ostringstream s;
-  const verify::Judgement verdict = c.Verdict();
+  const verify::Judgement judgement = verify::JudgementOf(c);
   s << "coverage "
-    << (verdict == verify::Judgement::kPassed         ? "passes"
-        : verdict == verify::Judgement::kInconclusive ? "is inconclusive"
-                                                      : "fails")
+    << (judgement == verify::Judgement::kPassed         ? "passes"
+        : judgement == verify::Judgement::kInconclusive ? "is inconclusive"
+                                                        : "fails")
     << ": " << c.certainly_covered << " px certainly covered, " << c.certainly_uncovered << " certainly uncovered, "
     << c.uncertain << " uncertain (free); " << c.spills << " px covered where no primitive may reach";
   if (c.first_spill) {
@@ -58,7 +58,7 @@ std::string CoverageText(const verify::CoverageVerification& c) {
     s << ", " << Counted(c.holes_allowed, "hole") << " allowed (" << c.hole_tolerance_percent
       << " % of those certainly covered)" << (c.HolesWithin() ? ": within" : ": beyond");
   }
-  if (verdict == verify::Judgement::kInconclusive) s << "; " << CoverageInconclusiveReason(c);
+  if (judgement == verify::Judgement::kInconclusive) s << "; " << CoverageInconclusiveReason(c);
   s << " (subpixel bits " << c.rules.subpixel_bits << (c.rules.strict_lines ? ", strict lines)" : ")");
   if (c.holes > 0 && !c.HolesWithin() && c.spills == 0) {
     s << "\n  only holes: a transform error, or shading that produced the clear colour; render with a clear colour "
@@ -78,8 +78,8 @@ nlohmann::ordered_json CoverageJson(const CoverageReport& r) {
           {"drawn_by", r.drawn_by ? Json(r.drawn_by->device) : Json(nullptr)},
           {"rules_from", RulesFromJson(r.rules)},
           {"alpha", AlphaJson(r.judgement.not_opaque)},
-          {"verdict", verify::JudgementName(c.Verdict())},
-          {"passed", c.Verdict() == verify::Judgement::kPassed},
+          {"verdict", verify::JudgementName(verify::JudgementOf(c))},
+          {"passed", verify::JudgementOf(c) == verify::Judgement::kPassed},
           {"reason", reason.empty() ? Json(nullptr) : Json(reason)},
           {"subpixel_bits", c.rules.subpixel_bits},
           {"strict_lines", c.rules.strict_lines},

@@ -31,7 +31,7 @@ constexpr const char* kNothingInView =
 }  // namespace
 
 std::string InconclusiveReason(const verify::Verification& v) {
-  if (v.Verdict() != verify::Judgement::kInconclusive) return "";
+  if (verify::JudgementOf(v) != verify::Judgement::kInconclusive) return "";
   if (v.covered == 0) return kNothingInView;
   if (v.background_excluded == 0) return "an empty image would pass too";
   const double share = v.covered ? 100.0 * double(v.UncertainOther()) / double(v.covered) : 0.0;
@@ -51,16 +51,16 @@ std::string VerificationText(const verify::Verification& v) {
   s.precision(2);
   s << std::fixed;
   const double percent = 100.0 * v.UncertainFraction();
-  const verify::Judgement verdict = v.Verdict();
-  if (verdict == verify::Judgement::kInconclusive && v.covered == 0) {
+  const verify::Judgement judgement = verify::JudgementOf(v);
+  if (judgement == verify::Judgement::kInconclusive && v.covered == 0) {
     // No count says more than that: every pixel is the background, certainly.
     s << "inconclusive: " << kNothingInView << "; all " << v.certain << " px are the background, 0 violations";
-  } else if (verdict != verify::Judgement::kFailed) {
-    s << (verdict == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, "
+  } else if (judgement != verify::Judgement::kFailed) {
+    s << (judgement == verify::Judgement::kPassed ? "passes: " : "inconclusive: ") << v.certain << " px certain, "
       << v.uncertain << " uncertain (" << percent << " % of the " << v.covered << " covered";
     if (v.uncertain_shared_edges > 0) s << ", " << v.uncertain_shared_edges << " of them on shared edges";
     s << "), 0 violations";
-    if (verdict == verify::Judgement::kInconclusive) s << "; " << InconclusiveReason(v);
+    if (judgement == verify::Judgement::kInconclusive) s << "; " << InconclusiveReason(v);
   } else {
     s << "fails: " << v.violations << (v.violations == 1 ? " pixel is" : " pixels are") << " not allowed; worst at ("
       << v.worst->x << ", " << v.worst->y << "): " << Colour(v.worst->colour) << ", allowed ";
@@ -74,8 +74,8 @@ std::string VerificationText(const verify::Verification& v) {
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,
                                         double verify_ms) {
   using Json = nlohmann::ordered_json;
-  return {{"verdict", verify::JudgementName(v.Verdict())},
-          {"passed", v.Verdict() == verify::Judgement::kPassed},
+  return {{"verdict", verify::JudgementName(verify::JudgementOf(v))},
+          {"passed", verify::JudgementOf(v) == verify::Judgement::kPassed},
           {"subpixel_bits", v.options.subpixel_bits},
           {"strict_lines", v.options.strict_lines},
           {"width", v.width},
@@ -99,7 +99,7 @@ std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Veri
   if (v.NoViolations()) {
     s << "the images differ in " << differing_pixels << " px, all within what Vulkan allows (" << v.uncertain
       << " px uncertain, subpixel bits " << v.options.subpixel_bits << ")";
-    if (v.Verdict() == verify::Judgement::kInconclusive) {
+    if (verify::JudgementOf(v) == verify::Judgement::kInconclusive) {
       s << ", but the judgement is inconclusive: " << InconclusiveReason(v);
     }
   } else {
@@ -147,8 +147,8 @@ nlohmann::ordered_json VerifyJson(const VerifyReport& r) {
   j["drawn_by"] = r.drawn_by ? nlohmann::ordered_json(r.drawn_by->device) : nlohmann::ordered_json(nullptr);
   j["rules_from"] = RulesFromJson(r.rules);
   j["alpha"] = AlphaJson(r.judgement.not_opaque);
-  const nlohmann::ordered_json verdict = VerificationJson(r.judgement.verification, r.map, r.judgement.verify_ms);
-  for (const auto& [key, value] : verdict.items()) j[key] = value;
+  const nlohmann::ordered_json fields = VerificationJson(r.judgement.verification, r.map, r.judgement.verify_ms);
+  for (const auto& [key, value] : fields.items()) j[key] = value;
   return j;
 }
 

@@ -22,7 +22,7 @@ CoverageJudgement JudgeCoverage(const Scene& scene, const DrawList& list, const 
   j.coverage.rules.reach = false;  // the device's rules, as given
   j.verify_ms = clock.Milliseconds();
   if (map) j.map = verify::CoverageMap(image, j.coverage);
-  j.verdict = VerdictOf(j.coverage.Verdict());
+  j.verdict = VerdictOf(verify::JudgementOf(j.coverage));
   j.not_opaque = NotOpaquePixels(image);
   return j;
 }

@@ -18,7 +18,7 @@ ImageJudgement JudgeImage(const Scene& scene, const DrawList& list, const Image&
   j.verification = verify::VerifyImage(scene, list, image, rules);
   j.verify_ms = clock.Milliseconds();
   if (map) j.map = verify::VerificationMap(image, j.verification);
-  j.verdict = VerdictOf(j.verification.Verdict());
+  j.verdict = VerdictOf(verify::JudgementOf(j.verification));
   j.not_opaque = NotOpaquePixels(image);
   return j;
 }

@@ -36,9 +36,9 @@ Verdict VerdictOf(const RunRecord& r) {
   if (r.verification && !r.verification->NoViolations()) return Verdict::kDiffering;
   if (r.Differ() && r.TwinPromised()) return Verdict::kDiffering;
   // With no violation left, a judgement is verified or inconclusive.
-  if (r.Differ()) return r.verification ? VerdictOf(r.verification->Verdict()) : Verdict::kDiffering;
+  if (r.Differ()) return r.verification ? VerdictOf(verify::JudgementOf(*r.verification)) : Verdict::kDiffering;
   if (r.comparison) return Verdict::kIdentical;
-  return r.verification ? VerdictOf(r.verification->Verdict()) : Verdict::kRendered;
+  return r.verification ? VerdictOf(verify::JudgementOf(*r.verification)) : Verdict::kRendered;
 }
 
 RunRecord ErrorRecord(const std::string& scene, const std::string& message) {

@@ -6,10 +6,10 @@
 
 namespace twinraster::verify {
 
-Judgement CoverageVerification::Verdict() const {
-  if (Violations() > 0) return Judgement::kFailed;
-  if (certainly_covered <= holes_allowed || certainly_uncovered == 0) return Judgement::kInconclusive;
-  if (2 * uncertain >= certainly_covered + uncertain) return Judgement::kInconclusive;
+Judgement JudgementOf(const CoverageVerification& c) {
+  if (c.Violations() > 0) return Judgement::kFailed;
+  if (c.certainly_covered <= c.holes_allowed || c.certainly_uncovered == 0) return Judgement::kInconclusive;
+  if (2 * c.uncertain >= c.certainly_covered + c.uncertain) return Judgement::kInconclusive;
   return Judgement::kPassed;
 }
 

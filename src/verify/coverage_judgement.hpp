@@ -14,7 +14,7 @@
 
 namespace twinraster::verify {
 
-// One pixel's coverage verdict; the map draws each class in its own colour.
+// One pixel's coverage class; the map draws each class in its own colour.
 enum class CoveragePixel : std::uint8_t {
   kAgrees,     // certainly covered and covered, or certainly uncovered and background
   kFree,       // some primitive may cover it, none certainly does: either reading is allowed
@@ -56,12 +56,14 @@ struct CoverageVerification {
   // Spills, and holes when there are more than holes_allowed.
   std::uint64_t Violations() const { return spills + (HolesWithin() ? 0 : holes); }
   bool HolesWithin() const { return holes <= holes_allowed; }
-  // Failed on any violation. Inconclusive when an image with nothing covered would pass (no pixel
-  // is certainly covered beyond the holes allowed), when one covered everywhere would (no pixel is
-  // certainly uncovered), or when the uncertain pixels are at least half of those some primitive
-  // may cover: such a judgement cannot tell a transform bug from a correct image.
-  Judgement Verdict() const;
 };
+
+// The judgement of the image's coverage. Failed on any violation. Inconclusive when an image with
+// nothing covered would pass (no pixel is certainly covered beyond the holes allowed), when one
+// covered everywhere would (no pixel is certainly uncovered), or when the uncertain pixels are at
+// least half of those some primitive may cover: such a judgement cannot tell a transform bug from a
+// correct image.
+Judgement JudgementOf(const CoverageVerification& coverage);
 
 // `verification` must come from VerifyImage of this image with VerifyOptions::reach; `scene_background`
 // is the scene's clear colour, used unless the options give one. Throws std::invalid_argument when

@@ -11,9 +11,9 @@ const char* JudgementName(Judgement judgement) {
   return "failed";
 }
 
-Judgement Verification::Verdict() const {
-  if (violations > 0) return Judgement::kFailed;
-  if (background_excluded == 0 || 2 * UncertainOther() >= covered) return Judgement::kInconclusive;
+Judgement JudgementOf(const Verification& v) {
+  if (v.violations > 0) return Judgement::kFailed;
+  if (v.background_excluded == 0 || 2 * v.UncertainOther() >= v.covered) return Judgement::kInconclusive;
   return Judgement::kPassed;
 }
 

@@ -70,12 +70,14 @@ struct Verification {
   std::vector<Reach> reach;        // row by row, when VerifyOptions::reach asks; else empty
 
   bool NoViolations() const { return violations == 0; }
-  // Failed on any violation. Inconclusive when an empty image would pass as well, or when the
-  // uncertain pixels, less those of shared edges, are half the covered pixels or more (a broken
-  // image then mostly passes too: docs/verify.md, "Passed, failed or inconclusive").
-  Judgement Verdict() const;
   std::uint64_t UncertainOther() const { return uncertain - uncertain_shared_edges; }
   double UncertainFraction() const { return covered ? double(uncertain) / double(covered) : 0.0; }
 };
+
+// The judgement of the whole image (a run's verdict is run/verdict.hpp's, made from it). Failed on
+// any violation. Inconclusive when an empty image would pass as well, or when the uncertain pixels,
+// less those of shared edges, are half the covered pixels or more (a broken image then mostly
+// passes too: docs/verify.md, "Passed, failed or inconclusive").
+Judgement JudgementOf(const Verification& verification);
 
 }  // namespace twinraster::verify

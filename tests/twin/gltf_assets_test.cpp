@@ -138,8 +138,8 @@ TEST_CASE(
     // lavapipe's rules: 8 sub-pixel bits, strict lines.
     const verify::Verification judged_image =
         verify::VerifyImage(scene, list, lavapipe.gpu, verify::VerifyOptions{8, true});
-    INFO(verify::JudgementName(judged_image.Verdict()));
-    REQUIRE(judged_image.Verdict() != verify::Judgement::kFailed);
+    INFO(verify::JudgementName(verify::JudgementOf(judged_image)));
+    REQUIRE(verify::JudgementOf(judged_image) != verify::Judgement::kFailed);
     ++judged;
   }
   CHECK(judged >= 24);

@@ -146,23 +146,6 @@ TEST_CASE("The normal matrix: inverse transpose of M_Model's upper 3x3", "[chain
   CHECK_FALSE(n(flat).has_value());
 }
 
-TEST_CASE("Scenes without lighting build exactly the draw list they did before", "[chain][lighting]") {
-  int unlit = 0;
-  for (const auto& file : test::ShippedScenes()) {
-    const Scene scene = LoadScene(file);
-    if (scene.lighting) continue;
-    const DrawList list = BuildDrawList(scene);
-    INFO(file.string());
-    CHECK_FALSE(list.lighting.has_value());
-    for (const DrawMesh& mesh : list.meshes) {
-      CHECK(mesh.shading == Shading::kUnlit);
-      CHECK(mesh.normals.empty());
-    }
-    ++unlit;
-  }
-  CHECK(unlit == 46 - 9);  // of the 46 shipped scenes, 9 are lit
-}
-
 TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by range, still == the twin",
           "[twin][lighting][large]") {
   // 1,050,000 lit cubes: more than gpu::kLitInstancesPerRange (2^20), so both the per-draw and the

@@ -45,8 +45,8 @@ TEST_CASE("verify: an empty image of a scene that draws something never passes, 
       for (const verify::VerifyOptions options : {verify::VerifyOptions{4, false}, verify::VerifyOptions{8, true}}) {
         const verify::Verification v = verify::VerifyImage(scene, list, Blank(list), options);
         INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << report::VerificationText(v));
-        CHECK(v.Verdict() != verify::Judgement::kPassed);
-        failed += v.Verdict() == verify::Judgement::kFailed;
+        CHECK(verify::JudgementOf(v) != verify::Judgement::kPassed);
+        failed += verify::JudgementOf(v) == verify::Judgement::kFailed;
         ++judged;
       }
     }
@@ -64,7 +64,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
       if (RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
       const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
       INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
-      CHECK(v.Verdict() != verify::Judgement::kPassed);
+      CHECK(verify::JudgementOf(v) != verify::Judgement::kPassed);
       ++drawing;
     }
   }
@@ -84,8 +84,8 @@ TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, n
   const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
   INFO(report::VerificationText(drawn) << "\n" << report::VerificationText(empty));
   CHECK(drawn.NoViolations());
-  CHECK(drawn.Verdict() == verify::Judgement::kInconclusive);
-  CHECK(empty.Verdict() != verify::Judgement::kPassed);
+  CHECK(verify::JudgementOf(drawn) == verify::Judgement::kInconclusive);
+  CHECK(verify::JudgementOf(empty) != verify::Judgement::kPassed);
 }
 
 TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's lines pass both", "[verify]") {
@@ -121,7 +121,7 @@ TEST_CASE("verify: an edge through the eye plane must be drawn where it is in fr
   const verify::Verification bad = verify::VerifyImage(scene, list, dropped, {8, true});
   INFO(report::VerificationText(good) << "\n" << report::VerificationText(bad));
   CHECK(good.NoViolations());
-  CHECK(bad.Verdict() == verify::Judgement::kFailed);
+  CHECK(verify::JudgementOf(bad) == verify::Judgement::kFailed);
   CHECK(bad.violations >= 20);
 }
 

@@ -1,0 +1,4 @@
+// high links low: allowed.
+#pragma once
+
+#include "low/low_part.hpp"

@@ -1,0 +1,2 @@
+// Its own stage: allowed.
+#pragma once

@@ -1,0 +1,4 @@
+// Not built, so not checked.
+#pragma once
+
+#include "top/top.hpp"
