@@ -13,7 +13,7 @@
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "report/bench_pages.hpp"
 #include "report/bench_tables.hpp"
 

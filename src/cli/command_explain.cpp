@@ -7,7 +7,7 @@
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "report/chain_page.hpp"
 #include "report/explain_json.hpp"
 #include "report/explain_text.hpp"

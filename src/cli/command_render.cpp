@@ -15,7 +15,7 @@
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/lavapipe_path.hpp"
 #include "cpu/twin_rules.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
 #include "report/image_notes.hpp"

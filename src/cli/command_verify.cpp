@@ -9,7 +9,7 @@
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "report/coverage_report.hpp"
 #include "report/image_notes.hpp"
 #include "report/verify_report.hpp"

@@ -3,7 +3,7 @@
 // uses what that device reported. It does not vouch for them: a file's notes are what it says.
 #pragma once
 
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "verify/drawn_by.hpp"
 
 #include <optional>

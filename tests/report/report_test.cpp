@@ -1,7 +1,6 @@
 // The report layer on its own: escaping, links, verdicts and their order, the JUnit counts, counts
-// in words, plots on log axes, and thumbnails that keep a single marked pixel.
+// in words and plots on log axes.
 #include "base/counted.hpp"
-#include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
 #include "report/junit.hpp"
 #include "report/markup.hpp"
@@ -174,26 +173,4 @@ TEST_CASE("PlotSvg: a linear axis ticks round numbers and starts at 0 for positi
   CHECK(svg.find(">10</text>") != std::string::npos);
   CHECK(svg.find("(log)") == std::string::npos);
   CHECK(svg.find("<polyline") != std::string::npos);
-}
-
-TEST_CASE("Thumbnail: pictures are averaged, one marked pixel of a diff survives", "[report]") {
-  Image diff(600, 400);
-  for (std::size_t i = 0; i < diff.rgba.size(); i += 4)
-    diff.rgba[i] = diff.rgba[i + 1] = diff.rgba[i + 2] = 220, diff.rgba[i + 3] = 255;
-  std::uint8_t* marked = diff.pixel(301, 117);
-  marked[0] = 255, marked[1] = 0, marked[2] = 0;
-  const Image mean = Thumbnail(diff, 96), kept = Thumbnail(diff, 96, ThumbnailFilter::kMostSaturated);
-  REQUIRE(mean.width == 96);
-  REQUIRE(mean.height == 64);
-  CHECK(ThumbnailSizeFor(600, 400, 96).width == 96);
-  CHECK(ThumbnailSizeFor(600, 400, 96).height == 64);
-  std::size_t red_mean = 0, red_kept = 0;
-  for (std::size_t i = 0; i < mean.rgba.size(); i += 4) {
-    red_mean += mean.rgba[i] == 255 && mean.rgba[i + 1] == 0;
-    red_kept += kept.rgba[i] == 255 && kept.rgba[i + 1] == 0;
-  }
-  CHECK(red_mean == 0);
-  CHECK(red_kept == 1);
-  const Image small(50, 20);
-  CHECK(Thumbnail(small, 96).width == 50);
 }

@@ -6,8 +6,8 @@
 // RGBA.
 #pragma once
 
+#include "files/staged_file.hpp"
 #include "image/image.hpp"
-#include "image/staged_file.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -1,6 +1,6 @@
-#include "image/png_runs.hpp"
+#include "files/png_runs.hpp"
 
-#include "image/png_scanlines.hpp"
+#include "files/png_scanlines.hpp"
 
 #include <libdeflate.h>
 #include <zlib.h>

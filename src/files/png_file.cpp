@@ -1,8 +1,8 @@
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 
-#include "image/png_bytes.hpp"
-#include "image/png_runs.hpp"
-#include "image/png_scanlines.hpp"
+#include "files/png_bytes.hpp"
+#include "files/png_runs.hpp"
+#include "files/png_scanlines.hpp"
 
 #include <libdeflate.h>
 

@@ -1,6 +1,6 @@
-#include "image/png_fast_reader.hpp"
+#include "files/png_fast_reader.hpp"
 
-#include "image/png_bytes.hpp"
+#include "files/png_bytes.hpp"
 
 #include <libdeflate.h>
 

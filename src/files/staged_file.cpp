@@ -1,6 +1,6 @@
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 
-#include "image/output_path.hpp"
+#include "files/output_path.hpp"
 
 #include <unistd.h>
 

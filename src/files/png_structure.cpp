@@ -1,6 +1,6 @@
-#include "image/png_structure.hpp"
+#include "files/png_structure.hpp"
 
-#include "image/png_bytes.hpp"
+#include "files/png_bytes.hpp"
 
 #include <libdeflate.h>
 #include <spng.h>

@@ -1,9 +1,9 @@
 // The rule for where an output may go (image/output_path.hpp), and StagedFile keeping to it: a
 // read-only file is never replaced, even by root, whom access(2) lets write anything (CI runs
 // as root, so these tests decide by the mode bits a user set, and pass or fail alike for anyone).
-#include "image/output_path.hpp"
+#include "files/output_path.hpp"
 
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 

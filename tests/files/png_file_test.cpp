@@ -1,7 +1,7 @@
 // PNG output is lossless at every level: encoded images decode (with libspng, and the fastest
 // level's also with zlib) to the same pixels, and higher levels give smaller files. Text notes round trip, and
 // reading them survives corrupt, cut-off and hostile files.
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 
 #include "support/catch.hpp"
 #include "support/test_support.hpp"

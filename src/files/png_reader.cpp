@@ -5,10 +5,10 @@
 // caller's check among it), which names the first thing wrong, file or memory alike; the only large
 // allocation is the RGBA image itself (and, read by the fast reader, the image data, at most 8 MiB
 // of it); a file is otherwise streamed, never read whole.
-#include "image/png_bytes.hpp"
-#include "image/png_fast_reader.hpp"
-#include "image/png_file.hpp"
-#include "image/png_structure.hpp"
+#include "files/png_bytes.hpp"
+#include "files/png_fast_reader.hpp"
+#include "files/png_file.hpp"
+#include "files/png_structure.hpp"
 
 #include <spng.h>
 

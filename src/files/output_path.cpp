@@ -1,6 +1,6 @@
-#include "image/output_path.hpp"
+#include "files/output_path.hpp"
 
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>

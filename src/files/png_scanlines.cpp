@@ -1,4 +1,4 @@
-#include "image/png_scanlines.hpp"
+#include "files/png_scanlines.hpp"
 
 #include <cstring>
 

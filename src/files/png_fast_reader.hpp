@@ -7,8 +7,8 @@
 // then reads it, or names what is wrong, as before.
 #pragma once
 
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 
 #include <istream>
 #include <optional>

@@ -2,9 +2,9 @@
 // the five filters (PNG spec 9.2, applied here from the spec), deflated by zlib, are read back bit
 // for bit by the fast reader and by libspng (the same bytes with an extra chunk, which only libspng
 // reads); and every file outside its narrow form is left to libspng.
-#include "image/png_fast_reader.hpp"
+#include "files/png_fast_reader.hpp"
 
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "support/catch.hpp"
 
 #include <zlib.h>

@@ -5,7 +5,7 @@
 // IHDR's.
 #pragma once
 
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 
 #include <cstdint>
 #include <istream>

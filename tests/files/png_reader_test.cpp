@@ -1,7 +1,7 @@
-// The PNG reader on files from elsewhere (tests/image/pngs/, scripts/make-test-pngs.py): every
+// The PNG reader on files from elsewhere (tests/files/pngs/, scripts/make-test-pngs.py): every
 // valid encoding reads as the same pixels, every malformed file is refused with the file's name and
 // a reason, and nothing from the file reaches the message as a control character.
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 
@@ -16,7 +16,7 @@ using namespace twinraster;
 namespace {
 
 std::filesystem::path Png(const std::string& folder, const std::string& name) {
-  return test::SourcePath("tests/image/pngs/" + folder + "/" + name);
+  return test::SourcePath("tests/files/pngs/" + folder + "/" + name);
 }
 
 // The message ReadPng throws for a file, or "" if it reads it.
@@ -54,7 +54,7 @@ TEST_CASE("PNG reader: every valid encoding of the picture reads as the same RGB
   CHECK(std::equal(rgba.pixel(12, 6), rgba.pixel(12, 6) + 4, std::array<std::uint8_t, 4>{0, 128, 255, 255}.begin()));
   CHECK(rgba.pixel(4, 6)[3] == 0);  // (4 / 4 + 6 / 3) % 4 == 3: the clear band
   int read = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/valid"))) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/valid"))) {
     const std::string name = entry.path().filename().string();
     INFO(name << " against " << ReferenceOf(name));
     const Image image = ReadPng(entry.path());
@@ -103,7 +103,7 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
     if (w > 1024 || h > 1024) throw FileError("refused: " + std::to_string(w) + " x " + std::to_string(h));
   };
   int refused = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/malformed"))) {
     const std::string name = entry.path().filename().string();
     INFO(name);
     REQUIRE(reasons.contains(name));
@@ -131,7 +131,7 @@ TEST_CASE("PNG reader: every malformed file is refused in the same words from a 
           "[png][reader]") {
   // One structure check for both: reading a file it could seek past the end, which a buffer cannot.
   int compared = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/malformed"))) {
     const std::string file = entry.path().string();
     INFO(file);
     const std::string from_file = Refusal(entry.path());
@@ -173,7 +173,7 @@ TEST_CASE(
     "[png][reader]") {
   int read = 0;
   for (const char* folder : {"valid", "malformed"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/") / folder)) {
+    for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/") / folder)) {
       INFO(entry.path().string());
       const auto [image, message] = ReadRows(entry.path());
       CHECK(message == Refusal(entry.path()));
