@@ -7,7 +7,7 @@
 #include "cli/parser_setup.hpp"
 #include "files/png_file.hpp"
 #include "image/image_compare.hpp"
-#include "report/comparison_report.hpp"
+#include "run_report/comparison_report.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

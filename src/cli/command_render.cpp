@@ -17,11 +17,11 @@
 #include "cpu/twin_rules.hpp"
 #include "files/png_file.hpp"
 #include "image/thumbnail.hpp"
-#include "report/batch_page.hpp"
-#include "report/image_notes.hpp"
-#include "report/junit.hpp"
-#include "report/render_outputs.hpp"
 #include "run/run_scene.hpp"
+#include "run_report/batch_page.hpp"
+#include "run_report/image_notes.hpp"
+#include "run_report/junit.hpp"
+#include "run_report/render_outputs.hpp"
 #include "scene/scene_error.hpp"
 
 #include <CLI/CLI.hpp>
