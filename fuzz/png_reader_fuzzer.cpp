@@ -6,8 +6,8 @@
 // anything else (another exception, a crash, a leak, undefined behaviour, a hang, memory past the
 // limit) is a finding.
 #include "chain/draw_list.hpp"
-#include "image/png_file.hpp"
-#include "image/staged_file.hpp"
+#include "files/png_file.hpp"
+#include "files/staged_file.hpp"
 #include "scene/scene_loader.hpp"
 #include "verify/verifier.hpp"
 #include "verify/verify_map.hpp"

@@ -5,7 +5,7 @@
 #   gltf_fuzzer (bytes -> glTF reader -> scene) on assimp-testmodels' glTF files;
 #   png_reader_fuzzer (bytes -> PNG reader -> verify -> map) on the project's own render of a
 #   scene at 64 x 64 written in every PNG encoding (scripts/make-test-pngs.py --encodings-of),
-#   plus tests/image/pngs/ (every valid encoding, and one malformed file per known class).
+#   plus tests/files/pngs/ (every valid encoding, and one malformed file per known class).
 # First replays every input saved in fuzz/regressions/<fuzzer>/. A finding (a crash, an unexpected
 # exception, a leak, UB, a hang over 30 s, memory past the limit) fails the script; its input is
 # left in build-fuzz/findings/.
@@ -70,7 +70,7 @@ scene["canvas"]["width"] = scene["canvas"]["height"] = 64
 json.dump(scene, open(sys.argv[1], "w"))' build-fuzz/run/small-scene.json
 ./build/bin/twinraster render build-fuzz/run/small-scene.json --backend cpu -q -o build-fuzz/run/small.png
 /usr/bin/python3 scripts/make-test-pngs.py --encodings-of build-fuzz/run/small.png --out "$pngs"
-for f in tests/image/pngs/valid/*.png tests/image/pngs/malformed/*.png; do
+for f in tests/files/pngs/valid/*.png tests/files/pngs/malformed/*.png; do
   cp "$f" "$pngs/$(basename "$(dirname "$f")")-$(basename "$f")"
 done
 run png_reader_fuzzer "$pngs" -timeout=30 -rss_limit_mb=2048 -malloc_limit_mb=64 -max_len=262144

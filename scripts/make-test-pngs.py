@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the PNG files the reader's tests use (tests/image/pngs/), byte for byte the same at every
+"""Writes the PNG files the reader's tests use (tests/files/pngs/), byte for byte the same at every
 run: one small picture in every valid encoding the reader must read identically (8 and 16 bits,
 grey, grey with alpha, RGB, RGBA, palette with and without tRNS, 1-, 2- and 4-bit palettes,
 Adam7-interlaced, IDAT split into 1-byte chunks, a tEXt chunk), and one malformed file for each

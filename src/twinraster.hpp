@@ -5,6 +5,6 @@
 
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"

@@ -2,7 +2,7 @@
 
 #include "base/stopwatch.hpp"
 #include "bench/bench_suite.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 
 #include <stb/stb_image_write.h>
 

@@ -2,8 +2,8 @@
 
 #include "bench/bench_suite.hpp"
 #include "bench/process_bench.hpp"
+#include "files/png_file.hpp"
 #include "image/image_compare.hpp"
-#include "image/png_file.hpp"
 #include "run/run_scene.hpp"
 #include "scene/obj_scene.hpp"
 

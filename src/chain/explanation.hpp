@@ -1,7 +1,7 @@
 // `explain`'s numbers for a scene, typed: the chapter's matrices by their names, and for each
 // chosen instance its M_Model, F and traced vertices (object -> world -> camera -> clip -> NDC ->
 // canvas -> framebuffer, with the light where the model is lit). It computes and does not
-// format: report/explain_text, report/explain_json and report/chain_page write it out.
+// format: explain_report/ (explain_text, explain_json, chain_page) writes it out.
 #pragma once
 
 #include "chain/frustum.hpp"

@@ -8,14 +8,14 @@
 #include "bench/loader_bench.hpp"
 #include "bench/scale_bench.hpp"
 #include "bench/verify_bench.hpp"
+#include "bench_report/bench_pages.hpp"
+#include "bench_report/bench_tables.hpp"
 #include "cli/commands.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/progress.hpp"
-#include "image/staged_file.hpp"
-#include "report/bench_pages.hpp"
-#include "report/bench_tables.hpp"
+#include "files/staged_file.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

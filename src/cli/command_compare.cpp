@@ -5,9 +5,9 @@
 #include "cli/io_arguments.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
+#include "files/png_file.hpp"
 #include "image/image_compare.hpp"
-#include "image/png_file.hpp"
-#include "report/comparison_report.hpp"
+#include "run_report/comparison_report.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -7,10 +7,10 @@
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
-#include "image/staged_file.hpp"
-#include "report/chain_page.hpp"
-#include "report/explain_json.hpp"
-#include "report/explain_text.hpp"
+#include "explain_report/chain_page.hpp"
+#include "explain_report/explain_json.hpp"
+#include "explain_report/explain_text.hpp"
+#include "files/staged_file.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -9,13 +9,13 @@
 #include "cli/output_paths.hpp"
 #include "cli/parser_setup.hpp"
 #include "cli/scene_choice_options.hpp"
-#include "image/png_file.hpp"
-#include "report/coverage_report.hpp"
-#include "report/image_notes.hpp"
-#include "report/verify_report.hpp"
+#include "files/png_file.hpp"
 #include "run/device_rules.hpp"
 #include "run/judge_coverage.hpp"
 #include "run/judge_image.hpp"
+#include "run_report/coverage_report.hpp"
+#include "run_report/image_notes.hpp"
+#include "run_report/verify_report.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 #include "cli/io_arguments.hpp"
 
 #include "base/usage_error.hpp"
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 

@@ -7,8 +7,8 @@
 #include "cli/parser_setup.hpp"
 #include "cli/usage_problems.hpp"
 #include "cli/version.hpp"
+#include "files/staged_file.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "image/staged_file.hpp"
 #include "scene/scene_error.hpp"
 
 #include <CLI/CLI.hpp>

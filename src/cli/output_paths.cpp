@@ -1,7 +1,7 @@
 #include "cli/output_paths.hpp"
 
-#include "image/output_path.hpp"
-#include "image/staged_file.hpp"
+#include "files/output_path.hpp"
+#include "files/staged_file.hpp"
 
 namespace twinraster {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cli/scene_choice_options.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "run/run_scene.hpp"
 
 #include <optional>

@@ -2,7 +2,7 @@
 
 #include "cli/render_printing.hpp"
 #include "cli/render_scene.hpp"
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "scene/scene_error.hpp"
 
 #include <exception>

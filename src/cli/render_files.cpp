@@ -3,11 +3,11 @@
 #include "base/stopwatch.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/output_paths.hpp"
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "image/thumbnail.hpp"
-#include "report/batch_page.hpp"
-#include "report/image_notes.hpp"
-#include "report/junit.hpp"
+#include "run_report/batch_page.hpp"
+#include "run_report/image_notes.hpp"
+#include "run_report/junit.hpp"
 
 #include <filesystem>
 #include <utility>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cli/render_arguments.hpp"
-#include "image/staged_file.hpp"
+#include "files/staged_file.hpp"
 #include "run/batch_result.hpp"
 #include "run/run_scene.hpp"
 

@@ -1,7 +1,7 @@
 #include "cli/render_printing.hpp"
 
 #include "cli/io_arguments.hpp"
-#include "report/render_outputs.hpp"
+#include "run_report/render_outputs.hpp"
 
 #include <nlohmann/json.hpp>
 

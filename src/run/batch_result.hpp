@@ -1,7 +1,7 @@
 // A batch of scenes' runs as every batch output reads it (the batch page, the JUnit file, render's
 // JSON lines, the exit code): the records in the batch's order, how many got each verdict, and the
 // worst verdict, as deqp-runner keeps its results. It runs, prints and formats nothing: cli/ fills
-// it, report/ writes it.
+// it, run_report/ writes it.
 #pragma once
 
 #include "run/run_record.hpp"

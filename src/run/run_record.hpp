@@ -1,7 +1,7 @@
 // One scene's run as every output reads it (render's text and --json, the batch page, the JUnit
 // file): what each backend did, what was compared and judged, and the one verdict. It holds no
 // pixels (run_scene.hpp's RunResult carries those until they are written) and formats nothing
-// (report/ does).
+// (run_report/ does).
 #pragma once
 
 #include "cpu/twin_rules.hpp"

@@ -1,6 +1,6 @@
 // The one verdict of a scene's run, as deqp-runner's status enum is for a test: what the exit
 // code, the batch page's colour and the JUnit element all read. Deciding it is run_record.hpp's
-// VerdictOf; saying why is report/'s.
+// VerdictOf; saying why is run_report/'s.
 #pragma once
 
 #include "verify/verification.hpp"

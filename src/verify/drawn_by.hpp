@@ -1,6 +1,6 @@
 // Who drew an image and how that device rasterizes: what a judgement needs to know of the device
 // (its subPixelPrecisionBits and strictLines). It does not read or write them anywhere: render
-// fills it from the device, and report/image_notes.hpp keeps it in a PNG's notes.
+// fills it from the device, and run_report/image_notes.hpp keeps it in a PNG's notes.
 #pragma once
 
 #include "verify/verification.hpp"

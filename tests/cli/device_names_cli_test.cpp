@@ -2,8 +2,8 @@
 // name; a name no device answers to, listed against the names that work; the twin's rules chosen by
 // the name when --backend cpu opens no device, and refused when it has none; and --threads' help
 // saying what the twin does.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 

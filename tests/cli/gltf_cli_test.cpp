@@ -1,8 +1,8 @@
 // glTF files on the command line as a user meets them: render, explain and verify take .gltf and
 // .glb alone, --camera, --scene and --size work the same in all three, what is not drawn is a
 // note, and a hostile file is one line and exit code 2 that leaves an existing output as it was.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/gltf_bytes.hpp"
 #include "support/image_counts.hpp"

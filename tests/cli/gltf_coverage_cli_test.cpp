@@ -3,8 +3,8 @@
 // the twin's image recoloured as an engine's shading would (with its own clear colour), and fails
 // the image of a file with a transform defect (a field of view 1 % wide, a child not under its
 // parent), recoloured the same way.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "scene/scene.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"

@@ -1,7 +1,7 @@
 // `render` when the Vulkan driver crashes or hangs, as a user meets it: the report names the
 // crash or the time limit and the scene, the twin's image is still written, a batch goes on to its
 // later scenes, and exit code 5 tells a script what happened.
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 

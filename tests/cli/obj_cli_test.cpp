@@ -1,7 +1,7 @@
 // `twinraster render mesh.obj` and `explain mesh.obj`: an OBJ file on its own, as tinyrenderer's
 // command line takes one.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"

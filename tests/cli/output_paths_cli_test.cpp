@@ -2,7 +2,7 @@
 // checked before any drawing, missing directories are made for every option that writes, - is a
 // standard stream wherever it is accepted, and a read-only file is never replaced. CI runs as
 // root, whom the system lets write anything: a file is read-only here by its mode bits alone.
-#include "image/png_file.hpp"
+#include "files/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 

@@ -3,7 +3,7 @@
 #include "cli/progress.hpp"
 
 #include "bench/bench_suite.hpp"
-#include "report/bench_tables.hpp"
+#include "bench_report/bench_tables.hpp"
 #include "support/catch.hpp"
 
 #include <fcntl.h>

@@ -1,7 +1,7 @@
 // `twinraster render` and `compare` as a user runs them: outputs, JSON, exit codes, and output
 // files that a failed run never truncates or destroys.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 

@@ -1,8 +1,8 @@
 // `render --rules book` as a user runs it: the demo's canvas on the CPU without any Vulkan device,
 // outputs named as --backend cpu names them, JSON saying which rules drew, and scenes the book's
 // rules cannot draw reported like bad scenes.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/image_counts.hpp"
 #include "support/test_support.hpp"

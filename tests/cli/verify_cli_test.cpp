@@ -1,7 +1,7 @@
 // `twinraster verify` and `render --verify` as a user runs them: verdicts and exit codes, the map,
 // the sentence about a difference, and bad input that names the file and loses nothing.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
 
@@ -170,7 +170,7 @@ TEST_CASE("verify: --subpixel-bits below the spec's minimum, and --map with --no
   const test::TempDir dir;
   const auto map = dir / "map.png";
   test::WriteFile(map, "an earlier map");
-  const std::string image = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
+  const std::string image = test::SourcePath("tests/files/pngs/valid/rgba8.png").string();
   const test::CliResult bits = test::RunCli({"verify", kScene, image, "--subpixel-bits", "3", "--map", map.string()});
   CHECK(bits.exit_code == 2);
   CHECK_THAT(bits.err, HasSubstring("twinraster verify: --subpixel-bits: Vulkan requires subPixelPrecisionBits of at "
@@ -186,13 +186,13 @@ TEST_CASE("verify and compare: every malformed PNG exits 2, naming the file, wit
           "[cli][verify][png]") {
   const test::TempDir dir;
   const std::string scene = test::SourcePath("scenes/cgfs-transforms.json").string();
-  const std::string good = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
+  const std::string good = test::SourcePath("tests/files/pngs/valid/rgba8.png").string();
   const auto printable = [](const std::string& text) {
     return std::none_of(text.begin(), text.end(),
                         [](char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7f; });
   };
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/image/pngs/malformed"))) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/malformed"))) {
     const std::string png = entry.path().string();
     INFO(png);
     const test::CliResult v = test::RunCli({"verify", scene, png, "--map", (dir / "map.png").string()});
@@ -207,19 +207,19 @@ TEST_CASE("verify and compare: every malformed PNG exits 2, naming the file, wit
     CHECK(printable(c.out + c.err));
     ++files;
   }
-  CHECK(files == 26);  // tests/image/pngs/README.md lists them
+  CHECK(files == 26);  // tests/files/pngs/README.md lists them
   CHECK_FALSE(std::filesystem::exists(dir / "map.png"));
   // The bomb's size is refused against the scene's canvas before a pixel is decoded: had it been
   // decoded, the message would be the cut-off IDAT's.
   const test::CliResult bomb =
-      test::RunCli({"verify", scene, test::SourcePath("tests/image/pngs/malformed/bomb-16384-truncated.png").string()});
+      test::RunCli({"verify", scene, test::SourcePath("tests/files/pngs/malformed/bomb-16384-truncated.png").string()});
   CHECK_THAT(bomb.err, HasSubstring("the image is 16384 x 16384, but"));
 }
 
 TEST_CASE("compare: a valid PNG that declares 16384 x 16384 pixels is read a row at a time, in little memory",
           "[cli][compare][png]") {
-  const std::string big = test::SourcePath("tests/image/pngs/large/declares-16384x16384.png").string();
-  const std::string small = test::SourcePath("tests/image/pngs/valid/rgba8.png").string();
+  const std::string big = test::SourcePath("tests/files/pngs/large/declares-16384x16384.png").string();
+  const std::string small = test::SourcePath("tests/files/pngs/valid/rgba8.png").string();
   const test::TempDir dir;
   const std::string diff = (dir / "d.png").string();
   test::WriteFile(diff, "an earlier diff");

@@ -2,8 +2,8 @@
 // clear colour passes (exit 0), a transform bug fails (exit 1) with its pixels in the map's own
 // colours, a judgement that cannot tell is inconclusive (exit 6), and a malformed --background or
 // --hole-tolerance is a usage error (exit 2) that writes nothing.
+#include "files/png_file.hpp"
 #include "image/image.hpp"
-#include "image/png_file.hpp"
 #include "scene/scene.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"

@@ -25,7 +25,8 @@ set(expected
   include/twinraster/twinraster.hpp
   include/twinraster/scene/scene_loader.hpp
   include/twinraster/chain/draw_list.hpp
-  include/twinraster/image/png_file.hpp
+  include/twinraster/image/image.hpp
+  include/twinraster/files/png_file.hpp
   include/twinraster/book/book_renderer.hpp
   include/twinraster/cpu/cpu_renderer.hpp
   include/twinraster/gpu/gpu_renderer.hpp
@@ -35,7 +36,7 @@ set(expected
   ${LIBDIR}/cmake/twinraster/twinrasterTargets.cmake
   ${LIBDIR}/cmake/twinraster/twinrasterGpuTargets.cmake
 )
-foreach(stage IN ITEMS scene chain image book cpu gpu truth run bench)
+foreach(stage IN ITEMS scene chain image files book cpu gpu truth run bench)
   list(APPEND expected ${LIBDIR}/libtwinraster_${stage}.a)
 endforeach()
 set(problems 0)

@@ -2,7 +2,7 @@
 // by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "report/verify_report.hpp"
+#include "run_report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"

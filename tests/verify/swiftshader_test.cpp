@@ -3,7 +3,7 @@
 // wireframe edges it drops where a triangle runs behind the eye (docs/verify.md, "SwiftShader").
 #include "chain/draw_list.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "report/verify_report.hpp"
+#include "run_report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"

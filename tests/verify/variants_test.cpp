@@ -5,7 +5,7 @@
 
 #include "chain/draw_list.hpp"
 #include "image/image_compare.hpp"
-#include "report/verify_report.hpp"
+#include "run_report/verify_report.hpp"
 #include "scene/obj_scene.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"

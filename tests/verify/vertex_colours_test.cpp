@@ -5,7 +5,7 @@
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/twin_rules.hpp"
-#include "report/verify_report.hpp"
+#include "run_report/verify_report.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
 #include "support/lit_scene.hpp"
