@@ -2,24 +2,24 @@
 # Proves the README's two commands on a fresh Debian release: makes a minimal root of RELEASE
 # (trixie = Debian 13, bookworm = Debian 12) with debootstrap, clones this repository's HEAD into
 # it, runs `bash scripts/demo.sh` and `bash scripts/test.sh` inside it as a newcomer would (on
-# bookworm, then scripts/check-mesa25-bookworm.sh: the backport's lavapipe against the twin), and
+# bookworm, then .ci/check-mesa25-bookworm.sh: the backport's lavapipe against the twin), and
 # deletes the root again. Needs root (debootstrap, mount, chroot) and the network.
 #
-#   scripts/check-debian.sh trixie            # both README commands on Debian 13
-#   KEEP_ROOT=1 scripts/check-debian.sh trixie  # keep the root afterwards (say where)
+#   .ci/check-debian.sh trixie            # both README commands on Debian 13
+#   KEEP_ROOT=1 .ci/check-debian.sh trixie  # keep the root afterwards (say where)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 release="${1:-}"
 case "$release" in
   bookworm | trixie) ;;
-  *) echo "usage: scripts/check-debian.sh bookworm|trixie" >&2; exit 2 ;;
+  *) echo "usage: .ci/check-debian.sh bookworm|trixie" >&2; exit 2 ;;
 esac
 if [ "$(id -u)" -ne 0 ]; then
   echo "check-debian: needs root (debootstrap, mount, chroot)" >&2
   exit 2
 fi
-. scripts/debian-mirror.sh
+. .ci/debian-mirror.sh
 mirror="$(debian_mirror)"
 if [ -z "$mirror" ]; then
   echo "check-debian: no Debian archive in this machine's apt sources; set DEBIAN_MIRROR" >&2
@@ -92,6 +92,6 @@ step "drivers tested: $(run "dpkg-query -W -f='\${Package} \${Version}; ' mesa-v
 step "both README commands passed on $release"
 if [ "$release" = bookworm ]; then
   # Debian 12's backport of Mesa 25.0.7 (LLVM 15): the twin's rows for it, against that driver.
-  step "bash scripts/check-mesa25-bookworm.sh"
-  run "bash scripts/check-mesa25-bookworm.sh"
+  step "bash .ci/check-mesa25-bookworm.sh"
+  run "bash .ci/check-mesa25-bookworm.sh"
 fi
