@@ -1,15 +1,17 @@
-// The GPU stage of a build configured with -DTWINRASTER_VULKAN=OFF, in place of gpu_renderer.cpp
-// and device_list.cpp: the same declarations, and every way of reaching a device throws
-// GpuUnavailable saying that this build has no Vulkan. Everything that draws on the GPU (run/,
-// bench/, cli/) then fails as it does on a machine without a driver (exit 3), and the rest works.
+// The GPU stage of a build configured with -DTWINRASTER_VULKAN=OFF, in place of gpu_renderer.cpp,
+// device_list.cpp and driver_files.cpp: the same declarations, every way of reaching a device
+// throws GpuUnavailable saying that this build has no Vulkan, and no driver file is offered to a
+// loader that is not there. Everything that draws on the GPU (run/, bench/, cli/) then fails as it
+// does on a machine without a driver (exit 3), and the rest works.
 #include "gpu/device_list.hpp"
+#include "gpu/driver_files.hpp"
 #include "gpu/gpu_renderer.hpp"
 
 namespace twinraster {
 namespace {
 
 [[noreturn]] void ThrowNoVulkan() {
-  throw GpuUnavailable("this build has no Vulkan (it was configured with -DTWINRASTER_VULKAN=OFF)");
+  throw GpuUnavailable("this build has no Vulkan: it was configured with -DTWINRASTER_VULKAN=OFF");
 }
 
 }  // namespace
@@ -47,6 +49,12 @@ std::string VulkanVersionText(std::uint32_t version) {
   return std::to_string(version >> 22 & 0x7Fu) + "." + std::to_string(version >> 12 & 0x3FFu) + "." +
          std::to_string(version & 0xFFFu);
 }
+
+// No loader to offer drivers to: files() and manifest() stay empty.
+ExtraDriverOffer::ExtraDriverOffer(bool) {}
+ExtraDriverOffer::~ExtraDriverOffer() = default;
+LavapipeAlone::LavapipeAlone() = default;
+LavapipeAlone::~LavapipeAlone() = default;
 
 }  // namespace gpu
 }  // namespace twinraster
