@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs twinraster's dependencies from Debian packages: what the program needs to build and run
-# (no argument), or that plus what the tests need (--tests). The names exist on Debian 12
+# (no argument), or that plus what the tests need (--tests); with --no-vulkan, none of the Vulkan
+# packages, for a build configured with -DTWINRASTER_VULKAN=OFF (docs/building.md). The names exist on Debian 12
 # (bookworm) and 13 (trixie) alike; clang and libclang-rt-dev are each release's default version.
 # Idempotent: packages already present are skipped, and `apt-get update` runs only when
 # something is missing (so it also works on a machine where it never ran).
@@ -33,11 +34,25 @@ test_packages=(
   clang-format                   # scripts/check-format.sh: the code as .clang-format writes it
   assimp-testmodels              # glTF files no one here wrote (docs/gltf-assets.md)
 )
-case "${1:-}" in
-  "") ;;
-  --tests) packages+=("${test_packages[@]}") ;;
-  *) echo "usage: scripts/setup.sh [--tests]" >&2; exit 2 ;;
-esac
+# What a build without Vulkan does without: Vulkan, glslang and the drivers, and Chromium, whose
+# Debian package depends on libvulkan1 (the browser tests are left out of such a run).
+vulkan_packages=(libvulkan-dev mesa-vulkan-drivers glslang-dev glslang-tools spirv-tools vulkan-validationlayers
+                 chromium chromium-driver python3-selenium)
+no_vulkan=false
+for argument in "$@"; do
+  case "$argument" in
+    --tests) packages+=("${test_packages[@]}") ;;
+    --no-vulkan) no_vulkan=true ;;
+    *) echo "usage: scripts/setup.sh [--tests] [--no-vulkan]" >&2; exit 2 ;;
+  esac
+done
+if $no_vulkan; then
+  for p in "${vulkan_packages[@]}"; do
+    for i in "${!packages[@]}"; do
+      if [ "${packages[i]}" = "$p" ]; then unset 'packages[i]'; fi
+    done
+  done
+fi
 
 missing=()
 for p in "${packages[@]}"; do

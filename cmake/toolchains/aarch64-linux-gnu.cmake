@@ -1,6 +1,6 @@
 # Cross-compiles twinraster for 64-bit ARM Linux on an x86-64 Debian machine, against Debian's
 # arm64 packages installed side by side (dpkg --add-architecture arm64) and, for a package that
-# does not co-install, an extracted copy in TWINRASTER_ARM64_SYSROOT. scripts/check-aarch64.sh
+# does not co-install, an extracted copy in TWINRASTER_ARM64_SYSROOT. .ci/check-aarch64.sh
 # sets this up and runs the result under qemu-aarch64-static.
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)

@@ -123,6 +123,10 @@ int main(int argc, char** argv) {
     std::cerr << "twinraster: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const GpuUnavailable& e) {
+    if (!VulkanInBuild()) {  // no device could ever be usable: say so in one line
+      std::cerr << "twinraster: " << e.what() << "; render --backend cpu draws without it\n";
+      return kExitNoVulkan;
+    }
     std::cerr << "twinraster: no usable Vulkan device: " << e.what()
               << "\n  (render --backend cpu works without one)\n";
     return kExitNoVulkan;

@@ -34,8 +34,8 @@ constexpr RasterRules kMesa25NoFma{
 constexpr std::string_view kDebian12Suite = "the whole suite on Debian 12 (scripts/test.sh, check-debian.sh bookworm)";
 constexpr std::string_view kDebian12Sse41 = "the suite's \"sse4.1 path:\" entries on Debian 12";
 constexpr std::string_view kDebian12Wide128 = "the 128-bit render test (lavapipe_paths_cli_test) on Debian 12";
-constexpr std::string_view kAarch64 = "scripts/check-aarch64.sh, a sample under qemu with Debian 12's arm64 lavapipe";
-constexpr std::string_view kBackport = "scripts/check-mesa25-bookworm.sh: every shipped scene on Debian 12's backport";
+constexpr std::string_view kAarch64 = ".ci/check-aarch64.sh, a sample under qemu with Debian 12's arm64 lavapipe";
+constexpr std::string_view kBackport = ".ci/check-mesa25-bookworm.sh: every shipped scene on Debian 12's backport";
 constexpr std::string_view kDebian13Suite = "the whole suite in a Debian 13 root (check-debian.sh trixie)";
 constexpr std::string_view kDebian13Sse41 = "the suite's \"sse4.1 path:\" entries in a Debian 13 root";
 constexpr std::array kKnown = {

@@ -246,6 +246,8 @@ void GpuRenderer::Impl::CopyOut(const DrawList& list) {
                       nullptr);
 }
 
+bool VulkanInBuild() { return true; }
+
 GpuRenderer::GpuRenderer(const GpuOptions& options) : impl_(std::make_unique<Impl>(options)) {}
 GpuRenderer::~GpuRenderer() = default;
 GpuRenderer::GpuRenderer(GpuRenderer&&) noexcept = default;

@@ -55,6 +55,10 @@ class GpuUnavailable : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Whether this build has the Vulkan renderer: false when configured with -DTWINRASTER_VULKAN=OFF,
+// where every GpuRenderer (and gpu::ListDevices) throws GpuUnavailable saying so (gpu/no_vulkan.cpp).
+bool VulkanInBuild();
+
 class GpuRenderer {
  public:
   // Creates the instance, device and pipelines; throws GpuUnavailable.

@@ -11,33 +11,6 @@
 
 using namespace twinraster;
 
-TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen scenes", "[bench][cli]") {
-  const test::TempDir dir;
-  const test::CliResult r = test::RunCli({"bench", "--runs", "1", "--only", "far-1e7", "--scenes",
-                                          test::SourcePath("scenes").string(), "--out", dir.path().string(), "--json"});
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["format"] == "twinraster.bench/2");
-  // Four methods, then the CPU twin and lavapipe with one thread and with every core.
-  REQUIRE(j["rows"].size() >= 6);
-  REQUIRE(j["rows"][0]["scene"] == "hard/far-1e7");
-  REQUIRE(j["summary"]["far_1e7_vertex_error_px"]["camera-relative"].get<double>() < 1.0 / 256);
-  for (const auto& row : j["rows"]) {
-    REQUIRE(row["frame_ms"].get<double>() > 0);
-    if (row["method"] == "cpu-twin" || row["method"] == "lavapipe") REQUIRE(row["image_error_px"] == 2);
-  }
-  const std::string csv = test::ReadFile(dir / "bench.csv");
-  REQUIRE(csv.rfind("scene,method,threads,", 0) == 0);
-  REQUIRE(std::count(csv.begin(), csv.end(), '\n') == 1 + static_cast<long>(j["rows"].size()));
-  const std::string svg = test::ReadFile(dir / "bench.svg");
-  REQUIRE(svg.rfind("<svg", 0) == 0);
-  REQUIRE(svg.find("<circle") != std::string::npos);
-  const auto file = nlohmann::json::parse(test::ReadFile(dir / "bench.json"));
-  REQUIRE(file["format"] == "twinraster.bench/2");
-  REQUIRE(file["rows"].size() == j["rows"].size());
-}
-
 TEST_CASE("bench --json keeps every summary key whatever ran: null where nothing was measured", "[bench][cli]") {
   const test::CliResult r = test::RunCli({"bench", "--runs", "1", "--only", "cgfs-scene", "--methods", "steps-f32",
                                           "--scenes", test::SourcePath("scenes").string(), "--json"});

@@ -4,7 +4,7 @@
 # add_subdirectory). Any failing step fails the test.
 # Run as: cmake -DCONSUMER_SOURCE=... -DCONSUMER_BUILD=... -DGENERATOR=... -DMAKE_PROGRAM=...
 #   -DCXX_COMPILER=... -DBUILD_TYPE=... -DCXX_FLAGS=... -DEXE_LINKER_FLAGS=...
-#   (-DPREFIX=... | -DTWINRASTER_SOURCE_DIR=... [-DWERROR=ON|OFF]) -DSCENE=... -DREFERENCE=... -DTWINRASTER_EXE=...
+#   (-DPREFIX=... | -DTWINRASTER_SOURCE_DIR=... [-DWERROR=ON|OFF] [-DVULKAN=ON|OFF]) -DSCENE=... -DREFERENCE=... -DTWINRASTER_EXE=...
 #   -P build_consumer.cmake
 foreach(var IN ITEMS CONSUMER_SOURCE CONSUMER_BUILD GENERATOR CXX_COMPILER SCENE REFERENCE TWINRASTER_EXE)
   if(NOT ${var})
@@ -30,6 +30,9 @@ elseif(TWINRASTER_SOURCE_DIR)
   list(APPEND configure_args "-DTWINRASTER_SOURCE_DIR=${TWINRASTER_SOURCE_DIR}")
   if(DEFINED WERROR)
     list(APPEND configure_args "-DTWINRASTER_WERROR=${WERROR}")  # twinraster's sources, as in the main build
+  endif()
+  if(DEFINED VULKAN)
+    list(APPEND configure_args "-DTWINRASTER_VULKAN=${VULKAN}")  # a build without Vulkan builds its consumer so
   endif()
 else()
   message(FATAL_ERROR "build_consumer: set -DPREFIX or -DTWINRASTER_SOURCE_DIR")

@@ -5,15 +5,15 @@
 # qemu-aarch64-static with Debian 12's arm64 lavapipe. Every scene must give 0 differing pixels
 # with the twin following its aarch64 rules. Needs root (dpkg, apt-get) and the network.
 #
-#   scripts/check-aarch64.sh            # the sample (CI)
-#   scripts/check-aarch64.sh --all      # every shipped scene, and the OBJ meshes
+#   .ci/check-aarch64.sh            # the sample (CI)
+#   .ci/check-aarch64.sh --all      # every shipped scene, and the OBJ meshes
 set -euo pipefail
 cd "$(dirname "$0")/.."
 all=false
 case "${1:-}" in
   "") ;;
   --all) all=true ;;
-  *) echo "usage: scripts/check-aarch64.sh [--all]" >&2; exit 2 ;;
+  *) echo "usage: .ci/check-aarch64.sh [--all]" >&2; exit 2 ;;
 esac
 if [ "$(id -u)" -ne 0 ]; then
   echo "check-aarch64: needs root (dpkg --add-architecture, apt-get)" >&2
@@ -80,7 +80,7 @@ status=0
 run render "${scenes[@]}" "${meshes[@]}" --backend both --json --quiet -o "$out" >>"$results" || status=$?
 run render "${scenes[@]}" --wireframe --backend both --json --quiet -o "$out/wireframe" >>"$results" || status=$?
 jobs=$((2 * ${#scenes[@]} + ${#meshes[@]}))
-/usr/bin/python3 scripts/check-twin-jobs.py "$results" --label check-aarch64 --jobs "$jobs" \
+/usr/bin/python3 .ci/check-twin-jobs.py "$results" --label check-aarch64 --jobs "$jobs" \
   --mesa 22.3.6 --llvm 15 --bits 128 --instruction-set NEON || exit 1
 if [ "$status" -ne 0 ]; then
   echo "check-aarch64: render exited $status" >&2

@@ -2,24 +2,29 @@
 # Proves the README's two commands on a fresh Debian release: makes a minimal root of RELEASE
 # (trixie = Debian 13, bookworm = Debian 12) with debootstrap, clones this repository's HEAD into
 # it, runs `bash scripts/demo.sh` and `bash scripts/test.sh` inside it as a newcomer would (on
-# bookworm, then scripts/check-mesa25-bookworm.sh: the backport's lavapipe against the twin), and
-# deletes the root again. Needs root (debootstrap, mount, chroot) and the network.
+# bookworm, then .ci/check-mesa25-bookworm.sh: the backport's lavapipe against the twin), and
+# deletes the root again. With --no-vulkan instead: installs the build and test packages but the
+# Vulkan ones (scripts/setup.sh --no-vulkan), checks that no libvulkan or glslang is there,
+# builds with -DTWINRASTER_VULKAN=OFF and runs that build's tests (docs/building.md, "Without
+# Vulkan"). Needs root (debootstrap, mount, chroot) and the network.
 #
-#   scripts/check-debian.sh trixie            # both README commands on Debian 13
-#   KEEP_ROOT=1 scripts/check-debian.sh trixie  # keep the root afterwards (say where)
+#   .ci/check-debian.sh trixie            # both README commands on Debian 13
+#   .ci/check-debian.sh bookworm --no-vulkan  # a build without Vulkan, where there is none
+#   KEEP_ROOT=1 .ci/check-debian.sh trixie  # keep the root afterwards (say where)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 release="${1:-}"
-case "$release" in
-  bookworm | trixie) ;;
-  *) echo "usage: scripts/check-debian.sh bookworm|trixie" >&2; exit 2 ;;
+mode="${2:-}"
+case "$release/$mode" in
+  bookworm/ | trixie/ | bookworm/--no-vulkan | trixie/--no-vulkan) ;;
+  *) echo "usage: .ci/check-debian.sh bookworm|trixie [--no-vulkan]" >&2; exit 2 ;;
 esac
 if [ "$(id -u)" -ne 0 ]; then
   echo "check-debian: needs root (debootstrap, mount, chroot)" >&2
   exit 2
 fi
-. scripts/debian-mirror.sh
+. .ci/debian-mirror.sh
 mirror="$(debian_mirror)"
 if [ -z "$mirror" ]; then
   echo "check-debian: no Debian archive in this machine's apt sources; set DEBIAN_MIRROR" >&2
@@ -78,9 +83,34 @@ fi
 git clone -q "$PWD" "$root/root/twinraster"
 rm -rf "$root/root/twinraster/.git"
 
+# The --no-vulkan run: every package but Vulkan's, proof that none came in, then the build
+# without Vulkan and its tests. The browser tests need Chromium, whose package depends on
+# libvulkan1: the only entries not run here (the other runs of CI run them).
+no_vulkan() {
+  step "bash scripts/setup.sh --tests --no-vulkan"
+  run "bash scripts/setup.sh --tests --no-vulkan"
+  step "no Vulkan in the root"
+  run "! dpkg-query -W -f='\${Package}\n' | grep -i -e vulkan -e glslang -e spirv -e chromium" ||
+    { echo "check-debian: a Vulkan package was installed" >&2; exit 1; }
+  run "! find / -xdev -name 'libvulkan*' | grep . && ! command -v glslangValidator" ||
+    { echo "check-debian: libvulkan or glslang is in the root" >&2; exit 1; }
+  step "configure and build with -DTWINRASTER_VULKAN=OFF"
+  run "cmake -S . -B build-novulkan -DTWINRASTER_VULKAN=OFF -DTWINRASTER_WERROR=ON -DTWINRASTER_BUILD_TESTS=ON \
+         -DCMAKE_BUILD_TYPE=Release >/dev/null && cmake --build build-novulkan --parallel 2"
+  run "./build-novulkan/bin/twinraster --version | tail -1"
+  step "the tests of a build without Vulkan"
+  run "cmake -DBUILD_DIR=\$PWD/build-novulkan -DSOURCE_DIR=\$PWD -P tests/check_test_lists.cmake"
+  run "ctest --test-dir build-novulkan --parallel 2 --output-on-failure -E '^Pages:'"
+  step "a build without Vulkan passed its tests on $release"
+}
+
 run() { chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
   /bin/bash -c "cd /root/twinraster && $1"; }
 step "$(run 'grep PRETTY_NAME /etc/os-release | cut -d= -f2')"
+if [ "$mode" = --no-vulkan ]; then
+  no_vulkan
+  exit 0
+fi
 step "bash scripts/demo.sh"
 run "bash scripts/demo.sh"
 run "test -s out/cgfs-transforms-gpu.png && test -s out/cgfs-transforms-cpu.png" ||
@@ -92,6 +122,6 @@ step "drivers tested: $(run "dpkg-query -W -f='\${Package} \${Version}; ' mesa-v
 step "both README commands passed on $release"
 if [ "$release" = bookworm ]; then
   # Debian 12's backport of Mesa 25.0.7 (LLVM 15): the twin's rows for it, against that driver.
-  step "bash scripts/check-mesa25-bookworm.sh"
-  run "bash scripts/check-mesa25-bookworm.sh"
+  step "bash .ci/check-mesa25-bookworm.sh"
+  run "bash .ci/check-mesa25-bookworm.sh"
 fi

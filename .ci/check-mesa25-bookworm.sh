@@ -4,12 +4,12 @@
 # and sse4.1 (GALLIUM_OVERRIDE_CPU_CAPS). It downloads the backport's lavapipe and the newer libdrm
 # it needs into a work folder with apt's own lists kept there (nothing is installed), and runs
 # `render --backend both` on every shipped scene, filled and in wireframe, and the OBJ meshes:
-# every job must be bit-exact (scripts/check-twin-jobs.py). At 128 bits lavapipe may crash on a
+# every job must be bit-exact (.ci/check-twin-jobs.py). At 128 bits lavapipe may crash on a
 # few scenes (docs/mesa-128bit-crash.md). Run on Debian 12 (CI runs it inside check-debian.sh's
 # bookworm root) after building build/bin/twinraster; needs the network, not root.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-. scripts/debian-mirror.sh
+. .ci/debian-mirror.sh
 step() { echo "=== check-mesa25-bookworm: $1 ($(date -u +%H:%M:%S))"; }
 exe="$PWD/build/bin/twinraster"
 [ -x "$exe" ] || { echo "check-mesa25-bookworm: build $exe first" >&2; exit 2; }
@@ -58,7 +58,7 @@ while read -r label bits isa crashes variable; do
       status=1
     fi
   done
-  /usr/bin/python3 scripts/check-twin-jobs.py "$results" </dev/null --label "Mesa 25.0.7 (LLVM 15), $label" --jobs "$jobs" \
+  /usr/bin/python3 .ci/check-twin-jobs.py "$results" </dev/null --label "Mesa 25.0.7 (LLVM 15), $label" --jobs "$jobs" \
     --mesa 25.0.7 --llvm 15 --bits "$bits" --instruction-set "$isa" --max-crashes "$crashes" || status=1
 done <<'PATHS'
 avx2-256 256 AVX2+FMA 0 -
