@@ -13,8 +13,6 @@
 #include "cli/progress.hpp"
 #include "cli/scene_choice_options.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
 #include "image/png_file.hpp"
 #include "image/thumbnail.hpp"
 #include "report/batch_page.hpp"
@@ -23,6 +21,8 @@
 #include "report/render_outputs.hpp"
 #include "run/run_scene.hpp"
 #include "scene/scene_error.hpp"
+#include "twin_rules/lavapipe_path.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -76,7 +76,7 @@ void ResolveOptions(RenderArguments& a) {
   if (a.run.rules != run::Rules::kBook) {
     // A device asked for decides the twin's rules; with no device to open, its name must say which.
     if (a.run.backends == run::Backends::kCpu && !a.device.empty())
-      cpu::ChooseTwinRulesByName(a.device, cpu::DetectCpuPath());
+      twin_rules::ChooseTwinRulesByName(a.device, twin_rules::DetectCpuPath());
     return;
   }
   if (a.verify)
@@ -512,8 +512,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
                   ->add_option("--threads", a->threads,
                                "the CPU twin's threads, at most one per 16 rows (default: every core for a\n"
                                "frame of over " +
-                                   std::to_string(kOneThreadPixels) + " pixels or over " +
-                                   std::to_string(kOneThreadTriangles) +
+                                   std::to_string(cpu::kOneThreadPixels) + " pixels or over " +
+                                   std::to_string(cpu::kOneThreadTriangles) +
                                    " triangles, counting every\n"
                                    "instance's; one for a smaller frame, where another costs more than it saves)")
                   ->type_name("N"));
