@@ -1,7 +1,7 @@
 // Stage 2: outcodes, trivial accept/reject, Sutherland-Hodgman against the Vulkan view volume.
-#include "cpu/clipping.hpp"
+#include "cpu/lavapipe/clipping.hpp"
 
-#include "cpu/geometry.hpp"
+#include "cpu/chunk_assembly.hpp"
 #include "support/catch.hpp"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Stages 4 and 5: snapping to 1/256 pixel, edge functions and the top-left rule.
-#include "cpu/triangle_setup.hpp"
+#include "cpu/lavapipe/setup.hpp"
 
-#include "cpu/rasterize.hpp"
+#include "cpu/lavapipe/coverage.hpp"
 #include "support/catch.hpp"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Stage 3: the viewport transform, with fma for shader vertices and without for clipped ones.
-#include "cpu/viewport_transform.hpp"
+#include "cpu/lavapipe/viewport.hpp"
 
 #include "support/catch.hpp"
 
