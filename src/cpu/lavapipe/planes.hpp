@@ -2,7 +2,8 @@
 // set up, like depth, as a plane through c·(1/w) at the three vertices, and 1/w gets a plane of its
 // own; at a pixel the colour is plane_c · (1 / plane_1/w) (ColourAt, cpu/packets.hpp). This file
 // builds lavapipe's planes, evaluated with two fused multiply-adds at the pixel's integer indices;
-// SwiftShader's are built from its snapped vertices (cpu/swiftshader/planes.hpp).
+// SwiftShader's are built from its snapped vertices (cpu/swiftshader/planes.hpp). It does not
+// evaluate them per pixel (ColourAt and fragment_ops.hpp do).
 #pragma once
 
 #include "cpu/lavapipe/clipping.hpp"
