@@ -11,6 +11,7 @@
 #include "cpu/packets.hpp"
 #include "cpu/swiftshader/coverage.hpp"
 #include "cpu/swiftshader/plane.hpp"
+#include "cpu/swiftshader/setup.hpp"
 #include "cpu/swiftshader/viewport.hpp"
 
 #include <glm/vec3.hpp>

@@ -8,40 +8,19 @@
 // float area, so a sliver whose float area has the wrong sign gets its ends swapped and draws
 // nothing, as on SwiftShader. The twin computes each end exactly in 64-bit integers, where
 // SwiftShader steps a 32-bit DDA: the two agree while an edge spans less than 2^27 sixteenths of a
-// pixel, which clipping ensures for every point but one snapped from a NaN (INT32_MIN). It does not clip or snap
-// (clipping.hpp, viewport.hpp), and lavapipe's edge functions are
-// cpu/lavapipe/setup.hpp's.
+// pixel, which clipping ensures for every point but one snapped from a NaN (INT32_MIN). It does not
+// clip or snap (clipping.hpp, viewport.hpp) or set up (setup.hpp), and lavapipe's edge functions
+// are cpu/lavapipe/setup.hpp's.
 #pragma once
 
 #include "cpu/packets.hpp"
-#include "cpu/swiftshader/plane.hpp"
 #include "cpu/swiftshader/viewport.hpp"
 
 #include <cstdint>
 
 namespace twinraster::cpu {
 
-// One primitive for SwiftShader's rules: a triangle or a clipped polygon of one, or a wireframe
-// line's clipped quad. Its points live in a pool beside it (SwiftShaderScratch::outline_points).
-struct OutlineSetup {
-  std::uint32_t first = 0;  // its points are the pool's [first, first + count)
-  std::uint8_t count = 0;
-  bool d = true;        // the winding: edges run p[i] -> p[i+1] when true, p[i+1] -> p[i] when false
-  bool smooth = false;  // Gouraud: `colour` is the index of its AnchoredColourPlanes
-  PixelRect bounds;     // pixels that may be covered, inside the framebuffer
-  AnchoredPlane depth;
-  std::uint32_t colour = 0;  // RGBA8, or the index of its colour planes
-};
-
-// The rows and columns the polygon's outline can cover, clamped to the framebuffer. False when it
-// covers no row.
-bool OutlineBounds(const SnappedPoint* points, int count, int width, int height, PixelRect& bounds);
-
 // The covered span of row py.
 Span OutlineSpan(const SnappedPoint* points, int count, bool d, int width, int py);
-
-// SwiftShader's winding for the triangle of shader vertices a, b, c: the float area of their
-// snapped positions, negated when an odd number of them have a negative w (-0 counts), is > 0.
-bool OutlineWinding(const SnappedVertex& a, const SnappedVertex& b, const SnappedVertex& c);
 
 }  // namespace twinraster::cpu
