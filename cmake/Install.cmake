@@ -19,7 +19,7 @@ install(TARGETS twinraster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # twinrasterTargets.cmake and loads twinrasterGpuTargets.cmake for COMPONENTS gpu. run and bench
 # are in the second set because they link gpu.
 install(TARGETS twinraster_base twinraster_scene twinraster_chain twinraster_image twinraster_files
-                twinraster_book twinraster_cpu twinraster_truth twinraster_verify twinraster_library
+                twinraster_book twinraster_cpu twinraster_twin_rules twinraster_truth twinraster_verify twinraster_library
         EXPORT twinrasterTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS twinraster_gpu twinraster_run twinraster_bench
@@ -32,7 +32,7 @@ endforeach()
 # Headers keep their stage folder, under the root the targets' INSTALL_INTERFACE names
 # (include/twinraster/scene/scene_loader.hpp is #include "scene/scene_loader.hpp"). cli/ is the
 # executable's, not a library's.
-foreach(stage IN ITEMS base scene chain image files book cpu gpu truth verify run bench)
+foreach(stage IN ITEMS base scene chain image files book cpu twin_rules gpu truth verify run bench)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/${stage} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/twinraster
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()

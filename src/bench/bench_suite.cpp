@@ -6,12 +6,12 @@
 #include "bench/vertex_methods.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "run/backend_draws.hpp"
 #include "scene/scene_loader.hpp"
 #include "truth/truth_renderer.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -161,13 +161,13 @@ SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
 // far its colours are from the truth's, triangle by triangle (which triangle a pixel shows found
 // with `rules`, the rules of the device that drew it).
 void MeasureImage(BenchRow& row, const std::filesystem::path& file, const SceneTruth& t, const Image& image,
-                  const ClipPositions* clip, unsigned cores, const cpu::RasterRules& rules = {}) {
+                  const cpu::ClipPositions* clip, unsigned cores, const cpu::RasterRules& rules = {}) {
   row.image_error_px = CompareImages(image, t.surfaces.image).differing_pixels;
   row.z_fighting_px = ZFighting(file, image, t.surfaces.image);
   if (!t.surface_list) return;
-  const CpuOptions options{.threads = cores, .rules = rules};
+  const cpu::CpuOptions options{.threads = cores, .rules = rules};
   const Image surfaces =
-      clip ? RasterizeClipSpace(*t.surface_list, *clip, options) : RenderOnCpu(*t.surface_list, options);
+      clip ? cpu::RasterizeClipSpace(*t.surface_list, *clip, options) : cpu::RenderOnCpu(*t.surface_list, options);
   const ColourError error = SameSurfaceColourError(image, surfaces, t.surfaces);
   row.colour_error = error.max_channel;
   row.colour_pixels = error.pixels;
@@ -190,12 +190,13 @@ BenchRow MethodRow(VertexMethod method, const BenchRow& base, const std::filesys
   BenchRow row = base;
   row.method = std::string(MethodName(method));
   row.threads = cores;
-  ClipPositions clip;
+  cpu::ClipPositions clip;
   row.vertex_ms = MedianMs(runs, [&] { clip = TransformVertices(t.scene, t.list, method); });
   row.vertex_error_px = VertexErrorPixels(clip, t.exact, t.list.width, t.list.height);
   Image image;
-  row.frame_ms = MedianMs(
-      runs, [&] { image = RasterizeClipSpace(t.list, TransformVertices(t.scene, t.list, method), CpuOptions{cores}); });
+  row.frame_ms = MedianMs(runs, [&] {
+    image = cpu::RasterizeClipSpace(t.list, TransformVertices(t.scene, t.list, method), cpu::CpuOptions{cores});
+  });
   MeasureImage(row, file, t, image, &clip, cores);
   return row;
 }
@@ -267,7 +268,7 @@ BenchResult RunBench(const BenchOptions& options) {
         if (selected(r.method)) add_row(RendererRow(r, threads, base, file, truth, options.runs, cores));
       }
     }
-    const cpu::RasterRules swiftshader_rules = cpu::SwiftShaderRow().rules;
+    const cpu::RasterRules swiftshader_rules = twin_rules::SwiftShaderRow().rules;
     for (const Renderer& r : {Renderer{"cpu-twin-swiftshader", swiftshader_rules},
                               Renderer{"swiftshader", swiftshader_rules, swiftshader ? &*swiftshader : nullptr}}) {
       if (selected(r.method)) add_row(RendererRow(r, cores, base, file, truth, options.runs, cores));

@@ -8,7 +8,7 @@
 
 namespace twinraster {
 
-double VertexErrorPixels(const ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
+double VertexErrorPixels(const cpu::ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
                          std::uint32_t height) {
   double worst = 0;
   for (std::size_t d = 0; d < truth.size(); ++d) {

@@ -15,7 +15,7 @@ namespace twinraster {
 // Max over every vertex the truth has inside the clip volume (only those reach the framebuffer as
 // themselves) of the distance in pixels between its framebuffer position from `clip` and the
 // truth's. Returns 0 when no vertex is inside.
-double VertexErrorPixels(const ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
+double VertexErrorPixels(const cpu::ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
                          std::uint32_t height);
 
 // A lit image's colours against the truth's, triangle by triangle: over the pixels where the

@@ -4,14 +4,14 @@
 #include "base/usage_error.hpp"
 #include "bench/bench_suite.hpp"
 #include "chain/draw_list.hpp"
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
 #include "files/png_file.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "run/backend_draws.hpp"
 #include "run/judge_image.hpp"
 #include "scene/scene_loader.hpp"
+#include "twin_rules/lavapipe_path.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <sys/resource.h>
 
@@ -92,7 +92,8 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   GpuRenderer gpu;
   GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   // The twin copies the lavapipe that draws here, as `render` chooses it.
-  const cpu::RasterRules twin_rules = cpu::ChooseTwinRules(run::FactsOf(gpu.Device()), cpu::DetectCpuPath()).rules;
+  const cpu::RasterRules twin_rules =
+      twin_rules::ChooseTwinRules(run::FactsOf(gpu.Device()), twin_rules::DetectCpuPath()).rules;
   ScaleResult result;
   result.machine = MachineDescription(gpu.DeviceName());
   result.runs = options.runs;

@@ -87,8 +87,8 @@ std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method)
   return matrices;
 }
 
-ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method) {
-  ClipPositions clip(list.draws.size());
+cpu::ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method) {
+  cpu::ClipPositions clip(list.draws.size());
   if (method == VertexMethod::kStepsFloat) {
     const glm::mat4 projection = ToFloat(ProjectionMatrix(scene.viewport, scene.canvas, scene.depth));
     for (std::size_t d = 0; d < list.draws.size(); ++d) {

@@ -30,6 +30,6 @@ std::string_view MethodName(VertexMethod method);  // "compose-f64", "compose-f3
 // The per-instance float matrix F of the methods that have one (1, 2, 4); method 3 has none.
 std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method);
 
-ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method);
+cpu::ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method);
 
 }  // namespace twinraster

@@ -122,8 +122,8 @@ CommandRun AddRenderCommand(CLI::App& app) {
                   ->add_option("--threads", a->threads,
                                "the CPU twin's threads, at most one per 16 rows (default: every core for a\n"
                                "frame of over " +
-                                   std::to_string(kOneThreadPixels) + " pixels or over " +
-                                   std::to_string(kOneThreadTriangles) +
+                                   std::to_string(cpu::kOneThreadPixels) + " pixels or over " +
+                                   std::to_string(cpu::kOneThreadTriangles) +
                                    " triangles, counting every\n"
                                    "instance's; one for a smaller frame, where another costs more than it saves)")
                   ->type_name("N"));

@@ -3,8 +3,8 @@
 #include "base/usage_error.hpp"
 #include "cli/io_arguments.hpp"
 #include "cli/output_paths.hpp"
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
+#include "twin_rules/lavapipe_path.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -25,7 +25,7 @@ void ResolveOptions(RenderArguments& a) {
   if (a.run.rules != run::Rules::kBook) {
     // A device asked for decides the twin's rules; with no device to open, its name must say which.
     if (a.run.backends == run::Backends::kCpu && !a.device.empty())
-      cpu::ChooseTwinRulesByName(a.device, cpu::DetectCpuPath());
+      twin_rules::ChooseTwinRulesByName(a.device, twin_rules::DetectCpuPath());
     return;
   }
   if (a.verify)

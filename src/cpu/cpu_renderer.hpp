@@ -1,5 +1,6 @@
 // The CPU twin: renders a DrawList on the CPU following one Vulkan's rasterization rules (lavapipe's
-// or SwiftShader's, cpu/twin_rules.hpp), so that the image equals that device's bit for bit.
+// or SwiftShader's, chosen by twin_rules/twin_rules.hpp), so that the image equals that device's
+// bit for bit. It does not choose the rules, and it does not read a device.
 #pragma once
 
 #include "chain/draw_list.hpp"
@@ -11,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cpu {
 
 // Left to choose (CpuOptions::threads 0), the twin draws a frame of at most this many pixels and
 // this many triangles (every draw's mesh, before clipping) on one thread, and a larger one on
@@ -24,14 +25,15 @@ inline constexpr std::uint64_t kOneThreadTriangles = 4096;
 // The image is identical for any thread count.
 struct CpuOptions {
   unsigned threads = 0;
-  // Triangles (and vertices) set up per chunk; 0: the default (geometry.hpp's ChunkBudget). The
+  // Triangles (and vertices) set up per chunk; 0: the default (chunk_assembly.hpp's ChunkBudget). The
   // image is identical for any value; tests use small ones to exercise the streaming.
   std::size_t chunk_triangles = 0;
   // Skip triangles hidden in a 16x16 tile by what is already drawn (cpu/depth_tiles.hpp). Exact,
   // so the image is the same without; off only to measure what it saves and to test that.
   bool depth_tiles = true;
-  // Which device's arithmetic to copy (cpu/twin_rules.hpp chooses it for a device and CPU path).
-  cpu::RasterRules rules{};
+  // Which device's arithmetic to copy (twin_rules/twin_rules.hpp chooses
+  // it for a device and CPU path).
+  RasterRules rules{};
 };
 
 // The twin as a device reports itself: the subPixelPrecisionBits of the device its rules copy (8
@@ -41,7 +43,7 @@ struct TwinLimits {
   int subpixel_bits = 0;
   bool strict_lines = true;
 };
-TwinLimits TwinDeviceLimits(const cpu::RasterRules& rules = {});
+TwinLimits TwinDeviceLimits(const RasterRules& rules = {});
 
 // setup = vertex processing + clipping + triangle setup, draw = clearing and rasterization,
 // readback = building the Image.
@@ -65,4 +67,4 @@ using ClipPositions = std::vector<std::vector<glm::vec4>>;
 Image RasterizeClipSpace(const DrawList& list, const ClipPositions& clip, const CpuOptions& options = {},
                          CpuTimings* timings = nullptr);
 
-}  // namespace twinraster
+}  // namespace twinraster::cpu

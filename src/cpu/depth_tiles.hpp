@@ -7,9 +7,10 @@
 // between they are stale, which stays safe because stored depths only ever move nearer.
 #pragma once
 
-#include "cpu/anchored_plane.hpp"
 #include "cpu/fragment_ops.hpp"
-#include "cpu/rasterize.hpp"
+#include "cpu/lavapipe/plane.hpp"
+#include "cpu/packets.hpp"
+#include "cpu/swiftshader/plane.hpp"
 
 #include <cstdint>
 #include <vector>

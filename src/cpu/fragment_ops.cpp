@@ -1,6 +1,7 @@
 #include "cpu/fragment_ops.hpp"
 
 #include "cpu/lighting.hpp"
+#include "cpu/platform.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,13 +60,10 @@ template <bool kFused>
   }
 }
 
-// On x86-64 a second copy of the fused row is built for CPUs with FMA (chosen at load time), where
-// fmaf is one instruction; the portable copy's fmaf is a library call, just as exact, only slower.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("fma", "default")))
-#endif
-void ShadeRowFused(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx,
-                   float dzdy, bool greater, std::uint32_t fill) {
+// On x86-64 a second copy of the fused row is built for CPUs with FMA (TWINRASTER_FMA_CLONES).
+TWINRASTER_FMA_CLONES
+void ShadeRowFused(float* depth, std::uint8_t* rgba, int begin, int end, float py, float a0, float dzdx, float dzdy,
+                   bool greater, std::uint32_t fill) {
   ShadeRowBody<true>(depth, rgba, begin, end, py, a0, dzdx, dzdy, greater, fill);
 }
 
@@ -102,9 +100,7 @@ template <class Plane>
   }
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("fma", "default")))
-#endif
+TWINRASTER_FMA_CLONES
 void ShadeSmoothRow(float* depth, std::uint8_t* rgba, int begin, int end, float py, const DepthPlane& plane,
                     const ColourPlanes& colour, bool greater) {
   ShadeSmoothRowBody(depth, rgba, begin, end, py, plane, colour, greater);

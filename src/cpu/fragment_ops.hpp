@@ -6,9 +6,10 @@
 // output Image itself.
 #pragma once
 
-#include "cpu/colour_planes.hpp"
-#include "cpu/depth_plane.hpp"
-#include "cpu/rasterize.hpp"
+#include "cpu/lavapipe/plane.hpp"
+#include "cpu/lavapipe/planes.hpp"
+#include "cpu/packets.hpp"
+#include "cpu/swiftshader/plane.hpp"
 #include "image/frame_memory.hpp"
 #include "image/image.hpp"
 

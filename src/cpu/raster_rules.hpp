@@ -2,7 +2,7 @@
 // for lavapipe the few operations whose arithmetic differs between Mesa releases and between the
 // CPU paths Mesa's JIT takes (docs/lavapipe-paths.md and docs/swiftshader-rules.md say which, with
 // the source's file and line). The defaults are Mesa 22.3.6 on an x86-64 CPU with AVX2 and FMA.
-// It does not say which device a rule row was proven on: twin_rules.hpp does.
+// It does not say which device a rule row was proven on: twin_rules/twin_rules.hpp does.
 #pragma once
 
 #include <cstdint>

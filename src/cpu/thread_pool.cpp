@@ -1,5 +1,7 @@
 #include "cpu/thread_pool.hpp"
 
+#include "cpu/platform.hpp"
+
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -9,10 +11,6 @@
 #include <thread>
 #include <vector>
 
-#if defined(__x86_64__) || defined(__SSE2__)
-#include <immintrin.h>
-#endif
-
 namespace twinraster::cpu {
 
 namespace {
@@ -20,13 +18,6 @@ namespace {
 // Set while a thread runs parts (and always in pool workers), so that nested calls run inline
 // instead of waiting for themselves.
 thread_local bool t_inside_parts = false;
-
-// Pause inside a spin loop (lets the other hyper-thread run and saves power).
-inline void CpuRelax() {
-#if defined(__x86_64__) || defined(__SSE2__)
-  _mm_pause();
-#endif
-}
 
 // How long a thread spins before it sleeps: a wake-up through the kernel costs tens of
 // microseconds, more than one stage of a chunk often takes.

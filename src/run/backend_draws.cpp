@@ -13,7 +13,7 @@ namespace {
 // The twin and the book report themselves as the twin does: the subpixel bits of the device its
 // rules copy (the book: lavapipe's), strict lines.
 verify::DrawnBy TwinDrawnBy(const cpu::RasterRules& rules) {
-  const TwinLimits limits = TwinDeviceLimits(rules);
+  const cpu::TwinLimits limits = cpu::TwinDeviceLimits(rules);
   return {"CPU twin", {.subpixel_bits = limits.subpixel_bits, .strict_lines = limits.strict_lines}};
 }
 
@@ -65,7 +65,7 @@ BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIden
   return run;
 }
 
-cpu::DeviceFacts FactsOf(const DeviceIdentity& device) {
+twin_rules::DeviceFacts FactsOf(const DeviceIdentity& device) {
   return {.name = device.name,
           .driver_info = device.driver_info,
           .driver_id = device.driver_id,
@@ -76,11 +76,11 @@ cpu::DeviceFacts FactsOf(const DeviceIdentity& device) {
 BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads) {
   BackendRun run;
   run.record.backend = Backend::kCpu;
-  CpuOptions options;
+  cpu::CpuOptions options;
   options.threads = threads;
   options.rules = rules;
-  CpuTimings t;
-  run.image = RenderOnCpu(list, options, &t);
+  cpu::CpuTimings t;
+  run.image = cpu::RenderOnCpu(list, options, &t);
   run.drawn_by = TwinDrawnBy(rules);
   run.record.threads = t.threads;
   run.record.detail = "CPU twin, " + std::to_string(t.threads) + (t.threads == 1 ? " thread" : " threads");

@@ -6,11 +6,11 @@
 
 #include "chain/draw_list.hpp"
 #include "cpu/raster_rules.hpp"
-#include "cpu/twin_rules.hpp"
 #include "gpu/isolated_gpu.hpp"
 #include "image/image.hpp"
 #include "run/run_record.hpp"
 #include "scene/scene.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "verify/drawn_by.hpp"
 
 #include <optional>
@@ -48,8 +48,8 @@ BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& s
 // The same for a list submitted earlier (GpuSession::Submit).
 BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIdentity& device);
 
-// What the twin's choice of rules reads of a device (cpu/twin_rules.hpp).
-cpu::DeviceFacts FactsOf(const DeviceIdentity& device);
+// What the twin's choice of rules reads of a device (twin_rules/twin_rules.hpp).
+twin_rules::DeviceFacts FactsOf(const DeviceIdentity& device);
 
 // The twin, with the arithmetic of the lavapipe it copies.
 BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads);

@@ -4,9 +4,9 @@
 // (run_report/ does).
 #pragma once
 
-#include "cpu/twin_rules.hpp"
 #include "image/image_compare.hpp"
 #include "run/verdict.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "verify/verification.hpp"
 
 #include <cstddef>
@@ -57,7 +57,7 @@ struct RunRecord {
   std::size_t instances = 0, triangles = 0;
   double load_ms = 0;
   std::vector<BackendRecord> backends;  // in drawing order: gpu first
-  std::optional<cpu::TwinRules> twin;
+  std::optional<twin_rules::TwinRules> twin;
   std::optional<Comparison> comparison;  // gpu against cpu, when both drew
   std::string diff;                      // the diff image's file, when one was written
   // The verifier's judgement of the `judged` backend's image; its per-pixel classes are dropped

@@ -1,8 +1,8 @@
 #include "run/run_scene.hpp"
 
-#include "cpu/lavapipe_path.hpp"
-#include "cpu/twin_rules.hpp"
 #include "run/judge_image.hpp"
+#include "twin_rules/lavapipe_path.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 namespace twinraster::run {
 
@@ -26,8 +26,8 @@ RunRecord SceneRecord(const Scene& scene, const std::string& source, const RunOp
 
 // The twin with the rules of the device that drew (with no device, lavapipe's default release).
 BackendRun Twin(const DrawList& list, const DeviceIdentity& device, const RunOptions& options,
-                std::optional<cpu::TwinRules>& rules) {
-  rules = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
+                std::optional<twin_rules::TwinRules>& rules) {
+  rules = twin_rules::ChooseTwinRules(FactsOf(device), twin_rules::DetectCpuPath());
   return DrawOnTwin(list, rules->rules, options.threads);
 }
 
@@ -41,7 +41,7 @@ void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gp
   gpu.Submit(list);
   const DeviceIdentity expected = gpu.KnownDevice();
   std::optional<BackendRun> twin;
-  std::optional<cpu::TwinRules> twin_rules;
+  std::optional<twin_rules::TwinRules> twin_rules;
   if (options.backends == Backends::kBoth && !expected.name.empty()) {
     try {
       Say(status, "cpu: drawing...");
@@ -54,7 +54,7 @@ void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gp
   DeviceIdentity device;
   runs.push_back(CollectFromGpu(gpu, record.scene, device));
   if (options.backends == Backends::kGpu) return;
-  record.twin = cpu::ChooseTwinRules(FactsOf(device), cpu::DetectCpuPath());
+  record.twin = twin_rules::ChooseTwinRules(FactsOf(device), twin_rules::DetectCpuPath());
   if (!twin || !(twin_rules->rules == record.twin->rules)) {
     Say(status, "cpu: drawing...");
     twin = DrawOnTwin(list, record.twin->rules, options.threads);
@@ -80,7 +80,7 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
   if (options.device.empty()) {
     runs.push_back(Twin(list, DeviceIdentity{}, options, record.twin));
   } else {
-    record.twin = cpu::ChooseTwinRulesByName(options.device, cpu::DetectCpuPath());
+    record.twin = twin_rules::ChooseTwinRulesByName(options.device, twin_rules::DetectCpuPath());
     runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));
   }
   return runs;

@@ -24,7 +24,7 @@ struct RunOptions {
   bool map = false;              // keep the judgement's map (RunResult::map)
   unsigned threads = 0;          // the twin's; 0: as CpuOptions::threads says
   // The device asked for (--device). With Backends::kCpu no device is opened, and the twin's rules
-  // are chosen by this name (cpu::ChooseTwinRulesByName; a name it has none for throws UsageError).
+  // are chosen by this name (twin_rules::ChooseTwinRulesByName; a name it has none for throws UsageError).
   std::string device;
 };
 

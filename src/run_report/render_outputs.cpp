@@ -31,16 +31,16 @@ Json BackendJson(const run::BackendRecord* b) {
             {"isolation", b->isolation_ms}}}};
 }
 
-Json TwinJson(const std::optional<cpu::TwinRules>& twin) {
+Json TwinJson(const std::optional<twin_rules::TwinRules>& twin) {
   if (!twin) return nullptr;
-  const auto release_field = [&](const std::string cpu::LavapipeRelease::*field) {
+  const auto release_field = [&](const std::string twin_rules::LavapipeRelease::*field) {
     return twin->release ? Json((*twin->release).*field) : Json(nullptr);
   };
   return {{"exact", twin->exact},
           {"rasterizer", twin->rules.rasterizer == cpu::Rasterizer::kSwiftShader ? "swiftshader" : "lavapipe"},
           {"text", twin->text},
-          {"mesa", release_field(&cpu::LavapipeRelease::mesa)},
-          {"llvm", release_field(&cpu::LavapipeRelease::llvm)},
+          {"mesa", release_field(&twin_rules::LavapipeRelease::mesa)},
+          {"llvm", release_field(&twin_rules::LavapipeRelease::llvm)},
           {"cpu_path", twin->path.Text()},
           {"instruction_set", twin->path.InstructionSet()},
           {"vector_bits", twin->release ? twin->release->vector_bits : twin->path.vector_bits}};

@@ -7,7 +7,7 @@
 
 namespace twinraster::truth {
 
-// The edge function of edge a -> b at p, in the twin's convention (cpu/triangle_setup.hpp, window
+// The edge function of edge a -> b at p, in the twin's convention (cpu/lavapipe/setup.hpp, window
 // y down): E = (a.y - b.y)(a.x - p.x) - (a.x - b.x)(a.y - p.y). E(v0, v1, v2) is twice the signed
 // area, and for a positive area all three edge functions are > 0 inside.
 struct EdgeValue {

@@ -1,5 +1,5 @@
 // The truth's clipping stage: Sutherland-Hodgman in double against the twin's view volume
-// (cpu/clipping.hpp: with a depth attachment there is no guard band), -w <= x <= w,
+// (cpu/lavapipe/clipping.hpp: with a depth attachment there is no guard band), -w <= x <= w,
 // -w <= y <= w, 0 <= z <= w. Nothing is rounded to float.
 #pragma once
 

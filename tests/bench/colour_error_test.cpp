@@ -103,7 +103,7 @@ TEST_CASE("SurfaceList numbers each draw's triangles after the earlier draws', a
   const std::optional<DrawList> ids = SurfaceList(list);
   REQUIRE(ids.has_value());
   CHECK_FALSE(ids->lighting.has_value());
-  const Image shown = RenderOnCpu(*ids);
+  const Image shown = cpu::RenderOnCpu(*ids);
   const ExactLight light(scene);
   const TruthImage truth = RenderTruthSurfaces(list, ExactClipSpace(scene), &light);
   std::uint64_t same = 0, covered = 0, per_surface[5] = {0, 0, 0, 0, 0};
@@ -128,9 +128,9 @@ TEST_CASE("The colour error sees a wrong light: more ambient is off by what it a
   const DrawList list = BuildDrawList(scene);
   const ExactLight light(scene);
   const TruthImage truth = RenderTruthSurfaces(list, ExactClipSpace(scene), &light);
-  const Image surfaces = RenderOnCpu(*SurfaceList(list));
-  const ColourError right = SameSurfaceColourError(RenderOnCpu(list), surfaces, truth);
-  const ColourError wrong = SameSurfaceColourError(RenderOnCpu(BuildDrawList(brighter)), surfaces, truth);
+  const Image surfaces = cpu::RenderOnCpu(*SurfaceList(list));
+  const ColourError right = SameSurfaceColourError(cpu::RenderOnCpu(list), surfaces, truth);
+  const ColourError wrong = SameSurfaceColourError(cpu::RenderOnCpu(BuildDrawList(brighter)), surfaces, truth);
   CHECK(right.max_channel <= 1);
   CHECK(wrong.max_channel >= 25);
   CHECK(wrong.max_channel <= 27);

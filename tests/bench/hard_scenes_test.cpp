@@ -23,7 +23,7 @@ Rendered RenderBoth(const std::filesystem::path& file) {
   const Scene scene = LoadScene(file);
   const DrawList list = BuildDrawList(scene);
   const ExactLight light(scene);
-  return {RenderOnCpu(list), RenderTruth(list, ExactClipSpace(scene), &light)};
+  return {cpu::RenderOnCpu(list), RenderTruth(list, ExactClipSpace(scene), &light)};
 }
 
 // Blue (the far plate) where the truth shows red (the near plate).
@@ -99,7 +99,7 @@ TEST_CASE("Lit hard scenes: the twin's colours stay within 1 of the truth's tria
     INFO(file.string());
     const DrawList list = BuildDrawList(scene);
     const ExactLight light(scene);
-    const ColourError error = SameSurfaceColourError(RenderOnCpu(list), RenderOnCpu(*SurfaceList(list)),
+    const ColourError error = SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*SurfaceList(list)),
                                                      RenderTruthSurfaces(list, ExactClipSpace(scene), &light));
     CHECK(error.pixels > 5000);  // the comparison covers most of each picture
     CHECK(error.max_channel <= 1);

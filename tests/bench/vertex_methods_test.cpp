@@ -23,8 +23,8 @@ TEST_CASE("compose-f64 through RasterizeClipSpace makes exactly the renderers' i
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
     if (list.width * list.height > 400'000) continue;  // the smaller scenes are enough here
-    const Image direct = RenderOnCpu(list);
-    const Image via_clip = RasterizeClipSpace(list, TransformVertices(scene, list, VertexMethod::kComposeDouble));
+    const Image direct = cpu::RenderOnCpu(list);
+    const Image via_clip = cpu::RasterizeClipSpace(list, TransformVertices(scene, list, VertexMethod::kComposeDouble));
     REQUIRE(direct.rgba == via_clip.rgba);
     ++judged;
   }
@@ -81,8 +81,8 @@ TEST_CASE("Vertex error grows with the distance from the origin for float compos
 TEST_CASE("RasterizeClipSpace refuses positions that do not match the draw list", "[methods]") {
   const Scene scene = Load("scenes/cgfs-scene.json");
   const DrawList list = BuildDrawList(scene);
-  ClipPositions clip = TransformVertices(scene, list, VertexMethod::kComposeDouble);
+  cpu::ClipPositions clip = TransformVertices(scene, list, VertexMethod::kComposeDouble);
   clip[0].pop_back();
-  REQUIRE_THROWS_AS(RasterizeClipSpace(list, clip), std::invalid_argument);
-  REQUIRE_THROWS_AS(RasterizeClipSpace(list, {}), std::invalid_argument);
+  REQUIRE_THROWS_AS(cpu::RasterizeClipSpace(list, clip), std::invalid_argument);
+  REQUIRE_THROWS_AS(cpu::RasterizeClipSpace(list, {}), std::invalid_argument);
 }

@@ -2,9 +2,9 @@
 // process: the 128-bit path (LP_NATIVE_VECTOR_WIDTH=128), where lavapipe may crash, and the no-SSE
 // path (GALLIUM_OVERRIDE_CPU_CAPS=nosse), for which the twin has no bit-exact rules and must say so
 // rather than compare.
-#include "cpu/twin_rules.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -27,16 +27,17 @@ std::vector<nlohmann::json> JsonLines(const std::string& out) {
 
 // Whether the twin's table has a row for this Mesa release and LLVM major version on any path.
 bool KnownRelease(const std::string& mesa, const std::string& major) {
-  return std::any_of(cpu::KnownLavapipes().begin(), cpu::KnownLavapipes().end(),
-                     [&](const cpu::KnownLavapipe& k) { return k.mesa == mesa && k.llvm_major == major; });
+  return std::any_of(twin_rules::KnownLavapipes().begin(), twin_rules::KnownLavapipes().end(),
+                     [&](const twin_rules::KnownLavapipe& k) { return k.mesa == mesa && k.llvm_major == major; });
 }
 
 // Whether the table names this release's 128-bit path as unproven, with a reason.
 bool Unproven128(const std::string& mesa, const std::string& major, const std::string& instruction_set) {
-  return std::any_of(
-      cpu::UnprovenLavapipes().begin(), cpu::UnprovenLavapipes().end(), [&](const cpu::UnprovenLavapipe& u) {
-        return u.mesa == mesa && u.llvm_major == major && u.instruction_set == instruction_set && u.vector_bits == 128;
-      });
+  return std::any_of(twin_rules::UnprovenLavapipes().begin(), twin_rules::UnprovenLavapipes().end(),
+                     [&](const twin_rules::UnprovenLavapipe& u) {
+                       return u.mesa == mesa && u.llvm_major == major && u.instruction_set == instruction_set &&
+                              u.vector_bits == 128;
+                     });
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Stage 6 and 7: the depth plane, its evaluation, and the LESS depth test.
-#include "cpu/depth_plane.hpp"
 #include "cpu/fragment_ops.hpp"
-#include "cpu/triangle_setup.hpp"
+#include "cpu/lavapipe/plane.hpp"
+#include "cpu/lavapipe/setup.hpp"
 #include "support/catch.hpp"
 
 #include <cmath>

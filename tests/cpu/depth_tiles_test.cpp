@@ -3,7 +3,7 @@
 #include "cpu/depth_tiles.hpp"
 
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/triangle_setup.hpp"
+#include "cpu/lavapipe/setup.hpp"
 #include "support/catch.hpp"
 #include "test_scenes.hpp"
 
@@ -82,9 +82,9 @@ TEST_CASE("depth tiles skip hidden triangles and change no pixel", "[cpu][render
   for (const unsigned threads : {1u, 2u, 3u}) {
     for (const std::size_t chunk : {12u, 7u, 1000u}) {
       INFO("threads " << threads << ", chunk " << chunk);
-      CpuTimings with_timings, without_timings;
-      const Image with = RenderOnCpu(column, CpuOptions{threads, chunk, true}, &with_timings);
-      const Image without = RenderOnCpu(column, CpuOptions{threads, chunk, false}, &without_timings);
+      cpu::CpuTimings with_timings, without_timings;
+      const Image with = cpu::RenderOnCpu(column, cpu::CpuOptions{threads, chunk, true}, &with_timings);
+      const Image without = cpu::RenderOnCpu(column, cpu::CpuOptions{threads, chunk, false}, &without_timings);
       CHECK(with.rgba == without.rgba);
       CHECK(without_timings.hidden == 0);
       if (chunk < 1000) CHECK(with_timings.hidden > 200);  // most of 39 cubes' 12 triangles

@@ -1,9 +1,9 @@
 // The whole CPU renderer: watertightness, closed meshes, colours, draw order, thread-count
 // independence, and agreement with a pixel-by-pixel evaluation of the same stages.
-#include "cpu/coverage.hpp"
+#include "cpu/chunk_assembly.hpp"
+#include "cpu/coverage_counts.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/fragment_ops.hpp"
-#include "cpu/geometry.hpp"
 #include "support/catch.hpp"
 #include "test_scenes.hpp"
 
@@ -146,7 +146,7 @@ TEST_CASE("colours: the triangle's colour with alpha 255 over the background", "
   mesh.colours = {{200, 100, 50}, {200, 100, 50}};
   list.meshes.push_back(mesh);
   list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
-  const Image image = RenderOnCpu(list);
+  const Image image = cpu::RenderOnCpu(list);
   REQUIRE(image.width == 8);
   REQUIRE(image.height == 8);
   for (std::uint32_t y = 0; y < 8; ++y) {
@@ -175,14 +175,14 @@ TEST_CASE("depth ties keep the earlier draw (LESS), nearer later draws win", "[c
   list.meshes.push_back(mesh);
   list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
   list.draws.push_back(DrawCall{1, glm::mat4(1.0f)});  // same depth: rejected everywhere
-  Image image = RenderOnCpu(list);
+  Image image = cpu::RenderOnCpu(list);
   CHECK(image.pixel(5, 5)[0] == 255);
   CHECK(image.pixel(5, 5)[1] == 0);
 
   glm::mat4 nearer(1.0f);
   nearer[3][2] = -0.25f;  // z' = z - 0.25
   list.draws.push_back(DrawCall{1, nearer});
-  image = RenderOnCpu(list);
+  image = cpu::RenderOnCpu(list);
   CHECK(image.pixel(5, 5)[0] == 0);
   CHECK(image.pixel(5, 5)[1] == 255);
 }
@@ -193,7 +193,7 @@ TEST_CASE("reversed Z: nearer still wins, ties keep the earlier draw", "[cpu][re
   const DrawList standard = CubeScene(160, 120, {back, front});
   DrawList reversed = CubeScene(160, 120, {back, front}, /*reversed_z=*/true);
   REQUIRE(reversed.reversed_z);
-  const Image a = RenderOnCpu(standard), b = RenderOnCpu(reversed);
+  const Image a = cpu::RenderOnCpu(standard), b = cpu::RenderOnCpu(reversed);
   std::size_t differing = 0;
   for (std::size_t i = 0; i < a.rgba.size(); i += 4)
     differing += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
@@ -211,23 +211,23 @@ TEST_CASE("reversed Z: nearer still wins, ties keep the earlier draw", "[cpu][re
   mesh.colours = {{255, 0, 0}, {0, 255, 0}};
   list.meshes.push_back(mesh);
   list.draws.push_back(DrawCall{0, glm::mat4(1.0f)});
-  const Image tie = RenderOnCpu(list);
+  const Image tie = cpu::RenderOnCpu(list);
   CHECK(tie.pixel(5, 5)[0] == 255);
   CHECK(tie.pixel(5, 5)[1] == 0);
 }
 
 TEST_CASE("the image is the same for any thread count", "[cpu][render][threads]") {
   const DrawList list = RandomTriangles(173, 131, 300, 7u);
-  const Image one = RenderOnCpu(list, CpuOptions{1});
+  const Image one = cpu::RenderOnCpu(list, cpu::CpuOptions{1});
   for (unsigned threads : {2u, 3u, 7u, 0u}) {
     INFO("threads " << threads);
-    const Image other = RenderOnCpu(list, CpuOptions{threads});
+    const Image other = cpu::RenderOnCpu(list, cpu::CpuOptions{threads});
     CHECK(other.rgba == one.rgba);
   }
   const DrawList cubes = CubeScene(600, 600, {{{-1.5, 0, 7}}, {{1.25, 2, 7.5}}});
-  const Image cubes_one = RenderOnCpu(cubes, CpuOptions{1});
-  CHECK(RenderOnCpu(cubes, CpuOptions{2}).rgba == cubes_one.rgba);
-  CHECK(RenderOnCpu(cubes, CpuOptions{3}).rgba == cubes_one.rgba);
+  const Image cubes_one = cpu::RenderOnCpu(cubes, cpu::CpuOptions{1});
+  CHECK(cpu::RenderOnCpu(cubes, cpu::CpuOptions{2}).rgba == cubes_one.rgba);
+  CHECK(cpu::RenderOnCpu(cubes, cpu::CpuOptions{3}).rgba == cubes_one.rgba);
 }
 
 TEST_CASE(
@@ -236,12 +236,12 @@ TEST_CASE(
     "[cpu][render][threads]") {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const auto used = [](const DrawList& list, unsigned threads = 0) {
-    CpuTimings t;
-    RenderOnCpu(list, CpuOptions{threads}, &t);
+    cpu::CpuTimings t;
+    cpu::RenderOnCpu(list, cpu::CpuOptions{threads}, &t);
     return t.threads;
   };
-  CHECK(kOneThreadPixels == 1024 * 1024);  // as render --help and docs/commands.md say
-  CHECK(kOneThreadTriangles == 4096);
+  CHECK(cpu::kOneThreadPixels == 1024 * 1024);  // as render --help and docs/commands.md say
+  CHECK(cpu::kOneThreadTriangles == 4096);
   CHECK(used(Fan(1024, 1024, {0, 0}, 0.5f, 12)) == 1);
   CHECK(used(Fan(1024, 1025, {0, 0}, 0.5f, 12)) == std::min(cores, 65u));  // 65 bands of 16 rows
   CHECK(used(Fan(64, 64, {0, 0}, 0.5f, 4096)) == 1);
@@ -255,12 +255,12 @@ TEST_CASE("the image is the same for any chunking of the geometry, big draws sli
   const DrawList list = RandomTriangles(173, 131, 300, 11u);
   const Image whole = RenderPixelByPixel(list);
   const DrawList cubes = CubeScene(200, 150, {{{-1.5, 0, 7}}, {{1.25, 2, 7.5}}, {{0, -1, 6}}, {{0.5, 0.5, 9}}});
-  const Image cubes_whole = RenderOnCpu(cubes, CpuOptions{1, 1u << 20});
+  const Image cubes_whole = cpu::RenderOnCpu(cubes, cpu::CpuOptions{1, 1u << 20});
   for (const std::size_t chunk : {1u, 5u, 12u, 13u, 100u, 299u, 1000u}) {
     for (const unsigned threads : {1u, 2u, 3u}) {
       INFO("chunk " << chunk << ", threads " << threads);
-      CHECK(RenderOnCpu(list, CpuOptions{threads, chunk}).rgba == whole.rgba);
-      CHECK(RenderOnCpu(cubes, CpuOptions{threads, chunk}).rgba == cubes_whole.rgba);
+      CHECK(cpu::RenderOnCpu(list, cpu::CpuOptions{threads, chunk}).rgba == whole.rgba);
+      CHECK(cpu::RenderOnCpu(cubes, cpu::CpuOptions{threads, chunk}).rgba == cubes_whole.rgba);
     }
   }
 }
@@ -294,12 +294,12 @@ TEST_CASE("PlanChunks: whole draws within the budgets, bigger draws sliced, vert
 TEST_CASE("spans, bands and threads give what pixel-by-pixel evaluation gives", "[cpu][render]") {
   for (unsigned seed : {1u, 2u, 3u}) {
     const DrawList list = RandomTriangles(120, 90, 200, seed);
-    CpuTimings timings;
-    const Image fast = RenderOnCpu(list, CpuOptions{2}, &timings);
+    cpu::CpuTimings timings;
+    const Image fast = cpu::RenderOnCpu(list, cpu::CpuOptions{2}, &timings);
     CHECK(fast.rgba == RenderPixelByPixel(list).rgba);
     DrawList reversed = list;
     reversed.reversed_z = true;
-    CHECK(RenderOnCpu(reversed, CpuOptions{3}).rgba == RenderPixelByPixel(reversed).rgba);
+    CHECK(cpu::RenderOnCpu(reversed, cpu::CpuOptions{3}).rgba == RenderPixelByPixel(reversed).rgba);
     CHECK(timings.setup_ms >= 0.0);
     CHECK(timings.draw_ms > 0.0);
   }
@@ -327,25 +327,25 @@ TEST_CASE("narrow triangles, scanned pixel by pixel, give what the span walker's
   }
   list.meshes = {mesh};
   list.draws = {DrawCall{0, glm::mat4(1.0f)}};
-  CHECK(RenderOnCpu(list, CpuOptions{2}).rgba == RenderPixelByPixel(list).rgba);
+  CHECK(cpu::RenderOnCpu(list, cpu::CpuOptions{2}).rgba == RenderPixelByPixel(list).rgba);
 }
 
 TEST_CASE("malformed draw lists are refused", "[cpu][render]") {
   DrawList list = Fan(16, 16, {0.0f, 0.0f}, 0.5f, 5);
   DrawList bad = list;
   bad.width = 0;
-  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  CHECK_THROWS_AS(cpu::RenderOnCpu(bad), std::invalid_argument);
   bad = list;
   bad.height = 16385;
-  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  CHECK_THROWS_AS(cpu::RenderOnCpu(bad), std::invalid_argument);
   bad = list;
   bad.draws[0].mesh = 1;
-  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  CHECK_THROWS_AS(cpu::RenderOnCpu(bad), std::invalid_argument);
   bad = list;
   bad.meshes[0].triangles[2][1] = 99;
-  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
+  CHECK_THROWS_AS(cpu::RenderOnCpu(bad), std::invalid_argument);
   bad = list;
   bad.meshes[0].colours.pop_back();
-  CHECK_THROWS_AS(RenderOnCpu(bad), std::invalid_argument);
-  CHECK_NOTHROW(RenderOnCpu(list));
+  CHECK_THROWS_AS(cpu::RenderOnCpu(bad), std::invalid_argument);
+  CHECK_NOTHROW(cpu::RenderOnCpu(list));
 }

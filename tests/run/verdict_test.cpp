@@ -34,7 +34,7 @@ TEST_CASE("VerdictOf: errors, crashes, violations and broken promises fail, and 
   CHECK(run::VerdictOf(BothDrawn(5)) == run::Verdict::kDiffering);  // nothing judged the difference
 
   run::RunRecord promised = BothDrawn(5);
-  promised.twin = cpu::TwinRules{};
+  promised.twin = twin_rules::TwinRules{};
   promised.twin->exact = true;
   promised.verification = Judged(0, 40);
   CHECK(run::VerdictOf(promised) == run::Verdict::kDiffering);  // the twin copies this driver exactly

@@ -55,7 +55,7 @@ TEST_CASE("Verdicts: errors, crashes and violations fail, and failures sort firs
   crashed.backends[0].problem = "SIGSEGV in the Vulkan driver";
   crashed.comparison.reset();
   run::RunRecord promised = Drawn("promised", 5, true);
-  promised.twin = cpu::TwinRules{};
+  promised.twin = twin_rules::TwinRules{};
   promised.twin->exact = true;
   const std::vector<run::RunRecord> records = {
       Drawn("same", 0, std::nullopt),  Drawn("allowed", 7, true), Drawn("wrong", 7, false), error, Decided(crashed),

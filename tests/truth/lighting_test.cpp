@@ -190,7 +190,7 @@ TEST_CASE("Truth light against the twin: random lit scenes agree within 1 triang
     const Scene scene = test::RandomLitScene(seed);
     const DrawList list = BuildDrawList(scene);
     const ExactLight light(scene);
-    const ColourError error = SameSurfaceColourError(RenderOnCpu(list), RenderOnCpu(*SurfaceList(list)),
+    const ColourError error = SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*SurfaceList(list)),
                                                      RenderTruthSurfaces(list, ExactClipSpace(scene), &light));
     INFO("seed " << seed);
     CHECK(error.max_channel <= 1);

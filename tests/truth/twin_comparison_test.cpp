@@ -23,7 +23,7 @@ TEST_CASE("Truth vs CPU twin: at most a few edge pixels differ on the chapter's 
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
     const Image truth = RenderTruth(list, ExactClipSpace(scene));
-    const Image twin = RenderOnCpu(list, CpuOptions{1});
+    const Image twin = cpu::RenderOnCpu(list, cpu::CpuOptions{1});
     REQUIRE(truth.width == twin.width);
     REQUIRE(truth.height == twin.height);
 

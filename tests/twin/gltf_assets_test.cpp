@@ -5,7 +5,6 @@
 // aspect ratio meets a canvas of another shape.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "run/backend_draws.hpp"
@@ -13,6 +12,7 @@
 #include "scene/scene_error.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "twin_support.hpp"
 #include "verify/verifier.hpp"
 
@@ -114,8 +114,8 @@ TEST_CASE("Every glTF file of assimp-testmodels is in docs/gltf-assets.md, refus
 TEST_CASE(
     "Every assimp-testmodels glTF file that renders: lavapipe == twin, SwiftShader == twin, and verify passes it") {
   const std::map<std::string, AssetRow> table = AssetTable();
-  const cpu::TwinRules swiftshader =
-      cpu::ChooseTwinRules(run::FactsOf(test::SharedSwiftShader().Device()), cpu::DetectCpuPath());
+  const twin_rules::TwinRules swiftshader =
+      twin_rules::ChooseTwinRules(run::FactsOf(test::SharedSwiftShader().Device()), twin_rules::DetectCpuPath());
   REQUIRE(swiftshader.exact);
   std::size_t judged = 0;
   for (const std::string& file : ShippedFiles()) {
@@ -128,9 +128,9 @@ TEST_CASE(
     REQUIRE(lavapipe.Equal());
     test::RequireNoValidationMessages();
 
-    CpuOptions options;
+    cpu::CpuOptions options;
     options.rules = swiftshader.rules;
-    const Comparison swift = CompareImages(test::SharedSwiftShader().Render(list), RenderOnCpu(list, options));
+    const Comparison swift = CompareImages(test::SharedSwiftShader().Render(list), cpu::RenderOnCpu(list, options));
     INFO("SwiftShader: " << swift.differing_pixels << " differing pixels");
     REQUIRE(swift.Equal());
     REQUIRE(test::SharedSwiftShader().ValidationMessages().empty());

@@ -68,13 +68,13 @@ TEST_CASE("Equal depths: instanced draws keep instance order, then triangle orde
   // Drawn in reverse instance order the picture changes: the order is what the test checks.
   DrawList reversed = list;
   std::reverse(reversed.draws.begin(), reversed.draws.end());
-  REQUIRE_FALSE(CompareImages(RenderOnCpu(reversed, test::TwinOptions()), r.cpu).Equal());
+  REQUIRE_FALSE(CompareImages(cpu::RenderOnCpu(reversed, test::TwinOptions()), r.cpu).Equal());
   test::RequireNoValidationMessages();
 }
 
 TEST_CASE("Instanced and per-draw F give identical pixels, with ties and split buffers", "[twin][instancing]") {
   const DrawList list = CoincidentCubes();
-  const Image cpu = RenderOnCpu(list, test::TwinOptions());
+  const Image cpu = cpu::RenderOnCpu(list, test::TwinOptions());
   GpuRenderer split(
       GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways, .instances_per_buffer = 7});
   GpuTimings timings;
@@ -99,6 +99,6 @@ TEST_CASE("kAuto instances long runs only, and still matches the twin", "[twin][
   const Image image = automatic.Render(list, &timings);
   REQUIRE(timings.instanced_draws == list.draws.size());
   REQUIRE(timings.draw_commands == 2);
-  REQUIRE(CompareImages(image, RenderOnCpu(list, test::TwinOptions())).Equal());
+  REQUIRE(CompareImages(image, cpu::RenderOnCpu(list, test::TwinOptions())).Equal());
   REQUIRE(automatic.ValidationMessages().empty());
 }

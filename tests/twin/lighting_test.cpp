@@ -111,7 +111,7 @@ TEST_CASE("The normal matrix lights a stretched surface right where M_Model itse
   const test::TwinResult r = test::RenderTwins(right);
   INFO(r.Describe());
   REQUIRE(r.Equal());
-  const Image wrong_image = RenderOnCpu(wrong, test::TwinOptions(CpuOptions{1}));
+  const Image wrong_image = cpu::RenderOnCpu(wrong, test::TwinOptions(cpu::CpuOptions{1}));
   // The centre pixel: 255 · 2/√5 = 228.1 with the inverse transpose, 255 · 1/√5 = 114.0 with M.
   CHECK(int{RedAt(r.cpu, 32, 32)} == 228);
   CHECK(int{RedAt(wrong_image, 32, 32)} == 114);
@@ -175,6 +175,6 @@ TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by ra
   // And the light is really there: the same cubes unlit are another picture.
   scene.lighting.reset();
   scene.models[0].shading = Shading::kUnlit;
-  REQUIRE(CompareImages(r.cpu, RenderOnCpu(BuildDrawList(scene), test::TwinOptions())).differing_pixels > 10000);
+  REQUIRE(CompareImages(r.cpu, cpu::RenderOnCpu(BuildDrawList(scene), test::TwinOptions())).differing_pixels > 10000);
   test::RequireNoValidationMessages();
 }

@@ -88,8 +88,8 @@ void RequireLavapipeOnNamedPath() {
   for (const char* file : {"scenes/lit-mixed.json", "scenes/catlike-grid.json"}) {
     const DrawList list = BuildDrawList(LoadScene(SourcePath(file)));
     const Image gpu = SharedGpu().Render(list);
-    like_fused += CompareImages(gpu, RenderOnCpu(list, CpuOptions{.rules = fused})).Equal();
-    like_separate += CompareImages(gpu, RenderOnCpu(list, CpuOptions{.rules = separate})).Equal();
+    like_fused += CompareImages(gpu, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = fused})).Equal();
+    like_separate += CompareImages(gpu, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = separate})).Equal();
     ++scenes;
   }
   INFO(like_fused << " of " << scenes << " scenes as the twin draws them fused, " << like_separate << " separate");

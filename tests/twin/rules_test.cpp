@@ -33,13 +33,13 @@ constexpr RuleShown kRulesShown[] = {
 Image RenderScene(const char* file, bool wireframe, const cpu::RasterRules& rules) {
   Scene s = LoadScene(test::SourcePath(file));
   s.wireframe = wireframe;
-  return RenderOnCpu(BuildDrawList(s), CpuOptions{.rules = rules});
+  return cpu::RenderOnCpu(BuildDrawList(s), cpu::CpuOptions{.rules = rules});
 }
 
 }  // namespace
 
 TEST_CASE("The twin's rules are those of this device and CPU path", "[twin][rules]") {
-  const cpu::TwinRules& twin = test::SharedTwinRules();
+  const twin_rules::TwinRules& twin = test::SharedTwinRules();
   INFO(twin.text);
   REQUIRE(twin.exact);
   // lavapipe really drew on the path the run names (the device and its pictures say so) ...

@@ -5,7 +5,7 @@
 // rasterizer as a whole are each shown to change pixels, so leaving them out would show.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
+#include "cpu/platform.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image_compare.hpp"
 #include "random_scene.hpp"
@@ -16,13 +16,10 @@
 #include "support/image_counts.hpp"
 #include "support/lit_scene.hpp"
 #include "support/test_support.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "twin_support.hpp"
 
 #include <glm/vec3.hpp>
-
-#if defined(__x86_64__)
-#include <xmmintrin.h>
-#endif
 
 #include <filesystem>
 #include <memory>
@@ -36,12 +33,12 @@ namespace {
 
 GpuRenderer& SwiftShader() { return test::SharedSwiftShader(); }
 
-cpu::TwinRules SwiftShaderRules() {
-  return cpu::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), cpu::DetectCpuPath());
+twin_rules::TwinRules SwiftShaderRules() {
+  return twin_rules::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), twin_rules::DetectCpuPath());
 }
 
-CpuOptions Twin(CpuOptions options = {}) {
-  const cpu::TwinRules twin = SwiftShaderRules();
+cpu::CpuOptions Twin(cpu::CpuOptions options = {}) {
+  const twin_rules::TwinRules twin = SwiftShaderRules();
   if (!twin.exact) throw std::runtime_error("no SwiftShader rules here: " + twin.text);
   options.rules = twin.rules;
   return options;
@@ -55,8 +52,8 @@ struct Pair {
 // SwiftShader's image and the twin's; the twin's again in chunks of 24 triangles on 2 threads
 // (depth tiles refreshed between chunks) must not change.
 Pair RenderPair(const DrawList& list) {
-  Pair p{SwiftShader().Render(list), RenderOnCpu(list, Twin()), {}};
-  if (RenderOnCpu(list, Twin(CpuOptions{.threads = 2, .chunk_triangles = 24})).rgba != p.cpu.rgba) {
+  Pair p{SwiftShader().Render(list), cpu::RenderOnCpu(list, Twin()), {}};
+  if (cpu::RenderOnCpu(list, Twin(cpu::CpuOptions{.threads = 2, .chunk_triangles = 24})).rgba != p.cpu.rgba) {
     throw std::runtime_error("the twin's SwiftShader image changed when drawn in chunks of 24 triangles");
   }
   p.comparison = CompareImages(p.gpu, p.cpu);
@@ -188,28 +185,28 @@ DrawList DenormalDepths() {
 
 TEST_CASE("SwiftShader: the twin's rules are chosen from what the device reports", "[twin][swiftshader]") {
   const DeviceIdentity& d = SwiftShader().Device();
-  const cpu::TwinRules twin = SwiftShaderRules();
+  const twin_rules::TwinRules twin = SwiftShaderRules();
   INFO(d.name << ": " << twin.text);
   REQUIRE(twin.exact);
   CHECK(twin.rules.rasterizer == cpu::Rasterizer::kSwiftShader);
   CHECK(twin.rules.flush_denormals);
   CHECK_FALSE(twin.rules.fused_multiply_add);
-  CHECK(TwinDeviceLimits(twin.rules).subpixel_bits == int(d.subpixel_bits));
+  CHECK(cpu::TwinDeviceLimits(twin.rules).subpixel_bits == int(d.subpixel_bits));
   // What would make it another SwiftShader: each is named, none gets rules.
-  const cpu::DeviceFacts facts = run::FactsOf(d);
-  cpu::DeviceFacts llvm = facts, upstream = facts, newer = facts;
+  const twin_rules::DeviceFacts facts = run::FactsOf(d);
+  twin_rules::DeviceFacts llvm = facts, upstream = facts, newer = facts;
   llvm.name = "SwiftShader Device (LLVM 10.0.0)";
   upstream.subpixel_bits = 8;
   newer.driver_version = (5u << 22) | 1;
-  for (const cpu::DeviceFacts& other : {llvm, upstream, newer}) {
-    const cpu::TwinRules rules = cpu::ChooseTwinRules(other, cpu::DetectCpuPath());
+  for (const twin_rules::DeviceFacts& other : {llvm, upstream, newer}) {
+    const twin_rules::TwinRules rules = twin_rules::ChooseTwinRules(other, twin_rules::DetectCpuPath());
     INFO(rules.text);
     CHECK_FALSE(rules.exact);
     CHECK(rules.text.starts_with("no bit-exact rules for " + other.name));
   }
-  cpu::CpuPath without_sse41 = cpu::DetectCpuPath();
+  twin_rules::CpuPath without_sse41 = twin_rules::DetectCpuPath();
   without_sse41.cpuid_sse4_1 = false;
-  CHECK_FALSE(cpu::ChooseTwinRules(facts, without_sse41).exact);
+  CHECK_FALSE(twin_rules::ChooseTwinRules(facts, without_sse41).exact);
 }
 
 TEST_CASE("SwiftShader: every shipped scene and mesh, filled and in wireframe: GPU image == twin image",
@@ -244,7 +241,7 @@ TEST_CASE("SwiftShader: the million-instance scenes at 480x270, filled and in wi
       INFO(file.string() << (wireframe ? " --wireframe" : ""));
       scene.wireframe = wireframe;
       const DrawList list = BuildDrawList(scene);
-      const Comparison c = CompareImages(SwiftShader().Render(list), RenderOnCpu(list, Twin()));
+      const Comparison c = CompareImages(SwiftShader().Render(list), cpu::RenderOnCpu(list, Twin()));
       INFO(c.differing_pixels << " differing pixels");
       CHECK(c.Equal());
     }
@@ -343,15 +340,13 @@ TEST_CASE("SwiftShader: denormals as zero, and its rasterizer as a whole, change
   cpu::RasterRules keeps_denormals = rules;
   keeps_denormals.flush_denormals = false;
   const Image gpu = SwiftShader().Render(denormal);
-  CHECK(CompareImages(gpu, RenderOnCpu(denormal, CpuOptions{.rules = rules})).Equal());
-  CHECK_FALSE(CompareImages(gpu, RenderOnCpu(denormal, CpuOptions{.rules = keeps_denormals})).Equal());
+  CHECK(CompareImages(gpu, cpu::RenderOnCpu(denormal, cpu::CpuOptions{.rules = rules})).Equal());
+  CHECK_FALSE(CompareImages(gpu, cpu::RenderOnCpu(denormal, cpu::CpuOptions{.rules = keeps_denormals})).Equal());
   CHECK(test::CountNotColour(gpu, {200, 0, 0}) < test::CountNotColour(gpu, {0, 0, 200}));  // red shows, blue does not
-#if defined(__x86_64__)
   // The twin sets denormals as zero for its own work only: the caller's MXCSR is as it was.
-  const unsigned mxcsr = _mm_getcsr();
-  RenderOnCpu(denormal, CpuOptions{.threads = 2, .rules = rules});
-  CHECK(_mm_getcsr() == mxcsr);
-#endif
+  const unsigned mxcsr = cpu::FloatControlWord();
+  cpu::RenderOnCpu(denormal, cpu::CpuOptions{.threads = 2, .rules = rules});
+  CHECK(cpu::FloatControlWord() == mxcsr);
   // SwiftShader's rasterizer against lavapipe's, on scenes of every kind.
   cpu::RasterRules lavapipe = rules;
   lavapipe.rasterizer = cpu::Rasterizer::kLavapipe;
@@ -360,8 +355,8 @@ TEST_CASE("SwiftShader: denormals as zero, and its rasterizer as a whole, change
       INFO(file << (wireframe ? " --wireframe" : ""));
       const DrawList list = BuildDrawList(Shipped(test::SourcePath(file), wireframe));
       const Image device = SwiftShader().Render(list);
-      CHECK(CompareImages(device, RenderOnCpu(list, CpuOptions{.rules = rules})).Equal());
-      CHECK(CompareImages(device, RenderOnCpu(list, CpuOptions{.rules = lavapipe})).differing_pixels > 0);
+      CHECK(CompareImages(device, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = rules})).Equal());
+      CHECK(CompareImages(device, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = lavapipe})).differing_pixels > 0);
     }
   }
   RequireNoValidationMessages();

@@ -46,7 +46,7 @@ TEST_CASE("The million-instance scenes at 480x270, filled and in wireframe: GPU 
       GpuTimings timings;
       const Image gpu_image = gpu.Render(list, &timings);
       REQUIRE(timings.instanced_draws == list.draws.size());
-      const Image cpu_image = RenderOnCpu(list, test::TwinOptions());
+      const Image cpu_image = cpu::RenderOnCpu(list, test::TwinOptions());
       const Comparison c = CompareImages(gpu_image, cpu_image);
       INFO(c.differing_pixels << " differing pixels");
       REQUIRE(c.Equal());

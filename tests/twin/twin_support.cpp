@@ -39,16 +39,16 @@ GpuRenderer& SharedSwiftShader() {
   return *gpu;
 }
 
-const cpu::TwinRules& SharedTwinRules() {
-  static const cpu::TwinRules rules = [] {
+const twin_rules::TwinRules& SharedTwinRules() {
+  static const twin_rules::TwinRules rules = [] {
     const DeviceIdentity& device = SharedGpu().Device();
-    return cpu::ChooseTwinRules(run::FactsOf(device), cpu::DetectCpuPath());
+    return twin_rules::ChooseTwinRules(run::FactsOf(device), twin_rules::DetectCpuPath());
   }();
   return rules;
 }
 
-CpuOptions TwinOptions(CpuOptions options) {
-  const cpu::TwinRules& twin = SharedTwinRules();
+cpu::CpuOptions TwinOptions(cpu::CpuOptions options) {
+  const twin_rules::TwinRules& twin = SharedTwinRules();
   if (!twin.exact) throw std::runtime_error("the twin cannot be compared here: " + twin.text);
   options.rules = twin.rules;
   return options;
@@ -58,10 +58,10 @@ TwinResult RenderTwins(const DrawList& list) {
   TwinResult r;
   r.gpu = SharedGpu(gpu::Instancing::kNever).Render(list);
   r.gpu_instanced = SharedGpu(gpu::Instancing::kAlways).Render(list);
-  r.cpu = RenderOnCpu(list, TwinOptions());
+  r.cpu = cpu::RenderOnCpu(list, TwinOptions());
   // Again in chunks of 24 triangles, so the depth tiles are refreshed (and skip hidden triangles)
   // between chunks even in a small scene: that must change nothing.
-  if (RenderOnCpu(list, TwinOptions(CpuOptions{.chunk_triangles = 24})).rgba != r.cpu.rgba) {
+  if (cpu::RenderOnCpu(list, TwinOptions(cpu::CpuOptions{.chunk_triangles = 24})).rgba != r.cpu.rgba) {
     throw std::runtime_error("the twin's image changed when rendered in chunks of 24 triangles");
   }
   r.comparison = CompareImages(r.gpu, r.cpu);

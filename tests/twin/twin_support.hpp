@@ -4,10 +4,10 @@
 
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/image.hpp"
 #include "image/image_compare.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <string>
 
@@ -32,12 +32,12 @@ struct TwinResult {
 GpuRenderer& SharedSwiftShader();
 
 // The rules the twin follows against SharedGpu's device on this machine's CPU path, chosen as
-// render chooses them (cpu/twin_rules.hpp).
-const cpu::TwinRules& SharedTwinRules();
+// render chooses them (twin_rules/twin_rules.hpp).
+const twin_rules::TwinRules& SharedTwinRules();
 
 // `options` with those rules. Throws (failing the test, never skipping it) when the twin has no
 // bit-exact rules for this lavapipe: a GPU == CPU test proves nothing then.
-CpuOptions TwinOptions(CpuOptions options = {});
+cpu::CpuOptions TwinOptions(cpu::CpuOptions options = {});
 
 TwinResult RenderTwins(const DrawList& list);
 

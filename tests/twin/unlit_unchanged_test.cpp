@@ -57,7 +57,7 @@ TEST_CASE("Unlit scenes render byte for byte as they did before lighting existed
         INFO(name);
         const Scene scene = LoadScene(file);
         REQUIRE_FALSE(scene.lighting.has_value());
-        CHECK(test::ImageHash(RenderOnCpu(BuildDrawList(scene))) == hash);
+        CHECK(test::ImageHash(cpu::RenderOnCpu(BuildDrawList(scene))) == hash);
       });
   REQUIRE(checked == before.size());  // every recorded scene is still shipped, and was checked
 }

@@ -40,7 +40,7 @@ Coverage CountCoverage(std::uint32_t w, std::uint32_t h, const DrawMesh& mesh, c
     one.meshes = {single};
     one.draws = {DrawCall{0, f}};
     const Image gpu = test::SharedGpu().Render(one);
-    const Image cpu = RenderOnCpu(one, test::TwinOptions());
+    const Image cpu = cpu::RenderOnCpu(one, test::TwinOptions());
     for (std::size_t i = 0; i < c.gpu.size(); ++i) {
       c.gpu[i] += gpu.rgba[i * 4] != 0 ? 1 : 0;
       c.cpu[i] += cpu.rgba[i * 4] != 0 ? 1 : 0;

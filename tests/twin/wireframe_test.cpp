@@ -126,7 +126,8 @@ TEST_CASE("Wireframe: thousands of random edges, on centres, on subpixel ties, a
     REQUIRE(r.Equal());
     drawn_pixels += Drawn(r.cpu).size();
     // Chunked, with the depth tiles refreshed between chunks: still the same image.
-    CHECK(RenderOnCpu(list, test::TwinOptions(CpuOptions{.threads = 2, .chunk_triangles = 7})).rgba == r.cpu.rgba);
+    CHECK(cpu::RenderOnCpu(list, test::TwinOptions(cpu::CpuOptions{.threads = 2, .chunk_triangles = 7})).rgba ==
+          r.cpu.rgba);
   }
   CHECK(drawn_pixels > 100000);  // the edges really draw: most of 8 x 65536 pixels
   test::RequireNoValidationMessages();

@@ -40,7 +40,7 @@ const std::vector<std::string> kScenes = {
 };
 
 Scene Load(const std::string& file) { return LoadSceneOrObj(test::SourcePath(file)); }
-Image Twin(const Scene& scene) { return RenderOnCpu(BuildDrawList(scene)); }
+Image Twin(const Scene& scene) { return cpu::RenderOnCpu(BuildDrawList(scene)); }
 
 Image ShiftedRight(const Image& image, Rgb8 background) {
   Image out = image;
@@ -167,7 +167,7 @@ TEST_CASE("coverage: the reach is the same with and without the verifier's fast 
       Scene scene = Load(file);
       scene.wireframe = wireframe;
       const DrawList list = BuildDrawList(scene);
-      const Image image = RenderOnCpu(list);
+      const Image image = cpu::RenderOnCpu(list);
       verify::VerifyOptions fast;
       fast.reach = true;
       verify::VerifyOptions slow = fast;
@@ -198,7 +198,7 @@ TEST_CASE("coverage: the twin's image under any shading and clear colour passes,
   for (const std::string& file : kScenes) {
     const Scene scene = Load(file);
     const DrawList list = BuildDrawList(scene);
-    const Image twin = RenderOnCpu(list);
+    const Image twin = cpu::RenderOnCpu(list);
     const Rgb8 from = scene.canvas.background;
     std::uint64_t violations = 0;
     verify::CoverageVerification first;
@@ -247,7 +247,7 @@ TEST_CASE("coverage: every transform bug is caught on every shipped scene it cha
   for (const std::string& file : kScenes) {
     const Scene scene = Load(file);
     const DrawList list = BuildDrawList(scene);
-    const Image twin = RenderOnCpu(list);
+    const Image twin = cpu::RenderOnCpu(list);
     const Rgb8 bg = scene.canvas.background;
     verify::VerifyOptions loosest;
     loosest.reach = true;
@@ -305,7 +305,7 @@ TEST_CASE("coverage: shading that gives the clear colour fails unless a stated t
           "[verify][coverage]") {
   const Scene scene = Load("scenes/cgfs-instances.json");
   const DrawList list = BuildDrawList(scene);
-  const Image twin = RenderOnCpu(list);
+  const Image twin = cpu::RenderOnCpu(list);
   const Rgb8 bg = scene.canvas.background;
   // One covered pixel in 200 shaded exactly the clear colour (a highlight saturating to white).
   Image image = Recolour(twin, bg, bg, Shade::kNoise);
@@ -346,7 +346,7 @@ TEST_CASE("coverage: an empty or a full image of a scene that covers nothing cer
   Scene scene = Load("scenes/cgfs-instances.json");
   scene.camera.position = {0, 0, 100};  // everything behind the camera
   const DrawList list = BuildDrawList(scene);
-  const Image empty = RenderOnCpu(list);
+  const Image empty = cpu::RenderOnCpu(list);
   const run::CoverageJudgement j = run::JudgeCoverage(scene, list, empty);
   CHECK(j.coverage.certainly_covered == 0);
   CHECK(j.verdict == run::Verdict::kInconclusive);
@@ -355,7 +355,7 @@ TEST_CASE("coverage: an empty or a full image of a scene that covers nothing cer
   // whatever the transform: inconclusive.
   const Scene inside = Load("scenes/hard/camera-inside-cube.json");
   const DrawList inside_list = BuildDrawList(inside);
-  const run::CoverageJudgement k = run::JudgeCoverage(inside, inside_list, RenderOnCpu(inside_list));
+  const run::CoverageJudgement k = run::JudgeCoverage(inside, inside_list, cpu::RenderOnCpu(inside_list));
   CHECK(k.coverage.certainly_uncovered == 0);
   CHECK(k.verdict == run::Verdict::kInconclusive);
 }

@@ -48,7 +48,7 @@ std::uint64_t CheckSameJudgement(const test::Drawn& drawn, const Image& image, v
 }
 
 void CheckBothImages(const test::Drawn& drawn, int& failing) {
-  const Image image = RenderOnCpu(drawn.list);
+  const Image image = cpu::RenderOnCpu(drawn.list);
   const Image shifted = ShiftedRight(image);
   for (const verify::VerifyOptions rules : {verify::VerifyOptions{8, true}, verify::VerifyOptions{4, false}}) {
     CheckSameJudgement(drawn, image, rules);

@@ -51,7 +51,7 @@ Loaded Load(const std::string& file) {
   return l;
 }
 
-Image Twin(const Scene& scene) { return RenderOnCpu(BuildDrawList(scene)); }
+Image Twin(const Scene& scene) { return cpu::RenderOnCpu(BuildDrawList(scene)); }
 
 // --- The composers: a node's local matrix and an instance's chain, written here from doc.nodes
 // (not by the reader's LocalMatrix), right or with one bug.
@@ -228,7 +228,7 @@ TEST_CASE("glTF coverage: the twin's image of each shipped glTF scene passes und
   for (const std::string& file : kScenes) {
     const Loaded l = Load(file);
     const DrawList list = BuildDrawList(l.scene);
-    const Image twin = RenderOnCpu(list);
+    const Image twin = cpu::RenderOnCpu(list);
     const Rgb8 from = l.scene.canvas.background;
     verify::CoverageVerification first;
     for (const Shade shade : {Shade::kConstant, Shade::kGradient, Shade::kNoise}) {
@@ -265,7 +265,7 @@ TEST_CASE("glTF coverage: each glTF import bug fails on every shipped glTF scene
   for (const std::string& file : kScenes) {
     const Loaded l = Load(file);
     const DrawList list = BuildDrawList(l.scene);
-    const Image twin = RenderOnCpu(list);
+    const Image twin = cpu::RenderOnCpu(list);
     const Rgb8 bg = l.scene.canvas.background;
     verify::VerifyOptions loosest;
     loosest.reach = true;

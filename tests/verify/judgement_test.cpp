@@ -61,7 +61,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
     for (const bool wireframe : {false, true}) {
       const auto [scene, list] = test::RandomScene(seed, wireframe);
       const Image empty = Blank(list);
-      if (RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
+      if (cpu::RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
       const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
       INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
       CHECK(verify::JudgementOf(v) != verify::Judgement::kPassed);
@@ -80,7 +80,7 @@ TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, n
     "instances": [{"model": "t"}]})",
                                  "huge.json");
   const DrawList list = BuildDrawList(scene);
-  const verify::Verification drawn = verify::VerifyImage(scene, list, RenderOnCpu(list), {8, true});
+  const verify::Verification drawn = verify::VerifyImage(scene, list, cpu::RenderOnCpu(list), {8, true});
   const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
   INFO(report::VerificationText(drawn) << "\n" << report::VerificationText(empty));
   CHECK(drawn.NoViolations());
@@ -92,7 +92,7 @@ TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's
   int sharper = 0, judged = 0;
   for (const auto& file : test::ShippedScenes()) {
     const auto [scene, list] = test::ShippedScene(file, true);
-    const Image image = RenderOnCpu(list);
+    const Image image = cpu::RenderOnCpu(list);
     const verify::Verification loose = verify::VerifyImage(scene, list, image, {8, false});
     const verify::Verification strict = verify::VerifyImage(scene, list, image, {8, true});
     INFO(file.string() << ": " << report::VerificationText(loose) << "\n" << report::VerificationText(strict));
@@ -112,7 +112,7 @@ TEST_CASE("verify: an edge through the eye plane must be drawn where it is in fr
   // applied" (docs/verify.md: SwiftShader does this).
   const Scene scene = ParseScene(TriangleScene(-1), "behind.json");
   const DrawList list = BuildDrawList(scene);
-  const Image drawn = RenderOnCpu(list);
+  const Image drawn = cpu::RenderOnCpu(list);
   Image dropped = Blank(list);
   for (std::uint32_t x = 0; x < list.width; ++x) {  // keep the one edge in front: row 15, as drawn
     std::copy_n(drawn.pixel(x, 15), 4, dropped.pixel(x, 15));
@@ -135,10 +135,10 @@ TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyon
     "instances": [{"model": "t"}], "wireframe": true})",
                                  "graze.json");
   const DrawList list = BuildDrawList(scene);
-  const Image twin = RenderOnCpu(list);
-  CpuOptions guard;
+  const Image twin = cpu::RenderOnCpu(list);
+  cpu::CpuOptions guard;
   guard.rules.wireframe_guard_band = true;
-  const Image guarded = RenderOnCpu(list, guard);
+  const Image guarded = cpu::RenderOnCpu(list, guard);
   for (const Image* image : {&twin, &guarded}) {
     const verify::Verification v = verify::VerifyImage(scene, list, *image, {8, true});
     INFO(report::VerificationText(v));

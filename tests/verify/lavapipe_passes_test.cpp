@@ -5,10 +5,10 @@
 #include "../twin/twin_support.hpp"
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
 #include "run_report/verify_report.hpp"
 #include "support/catch.hpp"
 #include "support/test_support.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "verify/verifier.hpp"
 #include "verify_scenes.hpp"
 
@@ -25,7 +25,7 @@ constexpr std::uint32_t kRandomScenes = 500;
 // Mesa 22.3.6 with and without FMA, on aarch64; Mesa 25.0.7 with and without FMA.
 constexpr std::size_t kDistinctRuleSets = 5;
 
-// The distinct rule sets of the twin's own table of lavapipes (cpu/twin_rules.cpp), each once and
+// The distinct rule sets of the twin's own table of lavapipes (twin_rules/twin_rules.cpp), each once and
 // named by its first row: a row added there is judged here with no edit.
 struct NamedRules {
   std::string name;
@@ -33,7 +33,7 @@ struct NamedRules {
 };
 std::vector<NamedRules> LavapipeRules() {
   std::vector<NamedRules> distinct;
-  for (const cpu::KnownLavapipe& known : cpu::KnownLavapipes()) {
+  for (const twin_rules::KnownLavapipe& known : twin_rules::KnownLavapipes()) {
     const bool seen =
         std::any_of(distinct.begin(), distinct.end(), [&](const NamedRules& r) { return r.rules == known.rules; });
     if (!seen) {
@@ -94,9 +94,9 @@ TEST_CASE("500 random scenes under every lavapipe release's and path's rules pas
     for (const bool wireframe : {false, true}) {
       const test::Drawn d = test::RandomScene(seed, wireframe);
       for (const NamedRules& r : rule_sets) {
-        CpuOptions options;
+        cpu::CpuOptions options;
         options.rules = r.rules;
-        RequirePasses(d.scene, d.list, RenderOnCpu(d.list, options), 8,
+        RequirePasses(d.scene, d.list, cpu::RenderOnCpu(d.list, options), 8,
                       std::string(r.name) + ", seed " + std::to_string(seed) + (wireframe ? " --wireframe" : ""));
       }
     }
@@ -112,9 +112,9 @@ TEST_CASE("Every shipped scene under every lavapipe release's and path's rules p
     for (const bool wireframe : {false, true}) {
       const test::Drawn d = test::ShippedScene(file, wireframe);
       for (const NamedRules& r : rule_sets) {
-        CpuOptions options;
+        cpu::CpuOptions options;
         options.rules = r.rules;
-        RequirePasses(d.scene, d.list, RenderOnCpu(d.list, options), 8,
+        RequirePasses(d.scene, d.list, cpu::RenderOnCpu(d.list, options), 8,
                       std::string(r.name) + ": " + file.string() + (wireframe ? " --wireframe" : ""));
         ++judged;
       }

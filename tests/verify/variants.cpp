@@ -14,8 +14,8 @@ namespace twinraster::test {
 namespace {
 
 // The vertex stage as the twin's: F · (p, 1) in float, per draw.
-ClipPositions VertexStage(const DrawList& list) {
-  ClipPositions clip;
+cpu::ClipPositions VertexStage(const DrawList& list) {
+  cpu::ClipPositions clip;
   for (const DrawCall& draw : list.draws) {
     std::vector<glm::vec4>& out = clip.emplace_back();
     for (const glm::vec3& p : list.meshes[draw.mesh].positions) out.push_back(draw.F * glm::vec4(p, 1.0f));
@@ -26,8 +26,8 @@ ClipPositions VertexStage(const DrawList& list) {
 // Moves every vertex in the framebuffer: window (x, y) -> move(x, y), for vertices in front of the
 // camera (w > 0), computed in double and written back to clip space.
 template <class Move>
-ClipPositions InWindow(const DrawList& list, Move&& move) {
-  ClipPositions clip = VertexStage(list);
+cpu::ClipPositions InWindow(const DrawList& list, Move&& move) {
+  cpu::ClipPositions clip = VertexStage(list);
   const double hw = list.width / 2.0, hh = list.height / 2.0;
   for (auto& draw : clip) {
     for (glm::vec4& c : draw) {
@@ -41,16 +41,16 @@ ClipPositions InWindow(const DrawList& list, Move&& move) {
   return clip;
 }
 
-Image Rasterize(const DrawList& list, const ClipPositions& clip, cpu::RasterRules rules = {}) {
-  CpuOptions options;
+Image Rasterize(const DrawList& list, const cpu::ClipPositions& clip, cpu::RasterRules rules = {}) {
+  cpu::CpuOptions options;
   options.rules = rules;
-  return RasterizeClipSpace(list, clip, options);
+  return cpu::RasterizeClipSpace(list, clip, options);
 }
 
 Image RenderWith(const DrawList& list, cpu::RasterRules rules) {
-  CpuOptions options;
+  cpu::CpuOptions options;
   options.rules = rules;
-  return RenderOnCpu(list, options);
+  return cpu::RenderOnCpu(list, options);
 }
 
 Image Rotated180(const Image& image) {
@@ -100,7 +100,7 @@ DrawList CornersRotated(DrawList list) {
 
 }  // namespace
 
-Image DrawTwin(const DrawList& list) { return RenderOnCpu(list); }
+Image DrawTwin(const DrawList& list) { return cpu::RenderOnCpu(list); }
 
 std::vector<TwinVariant> ConformantVariants() {
   std::vector<TwinVariant> v;
@@ -120,7 +120,7 @@ std::vector<TwinVariant> ConformantVariants() {
                false,
                [](const Scene&, const DrawList& list) {
                  // Drawn turned by 180 degrees and turned back: top-left ties become bottom-right.
-                 ClipPositions clip = VertexStage(list);
+                 cpu::ClipPositions clip = VertexStage(list);
                  for (auto& draw : clip) {
                    for (glm::vec4& c : draw) c.x = -c.x, c.y = -c.y;
                  }
@@ -260,7 +260,7 @@ std::vector<TwinVariant> DefectVariants() {
   v.push_back({"the near plane ignored", false, 8, false,
                [](const Scene&, const DrawList& list) {
                  // In front of the camera but nearer than the near plane: drawn at depth 0 instead of clipped.
-                 ClipPositions clip = VertexStage(list);
+                 cpu::ClipPositions clip = VertexStage(list);
                  for (auto& draw : clip) {
                    for (glm::vec4& c : draw) {
                      if (c.w > 0 && c.z < 0) c.z = 0;

@@ -32,7 +32,7 @@ struct Case {
 Case Square() {
   Case c{ParseScene(kSquare, "square.json"), {}, {}};
   c.list = BuildDrawList(c.scene);
-  c.image = RenderOnCpu(c.list);
+  c.image = cpu::RenderOnCpu(c.list);
   return c;
 }
 
@@ -92,7 +92,7 @@ TEST_CASE("verify: with an edge through pixel centres, both answers are allowed 
   text.replace(text.find("[0, 0, 4]"), 9, "[0.020833333333333332, 0, 4]");
   Case c{ParseScene(text, "square.json"), {}, {}};
   c.list = BuildDrawList(c.scene);
-  c.image = RenderOnCpu(c.list);
+  c.image = cpu::RenderOnCpu(c.list);
   const verify::Verification sharp = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 4});
   const verify::Verification loose = verify::VerifyImage(c.scene, c.list, c.image, {.subpixel_bits = 1});
   CHECK(sharp.NoViolations());

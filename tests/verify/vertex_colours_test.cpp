@@ -4,12 +4,12 @@
 // image with wrong vertex colours, or none, fails.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "cpu/twin_rules.hpp"
 #include "run_report/verify_report.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
 #include "support/lit_scene.hpp"
 #include "support/test_support.hpp"
+#include "twin_rules/twin_rules.hpp"
 #include "verify/verifier.hpp"
 
 #include <string>
@@ -27,8 +27,8 @@ struct Device {
   int bits = 8;
 };
 std::vector<Device> Devices() {
-  const cpu::KnownSwiftShader& swiftshader = cpu::SwiftShaderRow();
-  return {{"lavapipe", CpuOptions{}.rules, 8},
+  const twin_rules::KnownSwiftShader& swiftshader = twin_rules::SwiftShaderRow();
+  return {{"lavapipe", cpu::CpuOptions{}.rules, 8},
           {"SwiftShader", swiftshader.rules, static_cast<int>(swiftshader.subpixel_bits)}};
 }
 
@@ -63,7 +63,7 @@ TEST_CASE("verify: the twin's vertex-coloured images pass under lavapipe's and S
     for (const auto& [name, scene] : Scenes()) {
       const DrawList list = BuildDrawList(scene);
       const verify::Verification v =
-          Judge(scene, list, RenderOnCpu(list, CpuOptions{.rules = device.rules}), device.bits);
+          Judge(scene, list, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = device.rules}), device.bits);
       INFO(device.name << ", " << name << ": " << report::VerificationText(v));
       CHECK(v.NoViolations());
       ++judged;
@@ -78,18 +78,18 @@ TEST_CASE("verify: wrong vertex colours, or none, fail", "[verify][vertex-colour
     const DrawList list = BuildDrawList(scene);
     INFO(file);
     // Red and blue swapped in every vertex colour.
-    const Image swapped = RenderOnCpu(BuildDrawList(SwappedRedBlue(scene)));
+    const Image swapped = cpu::RenderOnCpu(BuildDrawList(SwappedRedBlue(scene)));
     const verify::Verification v = Judge(scene, list, swapped, 8);
     INFO(report::VerificationText(v));
     CHECK(v.violations > 1000);
     // The triangles' own colours instead of the vertices' (a driver that ignored the attribute).
     DrawList flat = list;
     for (DrawMesh& mesh : flat.meshes) mesh.vertex_colours.clear();
-    const verify::Verification f = Judge(scene, list, RenderOnCpu(flat), 8);
+    const verify::Verification f = Judge(scene, list, cpu::RenderOnCpu(flat), 8);
     INFO(report::VerificationText(f));
     CHECK(f.violations > 1000);
     // One pixel inside a face, certain, with its green pushed 40 away.
-    Image image = RenderOnCpu(list);
+    Image image = cpu::RenderOnCpu(list);
     const verify::Verification clean = Judge(scene, list, image, 8);
     REQUIRE(clean.NoViolations());
     std::size_t at = 0;
