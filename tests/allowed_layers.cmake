@@ -1,7 +1,7 @@
 # Writes which stages each folder of src/ may include, derived from the links of the libraries the
 # folder defines: its own stage and, transitively, those of every twinraster target they link.
 # check_layers.cmake reads the file; the data path's order is written once, in the links. It reads
-# no source file.
+# no source file; it also lists the .cpp files each folder compiles in this configuration.
 #
 # A target's stage is the folder its CMakeLists.txt is in (the target's SOURCE_DIR): src/<stage>/
 # and any folder under it is <stage>, a folder at the top of the repository (shaders/) its name. So a new folder of src/
@@ -85,12 +85,28 @@ function(twinraster_targets_under dir out)
   set(${out} ${targets} PARENT_SCOPE)
 endfunction()
 
+# The .cpp files `target` compiles, as absolute paths: an option can leave a file of a folder out
+# (gpu/'s Vulkan files without Vulkan), and what is not compiled is not checked.
+function(twinraster_compiled_sources target out)
+  get_target_property(sources ${target} SOURCES)
+  get_target_property(dir ${target} SOURCE_DIR)
+  set(paths "")
+  foreach(source IN LISTS sources)
+    if(source MATCHES "\\.cpp$")
+      get_filename_component(path ${source} ABSOLUTE BASE_DIR ${dir})
+      list(APPEND paths ${path})
+    endif()
+  endforeach()
+  set(${out} ${paths} PARENT_SCOPE)
+endfunction()
+
 function(twinraster_write_allowed_layers source_dir file)
   get_property(built DIRECTORY ${source_dir}/src PROPERTY SUBDIRECTORIES)
   set(text "# Written at configure time by tests/allowed_layers.cmake, from the targets' links.\n")
   foreach(dir IN LISTS built)
     get_filename_component(folder ${dir} NAME)
     set(allowed ${folder})
+    set(compiled "")
     twinraster_targets_under(${dir} targets)
     foreach(target IN LISTS targets)
       get_target_property(type ${target} TYPE)
@@ -100,6 +116,8 @@ function(twinraster_write_allowed_layers source_dir file)
       set(items "")
       if(NOT type STREQUAL "INTERFACE_LIBRARY")
         get_target_property(items ${target} LINK_LIBRARIES)
+        twinraster_compiled_sources(${target} sources)
+        list(APPEND compiled ${sources})
       endif()
       get_target_property(interface ${target} INTERFACE_LINK_LIBRARIES)
       foreach(which IN ITEMS items interface)
@@ -114,6 +132,7 @@ function(twinraster_write_allowed_layers source_dir file)
     endforeach()
     list(REMOVE_DUPLICATES allowed)
     string(APPEND text "set(allowed_${folder} \"${allowed}\")\n")
+    string(APPEND text "set(compiled_${folder} \"${compiled}\")\n")
   endforeach()
   file(WRITE ${file} "${text}")
 endfunction()
