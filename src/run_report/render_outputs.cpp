@@ -80,7 +80,7 @@ std::string RenderText(const run::RunRecord& r, bool verify_asked) {
     out << "gpu vs cpu: not compared, there is no gpu image\n";
   }
   if (r.verification && r.comparison && !r.comparison->Equal()) {
-    out << "verdict: " << DifferenceVerdict(r.comparison->differing_pixels, *r.verification) << "\n";
+    out << "verdict: " << DifferenceText(r.comparison->differing_pixels, *r.verification) << "\n";
   }
   if (r.verification && verify_asked) {
     out << "verify: " << run::BackendName(*r.judged) << " image " << VerificationText(*r.verification)
@@ -115,9 +115,9 @@ Json RenderJson(const run::RunRecord& r) {
   if (r.verification) {
     Json v;
     v["image"] = run::BackendName(*r.judged);
-    const Json verdict =
+    const Json judged =
         VerificationJson(*r.verification, r.map.empty() ? std::nullopt : std::optional(r.map), r.verify_ms);
-    for (const auto& [key, value] : verdict.items()) v[key] = value;
+    for (const auto& [key, value] : judged.items()) v[key] = value;
     j["verify"] = v;
   } else {
     j["verify"] = nullptr;
@@ -136,7 +136,7 @@ std::string VerdictReason(const run::RunRecord& r) {
     case run::Verdict::kDiffering:
     case run::Verdict::kInconclusive:
     case run::Verdict::kVerified:
-      if (r.Differ() && r.verification) return DifferenceVerdict(r.comparison->differing_pixels, *r.verification);
+      if (r.Differ() && r.verification) return DifferenceText(r.comparison->differing_pixels, *r.verification);
       if (r.verification) {
         return std::string(run::BackendName(*r.judged)) + " image " + VerificationText(*r.verification);
       }

@@ -94,7 +94,7 @@ nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std
           {"verify_ms", verify_ms}};
 }
 
-std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Verification& v) {
+std::string DifferenceText(std::uint64_t differing_pixels, const verify::Verification& v) {
   std::ostringstream s;
   if (v.NoViolations()) {
     s << "the images differ in " << differing_pixels << " px, all within what Vulkan allows (" << v.uncertain

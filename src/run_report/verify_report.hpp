@@ -27,13 +27,14 @@ std::string InconclusiveReason(const verify::Verification& v);
 // "(12, 40..42, 200)"
 std::string RangeText(const verify::ColourRange& range);
 
-// The verdict and counts, without file names: render nests it, verify adds its files around it.
+// The judgement and counts, without file names: render nests it, verify adds its files around it.
 nlohmann::ordered_json VerificationJson(const verify::Verification& v, const std::optional<std::string>& map,
                                         double verify_ms);
 
-// "the images differ in 37 px, all within what Vulkan allows (...)" or
-// "12 px are not allowed: first at (x, y) ..."
-std::string DifferenceVerdict(std::uint64_t differing_pixels, const verify::Verification& v);
+// What a difference between the two images comes to, in one sentence (render prints it after
+// "verdict:" and gives it as the verdict's reason): "the images differ in 37 px, all within what
+// Vulkan allows (...)" or "12 px are not allowed: first at (x, y) ..."
+std::string DifferenceText(std::uint64_t differing_pixels, const verify::Verification& v);
 
 // What `verify` states beside every verdict, with and without --coverage: the rules assumed for want
 // of the image's notes, and that alpha is not judged.

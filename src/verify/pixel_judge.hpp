@@ -106,8 +106,8 @@ class FrameJudge {
   // (0: none), so that a fresh frame is all zeros.
   std::vector<double> gap_;
   // Offers pairwise overlap exactly when, channel by channel, the largest low end is no more than
-  // the smallest high end (Helly's theorem in one dimension): kept that way, the verdict does not
-  // depend on the order of the offers. All zeros when nothing was offered.
+  // the smallest high end (Helly's theorem in one dimension): kept that way, a pixel's class does
+  // not depend on the order of the offers. All zeros when nothing was offered.
   struct State {
     Rgb8 max_lo{0, 0, 0};
     Rgb8 hi_gap{0, 0, 0};                   // 255 - the smallest high end

@@ -3,7 +3,7 @@
 // allows at each pixel only what those surfaces offer there. Its pixels get no offers one by one;
 // Finish classes them against those colours alone. It does not decide coverage, depth or colours
 // (coverage_shapes.hpp, pixel_judge.hpp do). A tile that another surface then reaches gets the held
-// surfaces' offers pixel by pixel after all, which changes nothing: a pixel's verdict does not
+// surfaces' offers pixel by pixel after all, which changes nothing: a pixel's class does not
 // depend on the order of its offers.
 #pragma once
 

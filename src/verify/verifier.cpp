@@ -1,11 +1,8 @@
 #include "verify/verifier.hpp"
 
-#include "verify/frame_shared.hpp"
+#include "verify/band.hpp"
 #include "verify/pass1_ring.hpp"
-#include "verify/pixel_judge.hpp"
-#include "verify/primitives.hpp"
 #include "verify/scan.hpp"
-#include "verify/sole_surfaces.hpp"
 
 #include <algorithm>
 #include <future>
@@ -13,7 +10,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <type_traits>
 
 namespace twinraster::verify {
@@ -34,27 +30,6 @@ void CheckInputs(const Scene& scene, const DrawList& list, const Image& image, c
     throw std::invalid_argument("subpixel bits must be 0 to 24, not " + std::to_string(options.subpixel_bits));
   }
 }
-
-// One band of rows: its own primitives' state, its judge, and the draws that reach it.
-struct Band {
-  Band(const FrameShared& frame, const DrawList& draws, const Image& image, const VerifyOptions& options, int row0,
-       int row1)
-      : list(draws),
-        shared(frame),
-        primitives(frame, draws, options),
-        judge(image, draws.background, draws.reversed_z, row0, row1),
-        sole(judge),
-        fast(options.fast_paths) {}
-  const DrawList& list;
-  const FrameShared& shared;
-  Primitives primitives;
-  FrameJudge judge;
-  SoleSurfaces sole;  // pass 2's tiles one surface settles (a fast path)
-  std::uint64_t shapes_offered = 0;
-  std::vector<DrawReach> reaching;
-  Verification counts;
-  bool fast = true;
-};
 
 // Pass 1 for draw d of the band, `prepared` by PrepareForPass1: the nearest surface certain to be
 // written at each pixel, and the farthest depth it may have there. Appends the draw to the band's
@@ -163,52 +138,6 @@ void JudgeBand(Band& band, const Image& image, std::vector<PixelClass>& pixels, 
   judge.Finish(band.counts, pixels, settled);
 }
 
-// Pass 2 at one pixel of the band only, gathering what each surface that may show there allows:
-// only draws whose boxes in the band hold the pixel can.
-std::vector<ColourRange> AllowedAt(const Band& band, int x, int y) {
-  const FrameJudge& judge = band.judge;
-  std::vector<ColourRange> allowed;
-  DrawGeometry g;
-  for (const DrawReach& reach : band.reaching) {
-    if (!reach.Contains(x, y)) continue;
-    band.primitives.ForEachInDraw(reach.draw, true, g, [&](const auto& shape, Rgb8 flat, std::size_t, bool) {
-      const PixelBox box = shape.Box(judge.width(), judge.height());
-      if (x < box.x0 || x > box.x1 || y < box.y0 || y > box.y1) return;
-      const Coverage c = shape.Covers(glm::dvec2(x + 0.5, y + 0.5));
-      if (c == Coverage::kOut) return;
-      const glm::dvec2 p(x + 0.5, y + 0.5);
-      const ColourRange colours = shape.Colour(p, flat);
-      if (judge.MayShow(x, y, shape.Depth(p)) && std::find(allowed.begin(), allowed.end(), colours) == allowed.end()) {
-        allowed.push_back(colours);
-      }
-    });
-  }
-  if (judge.BackgroundMayShow(x, y)) allowed.push_back(ColourRange::Exactly(judge.background()));
-  return allowed;
-}
-
-// The bands' counts summed; the first violation is the first band's, the worst the first of the
-// largest distance. The colours allowed are gathered for those two pixels only.
-void Merge(const std::vector<std::unique_ptr<Band>>& bands, Verification& result) {
-  const Band* first = nullptr;
-  const Band* worst = nullptr;
-  for (const auto& band : bands) {  // top to bottom
-    const Verification& b = band->counts;
-    result.certain += b.certain, result.uncertain += b.uncertain, result.violations += b.violations;
-    result.covered += b.covered, result.uncertain_shared_edges += b.uncertain_shared_edges;
-    result.background_excluded += b.background_excluded;
-    if (!result.first && b.first) result.first = b.first, first = band.get();
-    if (b.worst && (!result.worst || b.worst->distance > result.worst->distance))
-      result.worst = b.worst, worst = band.get();
-  }
-  if (first) result.first->allowed = AllowedAt(*first, int(result.first->x), int(result.first->y));
-  if (worst) {
-    const bool same = first && result.first->x == result.worst->x && result.first->y == result.worst->y;
-    result.worst->allowed =
-        same ? result.first->allowed : AllowedAt(*worst, int(result.worst->x), int(result.worst->y));
-  }
-}
-
 }  // namespace
 
 Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& image, const VerifyOptions& options) {
@@ -222,8 +151,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   // once for all (FrameShared), the draws prepared for pass 1 (Pass1Ring) and the pixel classes.
   const FrameShared frame(scene, list);
   const int rows = int(image.height);
-  const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned((rows + 15) / 16)));
-  const int band_rows = ((rows + threads - 1) / threads + 15) / 16 * 16;
+  const int band_rows = BandRows(rows);
   std::vector<std::unique_ptr<Band>> bands(std::size_t((rows + band_rows - 1) / band_rows));
   std::optional<Pass1Ring> ring;
   if (Pass1Ring::Fits(list)) ring.emplace(bands.size(), list.draws.size());
@@ -252,7 +180,7 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   }
   judge_band(0);
   for (auto& r : running) r.get();  // rethrows a band's exception
-  Merge(bands, result);
+  MergeBands(bands, result);
   return result;
 }
 

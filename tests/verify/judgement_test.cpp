@@ -1,4 +1,4 @@
-// The verdict as a whole: passed, failed or inconclusive; an empty image never passes; lines judged
+// The judgement of a whole image: passed, failed or inconclusive; an empty image never passes; lines judged
 // by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
@@ -71,7 +71,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
   CHECK(drawing >= 160);  // the random scenes mostly draw something (twin/random_scenes_test asks 80 %)
 }
 
-TEST_CASE("verify: where every pixel is uncertain the verdict is inconclusive, not passed", "[verify]") {
+TEST_CASE("verify: where every pixel is uncertain the judgement is inconclusive, not passed", "[verify]") {
   // Vertices 1e8 units across through the eye: no edge's place is known to a pixel.
   const Scene scene = ParseScene(R"({"canvas": {"width": 32, "height": 32, "background": [0, 0, 0]},
     "viewport": {"width": 1, "height": 1, "distance": 1}, "depth": {"near": 1e-6, "far": 1e9},
