@@ -41,7 +41,7 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   for (const char* backend : {"gpu", "cpu"}) {
     const auto& b = j["backends"][backend];
     for (const char* stage : {"setup", "draw", "readback", "png"}) REQUIRE(b["timings_ms"][stage].get<double>() >= 0);
-    const Image image = ReadPng(b["output"].get<std::string>());
+    const Image image = files::ReadPng(b["output"].get<std::string>());
     REQUIRE(image.width == 600);
   }
   REQUIRE(std::filesystem::exists(dir / "frame-gpu.png"));
@@ -62,7 +62,7 @@ TEST_CASE("Without a Vulkan device: gpu exits 3 saying what to install, cpu stil
       test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu"}, {kNoVulkan});
   INFO(cpu.err);
   REQUIRE(cpu.exit_code == 0);
-  REQUIRE(ReadPng(dir / "c.png").height == 600);
+  REQUIRE(files::ReadPng(dir / "c.png").height == 600);
 }
 
 TEST_CASE("A failed render leaves an existing output untouched", "[cli][render]") {
@@ -94,9 +94,9 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   for (std::size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = std::uint8_t(i * 7);
   Image b = a;
   b.pixel(2, 1)[1] = std::uint8_t(b.pixel(2, 1)[1] + 9);
-  WritePng(dir / "a.png", a);
-  WritePng(dir / "a2.png", a);
-  WritePng(dir / "b.png", b);
+  files::WritePng(dir / "a.png", a);
+  files::WritePng(dir / "a2.png", a);
+  files::WritePng(dir / "b.png", b);
   REQUIRE(test::RunCli({"compare", (dir / "a.png").string(), (dir / "a2.png").string()}).exit_code == 0);
   const test::CliResult r = test::RunCli(
       {"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.png").string(), "--json"});
@@ -111,7 +111,7 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(j["differing_pixels"] == 1);
   REQUIRE(j["max_channel_difference"] == 9);
   REQUIRE(j["diff"] == (dir / "d.png").string());
-  const Image diff = ReadPng(dir / "d.png");
+  const Image diff = files::ReadPng(dir / "d.png");
   REQUIRE(diff.pixel(2, 1)[0] == 255);
   REQUIRE(diff.pixel(2, 1)[1] == 0);
   test::WriteFile(dir / "not.png", "text");
@@ -120,7 +120,7 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(bad.err.find("not.png") != std::string::npos);
 
   // Sizes that differ: no pixel counts (null, not missing), no diff, exit 1.
-  WritePng(dir / "small.png", Image(2, 2));
+  files::WritePng(dir / "small.png", Image(2, 2));
   const test::CliResult sizes =
       test::RunCli({"compare", (dir / "a.png").string(), (dir / "small.png").string(), "--json"});
   REQUIRE(sizes.exit_code == 1);
@@ -199,7 +199,7 @@ TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes
   // Standard output is the PNG and nothing else; the report went to standard error.
   REQUIRE(r.out.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   test::WriteFile(dir / "out.png", r.out);
-  const Image image = ReadPng(dir / "out.png");
+  const Image image = files::ReadPng(dir / "out.png");
   REQUIRE(image.width == 600);
   REQUIRE(image.height == 600);
   REQUIRE(r.err.rfind("-: 2 instances, 24 triangles, 600 x 600, loaded in ", 0) == 0);
@@ -207,7 +207,7 @@ TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes
 
   // The same image as a file written from the scene file.
   REQUIRE(test::RunCli({"render", kScene, "-o", (dir / "file.png").string(), "--backend", "cpu"}).exit_code == 0);
-  REQUIRE(ReadPng(dir / "file.png").rgba == image.rgba);
+  REQUIRE(files::ReadPng(dir / "file.png").rgba == image.rgba);
 
   // --quiet: nothing at all on standard error.
   const test::CliResult quiet = test::RunCliWithInput({"render", "-", "-o", "-", "--backend", "cpu", "-q"}, scene_text);
@@ -260,12 +260,12 @@ TEST_CASE("render -o and compare --diff must name .png files, in any case", "[cl
       test::RunCli({"render", kScene, "-o", (dir / "Frame.PNG").string(), "--backend", "cpu"});
   INFO(upper.err);
   REQUIRE(upper.exit_code == 0);
-  REQUIRE(ReadPng(dir / "Frame.PNG").width == 600);
+  REQUIRE(files::ReadPng(dir / "Frame.PNG").width == 600);
 
   Image a(2, 2), b(2, 2);
   b.pixel(0, 0)[0] = 200;
-  WritePng(dir / "a.png", a);
-  WritePng(dir / "b.png", b);
+  files::WritePng(dir / "a.png", a);
+  files::WritePng(dir / "b.png", b);
   const test::CliResult diff =
       test::RunCli({"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.gif").string()});
   REQUIRE(diff.exit_code == 2);
@@ -346,7 +346,7 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   REQUIRE(r.err.find("broken.json: line 1") != std::string::npos);
   for (const char* file : {"cgfs-transforms-gpu.png", "cgfs-transforms-cpu.png", "lookat-gpu.png", "lookat-cpu.png"}) {
     INFO(file);
-    REQUIRE(ReadPng(out / file).width > 0);
+    REQUIRE(files::ReadPng(out / file).width > 0);
   }
   REQUIRE_FALSE(std::filesystem::exists(out / "broken-gpu.png"));
   // The Vulkan device is made once: the second scene's set-up is only its buffers.
@@ -355,7 +355,7 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   const test::CliResult good =
       test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
   REQUIRE(good.exit_code == 0);
-  REQUIRE(ReadPng(out / "lookat.png").width == 640);
+  REQUIRE(files::ReadPng(out / "lookat.png").width == 640);
   // One scene that cannot be read, with --json: its object says so, as a batch's line would.
   const test::CliResult alone = test::RunCli(
       {"render", (dir / "broken.json").string(), "-o", out.string() + "/b.png", "--backend", "cpu", "--json"});
@@ -420,8 +420,8 @@ TEST_CASE("render with several scenes: records in the order given, each scene's 
   // A batch's images are the ones a scene drawn on its own gets.
   const test::CliResult alone = test::RunCli({"render", lookat, "-o", (dir / "alone.png").string()});
   REQUIRE(alone.exit_code == 0);
-  CHECK(ReadPng(dir / "out/again-gpu.png").rgba == ReadPng(dir / "alone-gpu.png").rgba);
-  CHECK(ReadPng(dir / "out/again-cpu.png").rgba == ReadPng(dir / "alone-cpu.png").rgba);
+  CHECK(files::ReadPng(dir / "out/again-gpu.png").rgba == files::ReadPng(dir / "alone-gpu.png").rgba);
+  CHECK(files::ReadPng(dir / "out/again-cpu.png").rgba == files::ReadPng(dir / "alone-cpu.png").rgba);
 }
 
 TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so",
