@@ -50,12 +50,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Drawn& drawn = (last & 16) != 0 ? wireframe : filled;
   twinraster::Image image;
   try {
-    image = twinraster::DecodePng(std::string_view(reinterpret_cast<const char*>(data), size), "input",
-                                  [](std::uint32_t width, std::uint32_t height) {
-                                    if (width != kCanvas || height != kCanvas)
-                                      throw twinraster::FileError("input: not 64 x 64");
-                                  });
-  } catch (const twinraster::FileError& e) {
+    image = twinraster::files::DecodePng(std::string_view(reinterpret_cast<const char*>(data), size), "input",
+                                         [](std::uint32_t width, std::uint32_t height) {
+                                           if (width != kCanvas || height != kCanvas)
+                                             throw twinraster::files::FileError("input: not 64 x 64");
+                                         });
+  } catch (const twinraster::files::FileError& e) {
     const std::string message = e.what();
     Check(message.starts_with("input: "));
     Check(std::none_of(message.begin(), message.end(),

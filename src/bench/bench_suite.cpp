@@ -20,7 +20,7 @@
 #include <string_view>
 #include <thread>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -76,11 +76,11 @@ std::optional<std::uint64_t> ZFighting(const std::filesystem::path& file, const 
 // lavapipe reads LP_NUM_THREADS when an instance creates its device: 0 rasterizes on its own
 // queue thread (one thread in all), N > 0 starts N rasterizer threads. A renderer keeps the count
 // it was created with, so the variable is set just for its construction.
-GpuRenderer LavapipeWithThreads(unsigned threads) {
+gpu::GpuRenderer LavapipeWithThreads(unsigned threads) {
   const char* previous = std::getenv("LP_NUM_THREADS");
   const std::string saved = previous ? previous : "";
   ::setenv("LP_NUM_THREADS", threads <= 1 ? "0" : std::to_string(threads).c_str(), 1);
-  GpuRenderer renderer;
+  gpu::GpuRenderer renderer;
   if (previous)
     ::setenv("LP_NUM_THREADS", saved.c_str(), 1);
   else
@@ -119,7 +119,7 @@ std::vector<std::string> BenchMethodNames() {
 
 namespace {
 
-using Lavapipes = std::vector<std::pair<unsigned, std::optional<GpuRenderer>>>;
+using Lavapipes = std::vector<std::pair<unsigned, std::optional<gpu::GpuRenderer>>>;
 
 // One lavapipe per thread count the renderer rows use (one thread, every core), made only when
 // those rows are asked for, so that the rest runs without Vulkan.
@@ -138,8 +138,8 @@ Lavapipes MakeLavapipes(unsigned cores, bool wanted) {
 struct SceneTruth {
   Scene scene;
   DrawList list;
-  ExactClipPositions exact;
-  TruthImage surfaces;
+  truth::ExactClipPositions exact;
+  truth::TruthImage surfaces;
   std::optional<DrawList> surface_list;  // smooth scenes: the positions rasterized again with SurfaceList
 };
 
@@ -148,9 +148,9 @@ SceneTruth MakeSceneTruth(const std::filesystem::path& file) {
   t.scene = LoadScene(file);
   t.scene.wireframe = false;  // the bench compares filled (and lit) images with the truth, whatever the scene asks
   t.list = BuildDrawList(t.scene);
-  t.exact = ExactClipSpace(t.scene);
-  const ExactLight light(t.scene);
-  t.surfaces = RenderTruthSurfaces(t.list, t.exact, &light);
+  t.exact = truth::ExactClipSpace(t.scene);
+  const truth::ExactLight light(t.scene);
+  t.surfaces = truth::RenderTruthSurfaces(t.list, t.exact, &light);
   // Colours that vary across a triangle (light, vertex colours) are compared surface by surface.
   if (std::any_of(t.list.meshes.begin(), t.list.meshes.end(), [](const DrawMesh& m) { return m.smooth(); }))
     t.surface_list = SurfaceList(t.list);
@@ -205,8 +205,8 @@ BenchRow MethodRow(VertexMethod method, const BenchRow& base, const std::filesys
 // `render` draws), or that device in this process, so that its frame time holds no child process.
 struct Renderer {
   const char* method;
-  cpu::RasterRules rules;         // the device's, which the twin follows
-  GpuRenderer* device = nullptr;  // null: the twin draws
+  cpu::RasterRules rules;              // the device's, which the twin follows
+  gpu::GpuRenderer* device = nullptr;  // null: the twin draws
 };
 
 BenchRow RendererRow(const Renderer& renderer, unsigned threads, const BenchRow& base,
@@ -235,8 +235,8 @@ BenchResult RunBench(const BenchOptions& options) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   Lavapipes lavapipes = MakeLavapipes(cores, selected("lavapipe"));
   // SwiftShader runs on its own pool of one thread per core: its rows are at every core only.
-  std::optional<GpuRenderer> swiftshader;
-  if (selected("swiftshader")) swiftshader.emplace(GpuOptions{.device = "SwiftShader"});
+  std::optional<gpu::GpuRenderer> swiftshader;
+  if (selected("swiftshader")) swiftshader.emplace(gpu::GpuOptions{.device = "SwiftShader"});
   result.machine = MachineDescription(lavapipes.front().second ? lavapipes.front().second->DeviceName() : "not used");
   if (swiftshader) result.machine += " and " + swiftshader->DeviceName();
 
@@ -278,4 +278,4 @@ BenchResult RunBench(const BenchOptions& options) {
   return result;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 struct BenchRow {
   std::string scene;
@@ -61,4 +61,4 @@ std::vector<std::string> BenchMethodNames();
 
 BenchResult RunBench(const BenchOptions& options);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
-namespace twinraster {
+namespace twinraster::bench {
 
-double VertexErrorPixels(const cpu::ClipPositions& clip, const ExactClipPositions& truth, std::uint32_t width,
+double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipPositions& truth, std::uint32_t width,
                          std::uint32_t height) {
   double worst = 0;
   for (std::size_t d = 0; d < truth.size(); ++d) {
@@ -16,15 +16,15 @@ double VertexErrorPixels(const cpu::ClipPositions& clip, const ExactClipPosition
       if (!InsideClipVolume(truth[d][v])) continue;
       // The method's float position, carried through the viewport transform in double so that
       // only the method's own error is measured.
-      const glm::dvec3 exact = ExactFramebuffer(truth[d][v], width, height);
-      const glm::dvec3 approx = ExactFramebuffer(glm::dvec4(clip[d][v]), width, height);
+      const glm::dvec3 exact = truth::ExactFramebuffer(truth[d][v], width, height);
+      const glm::dvec3 approx = truth::ExactFramebuffer(glm::dvec4(clip[d][v]), width, height);
       worst = std::max(worst, glm::length(glm::dvec2(approx) - glm::dvec2(exact)));
     }
   }
   return worst;
 }
 
-ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const TruthImage& truth) {
+ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const truth::TruthImage& truth) {
   ColourError error;
   if (image.width != truth.image.width || image.height != truth.image.height || surfaces.width != image.width ||
       surfaces.height != image.height || truth.surfaces.size() != std::size_t{image.width} * image.height) {
@@ -67,4 +67,4 @@ std::optional<DrawList> SurfaceList(const DrawList& list) {
   return ids;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -205,4 +205,4 @@ LoaderBenchResult RunLoaderBench(const LoaderBenchOptions& options) {
   return result;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 // Debian's assimp-testmodels asset (scripts/setup.sh --tests installs it): 115 instances of 29
 // meshes, read from the system and never copied into the repository.
@@ -71,4 +71,4 @@ struct LoaderBenchResult {
 // file that does not load, std::runtime_error when a child or a process fails.
 LoaderBenchResult RunLoaderBench(const LoaderBenchOptions& options);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -9,7 +9,7 @@
 #include <functional>
 #include <stdexcept>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -34,10 +34,10 @@ struct Encoder {
 
 std::vector<Encoder> Encoders() {
   const auto libdeflate = [](int level) {
-    return [level](const Image& image) { return EncodePngWithLibdeflate(image, level).size(); };
+    return [level](const Image& image) { return files::EncodePngWithLibdeflate(image, level).size(); };
   };
   return {
-      {"runs (level 1, the default)", [](const Image& image) { return EncodePng(image).size(); }},
+      {"runs (level 1, the default)", [](const Image& image) { return files::EncodePng(image).size(); }},
       {"libdeflate 0 (stored)", libdeflate(0)},
       {"libdeflate 1", libdeflate(1)},
       {"libdeflate 6", libdeflate(6)},
@@ -65,4 +65,4 @@ std::vector<PngEncoding> ComparePngEncoders(const Image& image, int runs) {
   return result;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

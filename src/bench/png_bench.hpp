@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 struct PngEncoding {
   std::string encoder;  // "runs (level 1)", "libdeflate 0", ..., "stb_image_write"
@@ -20,4 +20,4 @@ struct PngEncoding {
 // Every encoder on `image`, `runs` times each, in turn.
 std::vector<PngEncoding> ComparePngEncoders(const Image& image, int runs);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

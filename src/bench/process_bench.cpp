@@ -19,7 +19,7 @@
 
 extern char** environ;
 
-namespace twinraster {
+namespace twinraster::bench {
 
 double TimedProcess(const std::vector<std::string>& args, int expected_exit) {
   std::vector<char*> argv;
@@ -137,4 +137,4 @@ ProcessTimes RunProcessBench(const ProcessBenchOptions& options) {
           .batch_side = options.batch_side};
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 struct ProcessBenchOptions {
   std::filesystem::path executable;     // twinraster itself
@@ -67,4 +67,4 @@ class TemporaryDirectory {
   std::filesystem::path path_;
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -20,7 +20,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -89,8 +89,8 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
 
   // Made once, as `render` with several scenes does: the path a user gets (instanced from
   // kInstancingThreshold draws of one mesh on), and F pushed per draw for comparison.
-  GpuRenderer gpu;
-  GpuRenderer pushing(GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
+  gpu::GpuRenderer gpu;
+  gpu::GpuRenderer pushing(gpu::GpuOptions{.device = "", .validation = false, .instancing = gpu::Instancing::kNever});
   // The twin copies the lavapipe that draws here, as `render` chooses it.
   const cpu::RasterRules twin_rules =
       twin_rules::ChooseTwinRules(run::FactsOf(gpu.Device()), twin_rules::DetectCpuPath()).rules;
@@ -111,11 +111,11 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       load.push_back(clock.Lap());
       const DrawList list = BuildDrawList(scene);
       chain.push_back(clock.Lap());
-      GpuTimings g;
+      gpu::GpuTimings g;
       const Image gpu_image = gpu.Render(list, &g);
       gpu_setup.push_back(g.setup_ms);
       gpu_draw.push_back(g.draw_ms);
-      GpuTimings p;
+      gpu::GpuTimings p;
       const Image per_draw_image = pushing.Render(list, &p);
       gpu_per_draw.push_back(p.setup_ms + p.draw_ms);
       const run::BackendRun twin = run::DrawOnTwin(list, twin_rules, 0);
@@ -123,7 +123,7 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
       twin_setup.push_back(twin.record.setup_ms);
       twin_draw.push_back(twin.record.draw_ms);
       clock.Lap();
-      const std::string bytes = EncodePng(twin_image);
+      const std::string bytes = files::EncodePng(twin_image);
       png.push_back(clock.Lap());
       frame = twin_image;
       judge.push_back(run::JudgeImage(scene, list, twin_image, twin.drawn_by.rasterizes, false).verify_ms);
@@ -145,4 +145,4 @@ ScaleResult RunScaleBench(const ScaleOptions& options) {
   return result;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 struct ScaleRow {
   std::size_t instances = 0, triangles = 0;
@@ -55,4 +55,4 @@ struct ScaleResult {
 // instance, seen whole from above a corner. Throws GpuUnavailable without a Vulkan device.
 ScaleResult RunScaleBench(const ScaleOptions& options);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 void RotationAxisAngle(const glm::dmat3& r, glm::dvec3& axis, double& degrees) {
   // Rotation(a, θ) = cos θ·I − sin θ·[a]× + (1 − cos θ)·a·aᵀ (rotation.cpp): with M(row, col) =
@@ -220,4 +220,4 @@ std::string SceneAsJson(const Scene& scene, JsonDigits digits) {
   return std::move(j.text);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

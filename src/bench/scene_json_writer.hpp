@@ -13,7 +13,7 @@
 
 #include <string>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 // How vertex coordinates are written. kExact: the shortest decimal that reads back as the same
 // double, so the JSON loader's Scene holds the very same numbers (up to 17 digits). kFloat: the
@@ -41,4 +41,4 @@ void RotationAxisAngle(const glm::dmat3& r, glm::dvec3& axis, double& degrees);
 // instance names its model as the Scene does; a model is given a "shading" when the scene is lit.
 std::string SceneAsJson(const Scene& scene, JsonDigits digits);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

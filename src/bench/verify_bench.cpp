@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -22,7 +22,7 @@ VerifyProcessRow TimeProcesses(const std::filesystem::path& executable, const st
   const std::string drawn = (work.path() / "twin.png").string(), shifted = (work.path() / "shifted.png").string();
   const std::string out = (work.path() / "out.png").string();
   TimedProcess({exe, "render", "-q", file, "--backend", "cpu", "-o", drawn});
-  WritePng(shifted, ShiftedRight(ReadPng(drawn)), kPngFastest, ReadPngNotes(drawn));
+  files::WritePng(shifted, ShiftedRight(files::ReadPng(drawn)), files::kPngFastest, files::ReadPngNotes(drawn));
   constexpr int kViolations = 1;  // verify's exit code for an image with violations
   std::vector<double> render, passing, failing;
   for (int i = 0; i < runs; ++i) {
@@ -77,4 +77,4 @@ VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scene
   return result;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 struct VerifyBenchRow {
   std::string scene;
@@ -44,4 +44,4 @@ std::vector<std::filesystem::path> DefaultVerifyBenchScenes(const std::filesyste
 VerifyBenchResult RunVerifyBench(const std::vector<std::filesystem::path>& scenes, int runs,
                                  const std::filesystem::path& executable = {});
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

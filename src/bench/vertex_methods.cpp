@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 namespace {
 
@@ -105,4 +105,4 @@ cpu::ClipPositions TransformVertices(const Scene& scene, const DrawList& list, V
   return clip;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::bench {
 
 enum class VertexMethod {
   kComposeDouble,   // 1. F = M_Projection · M_Camera · M_Model in double, rounded to float once
@@ -32,4 +32,4 @@ std::vector<glm::mat4> InstanceMatrices(const Scene& scene, VertexMethod method)
 
 cpu::ClipPositions TransformVertices(const Scene& scene, const DrawList& list, VertexMethod method);
 
-}  // namespace twinraster
+}  // namespace twinraster::bench

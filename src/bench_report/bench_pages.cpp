@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 namespace {
 
@@ -26,7 +26,7 @@ std::string ColourOf(const std::string& method) {
 }
 
 // A row's name in a series: frame rows differ by thread count.
-std::string SeriesName(const BenchRow& r) {
+std::string SeriesName(const bench::BenchRow& r) {
   return r.vertex_ms >= 0 ? r.method : r.method + ", " + Counted(r.threads, "thread");
 }
 
@@ -43,19 +43,19 @@ PlotSeries& SeriesFor(std::vector<PlotSeries>& series, const std::string& name, 
 }
 
 std::string Section(const std::string& title, const std::string& body) {
-  return "<h2>" + Escape(title) + "</h2>\n" + body;
+  return "<h2>" + markup::Escape(title) + "</h2>\n" + body;
 }
 
 }  // namespace
 
-std::string BenchChartSvg(const BenchResult& result) {
+std::string BenchChartSvg(const bench::BenchResult& result) {
   Plot plot;
   plot.title = "Vertex stage: time against error, every scene";
   plot.x = {"ms per million vertices (median)", true, std::nullopt};
   plot.y = {"max vertex error, px", true, kVertexErrorFloor};
   plot.references = {{1.0 / 256, "1/256 px"}};
   plot.width = 760, plot.height = 460;
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     if (r.vertex_ms < 0 || r.vertex_error_px < 0 || r.vertices == 0) continue;
     std::string label = r.scene;
     if (r.colour_error) label += ", colour error " + std::to_string(*r.colour_error);
@@ -65,10 +65,11 @@ std::string BenchChartSvg(const BenchResult& result) {
   return PlotSvg(plot);
 }
 
-std::string BenchPageHtml(const BenchResult& result, const std::string& table) {
+std::string BenchPageHtml(const bench::BenchResult& result, const std::string& table) {
   std::ostringstream page;
-  page << PageStart("twinraster bench") << "<h1>twinraster bench</h1>\n<p>" << Escape(result.machine) << "; medians of "
-       << Counted(result.runs, "run") << ", " << Number(result.seconds, 3) << " s in all.</p>\n";
+  page << markup::PageStart("twinraster bench") << "<h1>twinraster bench</h1>\n<p>" << markup::Escape(result.machine)
+       << "; medians of " << Counted(result.runs, "run") << ", " << markup::Number(result.seconds, 3)
+       << " s in all.</p>\n";
   page << Section(
       "Speed against error",
       "<p>Each way of computing the chain (compose-f64: F composed in double and rounded once; compose-f32: "
@@ -80,7 +81,7 @@ std::string BenchPageHtml(const BenchResult& result, const std::string& table) {
                   "<p>Per scene: each row's whole-frame time against the pixels where its image differs from the "
                   "truth's (log axes; 0 px on the bottom line).</p>\n");
   std::vector<std::string> scenes;
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
   }
   for (const std::string& scene : scenes) {
@@ -89,18 +90,19 @@ std::string BenchPageHtml(const BenchResult& result, const std::string& table) {
     plot.x = {"frame ms (median)", true, std::nullopt};
     plot.y = {"px differing from the truth", true, kPixelFloor};
     plot.width = 520, plot.height = 300;
-    for (const BenchRow& r : result.rows) {
+    for (const bench::BenchRow& r : result.rows) {
       if (r.scene != scene) continue;
       SeriesFor(plot.series, SeriesName(r), ColourOf(r.method))
           .points.push_back({r.frame_ms, static_cast<double>(r.image_error_px), scene});
     }
-    page << "<figure class=\"scene-chart\" data-scene=\"" << Escape(scene) << "\">" << PlotSvg(plot) << "</figure>\n";
+    page << "<figure class=\"scene-chart\" data-scene=\"" << markup::Escape(scene) << "\">" << PlotSvg(plot)
+         << "</figure>\n";
   }
-  page << Section("The table", "<pre>" + Escape(table) + "</pre>\n") << kPageEnd;
+  page << Section("The table", "<pre>" + markup::Escape(table) + "</pre>\n") << markup::kPageEnd;
   return page.str();
 }
 
-std::string ScaleChartSvg(const ScaleResult& result) {
+std::string ScaleChartSvg(const bench::ScaleResult& result) {
   Plot plot;
   plot.title = "Cost against instance count";
   plot.x = {"instances", true, std::nullopt};
@@ -108,7 +110,7 @@ std::string ScaleChartSvg(const ScaleResult& result) {
   plot.width = 700, plot.height = 420;
   PlotSeries gpu{"lavapipe, instanced", "#8c564b", {}, true}, pushed{"lavapipe, F per draw", "#e377c2", {}, true};
   PlotSeries twin{"CPU twin", "#9467bd", {}, true}, judge{"verifier", "#17becf", {}, true};
-  for (const ScaleRow& r : result.rows) {
+  for (const bench::ScaleRow& r : result.rows) {
     const double n = static_cast<double>(r.instances);
     const std::string label = Counted(r.instances, "instance");
     gpu.points.push_back({n, r.gpu_setup_ms + r.gpu_draw_ms, label});
@@ -120,7 +122,7 @@ std::string ScaleChartSvg(const ScaleResult& result) {
   return PlotSvg(plot);
 }
 
-std::string ScaleStagesSvg(const ScaleResult& result) {
+std::string ScaleStagesSvg(const bench::ScaleResult& result) {
   Plot plot;
   plot.title = "Every stage against instance count";
   plot.x = {"instances", true, std::nullopt};
@@ -129,18 +131,18 @@ std::string ScaleStagesSvg(const ScaleResult& result) {
   struct Stage {
     const char* name;
     const char* colour;
-    double ScaleRow::*value;
+    double bench::ScaleRow::*value;
   };
-  const Stage stages[] = {{"load", "#1f77b4", &ScaleRow::load_ms},
-                          {"host chain", "#ff7f0e", &ScaleRow::chain_ms},
-                          {"gpu set-up", "#2ca02c", &ScaleRow::gpu_setup_ms},
-                          {"gpu draw", "#8c564b", &ScaleRow::gpu_draw_ms},
-                          {"twin set-up", "#7f7f7f", &ScaleRow::twin_setup_ms},
-                          {"twin draw", "#9467bd", &ScaleRow::twin_draw_ms},
-                          {"png", "#bcbd22", &ScaleRow::png_ms}};
+  const Stage stages[] = {{"load", "#1f77b4", &bench::ScaleRow::load_ms},
+                          {"host chain", "#ff7f0e", &bench::ScaleRow::chain_ms},
+                          {"gpu set-up", "#2ca02c", &bench::ScaleRow::gpu_setup_ms},
+                          {"gpu draw", "#8c564b", &bench::ScaleRow::gpu_draw_ms},
+                          {"twin set-up", "#7f7f7f", &bench::ScaleRow::twin_setup_ms},
+                          {"twin draw", "#9467bd", &bench::ScaleRow::twin_draw_ms},
+                          {"png", "#bcbd22", &bench::ScaleRow::png_ms}};
   for (const Stage& stage : stages) {
     PlotSeries s{stage.name, stage.colour, {}, true};
-    for (const ScaleRow& r : result.rows) {
+    for (const bench::ScaleRow& r : result.rows) {
       s.points.push_back({static_cast<double>(r.instances), r.*stage.value, Counted(r.instances, "instance")});
     }
     plot.series.push_back(std::move(s));
@@ -148,17 +150,18 @@ std::string ScaleStagesSvg(const ScaleResult& result) {
   return PlotSvg(plot);
 }
 
-std::string ScalePageHtml(const ScaleResult& result, const std::string& table) {
+std::string ScalePageHtml(const bench::ScaleResult& result, const std::string& table) {
   std::ostringstream page;
-  page << PageStart("twinraster bench --scale") << "<h1>twinraster bench --scale</h1>\n<p>" << Escape(result.machine)
-       << "; cubes written out one instance each; medians of " << Counted(result.runs, "run") << ".</p>\n";
+  page << markup::PageStart("twinraster bench --scale") << "<h1>twinraster bench --scale</h1>\n<p>"
+       << markup::Escape(result.machine) << "; cubes written out one instance each; medians of "
+       << Counted(result.runs, "run") << ".</p>\n";
   page << Section("Lavapipe, the twin and the verifier",
                   "<p>Drawing a frame on lavapipe (F in an instance buffer, or pushed per draw as in Listing 10-5), on "
                   "the CPU twin, and judging the twin's image with the verifier.</p>\n");
   page << "<figure id=\"scale-chart\">" << ScaleChartSvg(result) << "</figure>\n";
   page << "<figure id=\"stages-chart\">" << ScaleStagesSvg(result) << "</figure>\n";
-  page << Section("The table", "<pre>" + Escape(table) + "</pre>\n") << kPageEnd;
+  page << Section("The table", "<pre>" + markup::Escape(table) + "</pre>\n") << markup::kPageEnd;
   return page.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

@@ -8,18 +8,18 @@
 
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 // Every method's vertex-stage time per million vertices against its vertex error, all scenes.
-std::string BenchChartSvg(const BenchResult& result);
+std::string BenchChartSvg(const bench::BenchResult& result);
 // The page: that chart, then one small plot per scene of each method's whole-frame time against
 // the pixels its image differs from the truth's, then the bench's own table.
-std::string BenchPageHtml(const BenchResult& result, const std::string& table);
+std::string BenchPageHtml(const bench::BenchResult& result, const std::string& table);
 
 // Time against instance count for lavapipe (instanced and F per draw), the twin and the verifier.
-std::string ScaleChartSvg(const ScaleResult& result);
+std::string ScaleChartSvg(const bench::ScaleResult& result);
 // Every stage against instance count.
-std::string ScaleStagesSvg(const ScaleResult& result);
-std::string ScalePageHtml(const ScaleResult& result, const std::string& table);
+std::string ScaleStagesSvg(const bench::ScaleResult& result);
+std::string ScalePageHtml(const bench::ScaleResult& result, const std::string& table);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

@@ -14,7 +14,7 @@
 #include <sstream>
 #include <utility>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 namespace {
 
@@ -32,9 +32,9 @@ std::string Sci(double x) {
   return buffer;
 }
 
-const BenchRow* Find(const BenchResult& result, const std::string& scene, const std::string& method,
-                     unsigned threads = 0) {
-  for (const BenchRow& r : result.rows)
+const bench::BenchRow* Find(const bench::BenchResult& result, const std::string& scene, const std::string& method,
+                            unsigned threads = 0) {
+  for (const bench::BenchRow& r : result.rows)
     if (r.scene == scene && r.method == method && (threads == 0 || r.threads == threads)) return &r;
   return nullptr;
 }
@@ -45,9 +45,9 @@ struct ZFightOnset {
 };
 
 // From the depth-ratio scenes' CPU twin rows ("hard/depth-ratio-1e-4" is near/far = 1e-4).
-ZFightOnset Onset(const BenchResult& result, bool reversed) {
+ZFightOnset Onset(const bench::BenchResult& result, bool reversed) {
   ZFightOnset onset;
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     const std::size_t at = r.scene.find("depth-ratio-1e-");
     if (at == std::string::npos || r.method != "cpu-twin" || !r.z_fighting_px) continue;
     if ((r.scene.find("reversed") != std::string::npos) != reversed) continue;
@@ -65,24 +65,24 @@ void PutSection(std::ostream& out, const std::string& heading, const std::string
 }
 
 // The scene with the most vertices gives the steadiest per-vertex cost.
-const BenchRow* Largest(const BenchResult& result) {
-  const BenchRow* largest = nullptr;
-  for (const BenchRow& r : result.rows)
+const bench::BenchRow* Largest(const bench::BenchResult& result) {
+  const bench::BenchRow* largest = nullptr;
+  for (const bench::BenchRow& r : result.rows)
     if (!largest || r.vertices > largest->vertices) largest = &r;
   return largest;
 }
 
-std::vector<std::string> Scenes(const BenchResult& result) {
+std::vector<std::string> Scenes(const bench::BenchResult& result) {
   std::vector<std::string> scenes;
-  for (const BenchRow& r : result.rows)
+  for (const bench::BenchRow& r : result.rows)
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
   return scenes;
 }
 
 // The thread counts `device`'s rows were measured with.
-std::vector<unsigned> ThreadCounts(const BenchResult& result, std::string_view device) {
+std::vector<unsigned> ThreadCounts(const bench::BenchResult& result, std::string_view device) {
   std::vector<unsigned> counts;
-  for (const BenchRow& r : result.rows)
+  for (const bench::BenchRow& r : result.rows)
     if (r.method == device && std::find(counts.begin(), counts.end(), r.threads) == counts.end())
       counts.push_back(r.threads);
   return counts;
@@ -103,27 +103,27 @@ constexpr DevicePair kDevicePairs[] = {
 
 }  // namespace
 
-nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
+nlohmann::ordered_json BenchSummaryJson(const bench::BenchResult& result) {
   using Json = nlohmann::ordered_json;
   const auto number_or_null = [](std::optional<double> x) { return x ? Json(*x) : Json(nullptr); };
   // Every key is present whatever was run (docs/json-output.md): null stands for "not measured".
   Json j;
   Json& far = j["far_1e7_vertex_error_px"] = Json::object();
-  for (VertexMethod m : kAllMethods) {
-    const std::string method(MethodName(m));
-    const BenchRow* r = Find(result, "hard/far-1e7", method);
+  for (bench::VertexMethod m : bench::kAllMethods) {
+    const std::string method(bench::MethodName(m));
+    const bench::BenchRow* r = Find(result, "hard/far-1e7", method);
     far[method] = number_or_null(r && r->vertex_error_px >= 0 ? std::optional(r->vertex_error_px) : std::nullopt);
   }
   for (const bool reversed : {false, true}) {
     j["z_fighting_onset_near_over_far"][reversed ? "reversed" : "standard"] =
         number_or_null(Onset(result, reversed).ratio);
   }
-  const BenchRow* largest = Largest(result);
+  const bench::BenchRow* largest = Largest(result);
   Json& per_million = j["vertex_ms_per_million_vertices"] = Json::object();
   per_million["scene"] = largest ? Json(largest->scene) : Json(nullptr);
-  for (VertexMethod m : kAllMethods) {
-    const std::string method(MethodName(m));
-    const BenchRow* r = largest ? Find(result, largest->scene, method) : nullptr;
+  for (bench::VertexMethod m : bench::kAllMethods) {
+    const std::string method(bench::MethodName(m));
+    const bench::BenchRow* r = largest ? Find(result, largest->scene, method) : nullptr;
     per_million[method] = number_or_null(r && r->vertex_ms >= 0 && r->vertices > 0
                                              ? std::optional(r->vertex_ms * 1e6 / double(r->vertices))
                                              : std::nullopt);
@@ -133,8 +133,8 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
     Json& ratios = j[std::string("cpu_twin_over_") + pair.key] = Json::array();
     for (const std::string& scene : Scenes(result)) {
       for (unsigned threads : ThreadCounts(result, pair.device)) {
-        const BenchRow* twin = Find(result, scene, pair.twin, threads);
-        const BenchRow* gpu = Find(result, scene, pair.device, threads);
+        const bench::BenchRow* twin = Find(result, scene, pair.twin, threads);
+        const bench::BenchRow* gpu = Find(result, scene, pair.device, threads);
         if (!twin || !gpu) continue;
         ratios.push_back({{"scene", scene},
                           {"threads", threads},
@@ -147,11 +147,11 @@ nlohmann::ordered_json BenchSummaryJson(const BenchResult& result) {
   return j;
 }
 
-std::string BenchSummary(const BenchResult& result) {
+std::string BenchSummary(const bench::BenchResult& result) {
   std::ostringstream out, lines;
-  for (VertexMethod m : kAllMethods) {
-    const std::string method(MethodName(m));
-    if (const BenchRow* r = Find(result, "hard/far-1e7", method))
+  for (bench::VertexMethod m : bench::kAllMethods) {
+    const std::string method(bench::MethodName(m));
+    if (const bench::BenchRow* r = Find(result, "hard/far-1e7", method))
       lines << "  " << method << ": " << Sci(r->vertex_error_px) << " px"
             << (r->vertex_error_px < 1.0 / 256 ? "  (under 1/256 px)" : "") << "\n";
   }
@@ -166,10 +166,10 @@ std::string BenchSummary(const BenchResult& result) {
   }
   PutSection(out, "Z-fighting onset (D32_SFLOAT, plates 0.02 apart at ~45 units; largest near/far that fights):",
              std::exchange(lines, {}).str());
-  if (const BenchRow* largest = Largest(result)) {
-    for (VertexMethod m : kAllMethods) {
-      const std::string method(MethodName(m));
-      if (const BenchRow* r = Find(result, largest->scene, method))
+  if (const bench::BenchRow* largest = Largest(result)) {
+    for (bench::VertexMethod m : bench::kAllMethods) {
+      const std::string method(bench::MethodName(m));
+      if (const bench::BenchRow* r = Find(result, largest->scene, method))
         lines << "  " << method << ": " << Fixed(r->vertex_ms * 1e6 / double(r->vertices), 2) << "\n";
     }
     PutSection(out,
@@ -190,8 +190,8 @@ std::string BenchSummary(const BenchResult& result) {
       std::snprintf(line, sizeof line, "  %-44s", scene.c_str());
       out << line;
       for (unsigned threads : counts) {
-        const BenchRow* twin = Find(result, scene, pair.twin, threads);
-        const BenchRow* gpu = Find(result, scene, pair.device, threads);
+        const bench::BenchRow* twin = Find(result, scene, pair.twin, threads);
+        const bench::BenchRow* gpu = Find(result, scene, pair.device, threads);
         std::snprintf(line, sizeof line, "  %9s", twin && gpu ? Fixed(twin->frame_ms / gpu->frame_ms, 3).c_str() : "-");
         out << line;
       }
@@ -201,13 +201,13 @@ std::string BenchSummary(const BenchResult& result) {
   return out.str();
 }
 
-std::string BenchTable(const BenchResult& result) {
+std::string BenchTable(const bench::BenchResult& result) {
   std::ostringstream out;
   char line[512];
   std::snprintf(line, sizeof line, "%-44s %-20s %3s %10s %10s %12s %10s %9s %19s\n", "scene", "method", "thr",
                 "vertex ms", "frame ms", "vertex err px", "image err", "z-fight", "colour err (pixels)");
   out << line;
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     const std::string colour =
         r.colour_error ? std::to_string(*r.colour_error) + " (" + std::to_string(r.colour_pixels) + ")" : "-";
     std::snprintf(line, sizeof line, "%-44s %-20s %3u %10s %10s %12s %10llu %9s %19s\n", r.scene.c_str(),
@@ -225,12 +225,12 @@ std::string BenchTable(const BenchResult& result) {
   return out.str();
 }
 
-std::string BenchCsv(const BenchResult& result) {
+std::string BenchCsv(const bench::BenchResult& result) {
   std::ostringstream out;
   out << "scene,method,threads,width,height,vertices,triangles,vertex_ms,frame_ms,vertex_error_px,image_error_px,"
          "z_fighting_px,colour_error,colour_pixels\n";
   out.precision(9);
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     out << r.scene << ',' << r.method << ',' << r.threads << ',' << r.width << ',' << r.height << ',' << r.vertices
         << ',' << r.triangles << ',' << (r.vertex_ms < 0 ? std::string() : std::to_string(r.vertex_ms)) << ','
         << r.frame_ms << ',' << (r.vertex_error_px < 0 ? std::string() : Sci(r.vertex_error_px)) << ','
@@ -241,7 +241,7 @@ std::string BenchCsv(const BenchResult& result) {
   return out.str();
 }
 
-nlohmann::ordered_json BenchJson(const BenchResult& result) {
+nlohmann::ordered_json BenchJson(const bench::BenchResult& result) {
   nlohmann::ordered_json j;
   j["format"] = kBenchJsonFormat;
   j["machine"] = result.machine;
@@ -249,7 +249,7 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
   j["seconds"] = result.seconds;
   j["summary"] = BenchSummaryJson(result);
   j["rows"] = nlohmann::ordered_json::array();
-  for (const BenchRow& r : result.rows) {
+  for (const bench::BenchRow& r : result.rows) {
     nlohmann::ordered_json row = {
         {"scene", r.scene},         {"method", r.method},     {"threads", r.threads},
         {"width", r.width},         {"height", r.height},     {"vertices", r.vertices},
@@ -265,7 +265,7 @@ nlohmann::ordered_json BenchJson(const BenchResult& result) {
   return j;
 }
 
-std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t total) {
+std::string BenchProgressLine(const bench::BenchRow& row, std::size_t done, std::size_t total) {
   const std::string count = std::to_string(total);
   std::string number = std::to_string(done);
   number.insert(0, count.size() > number.size() ? count.size() - number.size() : 0, ' ');  // rows line up
@@ -282,4 +282,4 @@ std::string BenchProgressLine(const BenchRow& row, std::size_t done, std::size_t
   return line;
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

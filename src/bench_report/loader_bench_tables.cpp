@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 namespace {
 
-double PerTriangle(double value, const LoaderBenchResult& result) {
+double PerTriangle(double value, const bench::LoaderBenchResult& result) {
   return result.triangles ? value / static_cast<double>(result.triangles) : 0.0;
 }
 
@@ -18,13 +18,15 @@ double Ratio(double value, double reference) { return reference > 0 ? value / re
 
 double Kib(std::uint64_t bytes) { return static_cast<double>(bytes) / 1024; }
 
-std::string KibText(const ProcessCost& cost) { return cost.max_rss_kib ? std::to_string(*cost.max_rss_kib) : "-"; }
+std::string KibText(const bench::ProcessCost& cost) {
+  return cost.max_rss_kib ? std::to_string(*cost.max_rss_kib) : "-";
+}
 
-nlohmann::ordered_json KibJson(const ProcessCost& cost) {
+nlohmann::ordered_json KibJson(const bench::ProcessCost& cost) {
   return cost.max_rss_kib ? nlohmann::ordered_json(*cost.max_rss_kib) : nlohmann::ordered_json(nullptr);
 }
 
-void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
+void PutProcesses(std::ostringstream& s, const bench::LoaderBenchResult& result) {
   s << "\nWhole processes: wall time, medians of " << Counted(result.runs, "run")
     << " in turn; peak resident memory by /usr/bin/time -f %M, medians of " << Counted(result.memory_runs, "run")
     << " (- without /usr/bin/time): render -q FILE --backend cpu -o OUT.png; explain FILE --json (its "
@@ -36,7 +38,7 @@ void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
   std::snprintf(line, sizeof line, "%-20s | %10.1f %12s | %10s %12s\n", "--help (the floor)", result.floor->ms,
                 KibText(*result.floor).c_str(), "", "");
   s << line;
-  for (const LoaderRow& r : result.rows) {
+  for (const bench::LoaderRow& r : result.rows) {
     std::snprintf(line, sizeof line, "%-20s | %10.1f %12s | %10.1f %12s\n", r.loader.c_str(), r.processes->render.ms,
                   KibText(r.processes->render).c_str(), r.processes->explain.ms, KibText(r.processes->explain).c_str());
     s << line;
@@ -45,7 +47,7 @@ void PutProcesses(std::ostringstream& s, const LoaderBenchResult& result) {
 
 }  // namespace
 
-std::string LoaderBenchTable(const LoaderBenchResult& result) {
+std::string LoaderBenchTable(const bench::LoaderBenchResult& result) {
   std::ostringstream s;
   s << "Loaders: one scene from each file, file to Scene (LoadSceneOrObj); time: medians of "
     << Counted(result.runs, "run") << " in turn; memory: medians of "
@@ -58,8 +60,8 @@ std::string LoaderBenchTable(const LoaderBenchResult& result) {
                 "load ms", "ns/tri", "ns/B", "ratio", "peak KiB", "B/tri", "ratio", "heap KiB", "B/tri", "ratio",
                 "same Scene?");
   s << line;
-  const LoaderRow& first = result.rows.front();
-  for (const LoaderRow& r : result.rows) {
+  const bench::LoaderRow& first = result.rows.front();
+  for (const bench::LoaderRow& r : result.rows) {
     char same[96];
     if (&r == &first)
       std::snprintf(same, sizeof same, "(the reference)");
@@ -86,10 +88,10 @@ std::string LoaderBenchTable(const LoaderBenchResult& result) {
   return s.str();
 }
 
-nlohmann::ordered_json LoaderBenchJson(const LoaderBenchResult& result) {
+nlohmann::ordered_json LoaderBenchJson(const bench::LoaderBenchResult& result) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  const LoaderRow& first = result.rows.front();
-  for (const LoaderRow& r : result.rows) {
+  const bench::LoaderRow& first = result.rows.front();
+  for (const bench::LoaderRow& r : result.rows) {
     const double peak = static_cast<double>(r.peak_rss_bytes), heap = static_cast<double>(r.scene_heap_bytes);
     nlohmann::ordered_json processes = nullptr;
     if (r.processes) {
@@ -131,4 +133,4 @@ nlohmann::ordered_json LoaderBenchJson(const LoaderBenchResult& result) {
           {"process_floor", floor}};
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 namespace {
 
@@ -16,22 +16,22 @@ namespace {
 struct Stage {
   const char* key;
   const char* label;
-  double ScaleRow::*value;
+  double bench::ScaleRow::*value;
 };
 constexpr std::array<Stage, 9> kStages = {{
-    {"load_ms", "load", &ScaleRow::load_ms},
-    {"chain_ms", "host chain", &ScaleRow::chain_ms},
-    {"gpu_setup_ms", "gpu set-up", &ScaleRow::gpu_setup_ms},
-    {"gpu_draw_ms", "gpu draw", &ScaleRow::gpu_draw_ms},
-    {"gpu_per_draw_ms", "gpu, F per draw", &ScaleRow::gpu_per_draw_ms},
-    {"twin_setup_ms", "twin set-up", &ScaleRow::twin_setup_ms},
-    {"twin_draw_ms", "twin draw", &ScaleRow::twin_draw_ms},
-    {"png_ms", "png", &ScaleRow::png_ms},
-    {"verify_ms", "verify", &ScaleRow::verify_ms},
+    {"load_ms", "load", &bench::ScaleRow::load_ms},
+    {"chain_ms", "host chain", &bench::ScaleRow::chain_ms},
+    {"gpu_setup_ms", "gpu set-up", &bench::ScaleRow::gpu_setup_ms},
+    {"gpu_draw_ms", "gpu draw", &bench::ScaleRow::gpu_draw_ms},
+    {"gpu_per_draw_ms", "gpu, F per draw", &bench::ScaleRow::gpu_per_draw_ms},
+    {"twin_setup_ms", "twin set-up", &bench::ScaleRow::twin_setup_ms},
+    {"twin_draw_ms", "twin draw", &bench::ScaleRow::twin_draw_ms},
+    {"png_ms", "png", &bench::ScaleRow::png_ms},
+    {"verify_ms", "verify", &bench::ScaleRow::verify_ms},
 }};
 
 // The fixed costs: what a scene costs beyond its drawing, as whole processes.
-void PutProcessTimes(std::ostringstream& s, const ProcessTimes& p) {
+void PutProcessTimes(std::ostringstream& s, const bench::ProcessTimes& p) {
   char line[256];
   s << "Fixed costs: whole processes, medians of " << Counted(p.runs, "run") << " in turn (the batch: " << p.batch_runs
     << ")\n";
@@ -60,18 +60,18 @@ void PutProcessTimes(std::ostringstream& s, const ProcessTimes& p) {
 }
 
 // MB of pixels (RGBA) encoded per second.
-double PngMegabytesPerSecond(const ScaleResult& result, const PngEncoding& e) {
+double PngMegabytesPerSecond(const bench::ScaleResult& result, const bench::PngEncoding& e) {
   return e.ms > 0 ? static_cast<double>(result.width) * result.height * 4 / 1e6 / (e.ms / 1e3) : 0;
 }
 
-void PutPngEncodings(std::ostringstream& s, const ScaleResult& result) {
+void PutPngEncodings(std::ostringstream& s, const bench::ScaleResult& result) {
   s << "PNG: each size's frame (the twin's, " << result.width << "x" << result.height
     << ") by each encoder, medians of " << Counted(result.runs, "run") << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%10s  %-30s %9s %12s %9s\n", "instances", "encoder", "ms", "bytes", "MB/s");
   s << line;
-  for (const ScaleRow& r : result.rows) {
-    for (const PngEncoding& e : r.png_encoders) {
+  for (const bench::ScaleRow& r : result.rows) {
+    for (const bench::PngEncoding& e : r.png_encoders) {
       std::snprintf(line, sizeof line, "%10zu  %-30s %9.2f %12zu %9.0f\n", r.instances, e.encoder.c_str(), e.ms,
                     e.bytes, PngMegabytesPerSecond(result, e));
       s << line;
@@ -81,7 +81,7 @@ void PutPngEncodings(std::ostringstream& s, const ScaleResult& result) {
 }
 
 // The fixed costs and the PNG encoders, after the stages.
-std::string ExtraTables(const ScaleResult& result) {
+std::string ExtraTables(const bench::ScaleResult& result) {
   std::ostringstream s;
   if (result.processes) {
     PutProcessTimes(s, *result.processes);
@@ -97,7 +97,7 @@ std::string ExtraTables(const ScaleResult& result) {
 
 }  // namespace
 
-std::string ScaleTable(const ScaleResult& result) {
+std::string ScaleTable(const bench::ScaleResult& result) {
   std::ostringstream s;
   s << "Scale: cubes written out one instance each, medians of " << Counted(result.runs, "run") << "; "
     << result.machine << "\n";
@@ -106,7 +106,7 @@ std::string ScaleTable(const ScaleResult& result) {
                 "triangles", "JSON MB", "load", "chain", "gpu setup", "gpu draw", "per-draw", "twin set", "twin draw",
                 "png", "verify", "peak MB", "gpu == twin");
   s << line;
-  for (const ScaleRow& r : result.rows) {
+  for (const bench::ScaleRow& r : result.rows) {
     std::snprintf(line, sizeof line,
                   "%10zu %10zu %9.1f |%8.1f %8.1f %9.1f %9.1f %9.1f %9.1f %9.1f %7.1f %8.1f |%8.0f  %s\n", r.instances,
                   r.triangles, static_cast<double>(r.json_bytes) / 1e6, r.load_ms, r.chain_ms, r.gpu_setup_ms,
@@ -125,12 +125,12 @@ std::string ScaleTable(const ScaleResult& result) {
   return s.str();
 }
 
-std::string ScaleCsv(const ScaleResult& result) {
+std::string ScaleCsv(const bench::ScaleResult& result) {
   std::ostringstream s;
   s << "instances,triangles,json_bytes,threads";
   for (const Stage& stage : kStages) s << "," << stage.key;
   s << ",peak_mib,identical\n";
-  for (const ScaleRow& r : result.rows) {
+  for (const bench::ScaleRow& r : result.rows) {
     s << r.instances << "," << r.triangles << "," << r.json_bytes << "," << r.threads;
     for (const Stage& stage : kStages) s << "," << r.*stage.value;
     s << "," << r.peak_mib << "," << (r.identical ? "true" : "false") << "\n";
@@ -138,13 +138,13 @@ std::string ScaleCsv(const ScaleResult& result) {
   return s.str();
 }
 
-nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
+nlohmann::ordered_json ScaleJson(const bench::ScaleResult& result) {
   nlohmann::ordered_json j;
   j["format"] = kScaleJsonFormat;
   j["machine"] = result.machine;
   j["runs"] = result.runs;
   j["rows"] = nlohmann::ordered_json::array();
-  for (const ScaleRow& r : result.rows) {
+  for (const bench::ScaleRow& r : result.rows) {
     nlohmann::ordered_json row;
     row["instances"] = r.instances;
     row["triangles"] = r.triangles;
@@ -154,7 +154,7 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
     row["peak_mib"] = r.peak_mib;
     row["identical"] = r.identical;
     row["png_encoders"] = nlohmann::ordered_json::array();
-    for (const PngEncoding& e : r.png_encoders) {
+    for (const bench::PngEncoding& e : r.png_encoders) {
       row["png_encoders"].push_back(
           {{"encoder", e.encoder}, {"ms", e.ms}, {"bytes", e.bytes}, {"mb_per_s", PngMegabytesPerSecond(result, e)}});
     }
@@ -178,4 +178,4 @@ nlohmann::ordered_json ScaleJson(const ScaleResult& result) {
   return j;
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 struct PlotPoint {
   double x = 0, y = 0;
@@ -44,4 +44,4 @@ struct Plot {
 // A standalone <svg> element (with xmlns), usable inline in HTML or as an .svg file.
 std::string PlotSvg(const Plot& plot);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::bench_report {
 
 namespace {
 
 // The same scenes as whole processes: what a user running `render` and then `verify` waits for.
-void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
+void PutProcesses(std::ostringstream& s, const bench::VerifyBenchResult& result) {
   s << "\nWhole processes, medians of " << Counted(result.runs, "run")
     << " in turn: render SCENE --backend cpu -o OUT.png; verify SCENE IMAGE.png of the twin's image "
        "(passes) and of it shifted one pixel right (fails)\n";
@@ -22,7 +22,7 @@ void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
   s << line;
   std::snprintf(line, sizeof line, "%-36s | %9s | %19s | %19s\n", "", "", "passing", "failing");
   s << line;
-  for (const VerifyProcessRow& r : result.processes) {
+  for (const bench::VerifyProcessRow& r : result.processes) {
     std::snprintf(line, sizeof line, "%-36s | %9.1f | %12.1f %6.2f | %12.1f %6.2f\n",
                   std::filesystem::path(r.scene).filename().string().c_str(), r.render_ms, r.verify_passing_ms,
                   r.PassingRatio(), r.verify_failing_ms, r.FailingRatio());
@@ -32,7 +32,7 @@ void PutProcesses(std::ostringstream& s, const VerifyBenchResult& result) {
 
 }  // namespace
 
-std::string VerifyBenchTable(const VerifyBenchResult& result) {
+std::string VerifyBenchTable(const bench::VerifyBenchResult& result) {
   std::ostringstream s;
   s << "Verify: the twin's render against the verifier's judgement of it, medians of " << Counted(result.runs, "run")
     << "; " << result.machine << "\n";
@@ -40,7 +40,7 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   std::snprintf(line, sizeof line, "%-36s %11s %10s | %9s %10s %6s | %10s %10s\n", "scene", "size", "triangles",
                 "twin ms", "verify ms", "ratio", "uncertain", "violations");
   s << line;
-  for (const VerifyBenchRow& r : result.rows) {
+  for (const bench::VerifyBenchRow& r : result.rows) {
     const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
     const double percent = r.covered ? 100.0 * double(r.uncertain) / double(r.covered) : 0.0;
     char uncertain[32];
@@ -52,7 +52,8 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   }
   // The twin chooses its threads per scene (one for a small frame), so each row's are given.
   std::string threads;
-  for (const VerifyBenchRow& r : result.rows) threads += (threads.empty() ? "" : ", ") + std::to_string(r.twin_threads);
+  for (const bench::VerifyBenchRow& r : result.rows)
+    threads += (threads.empty() ? "" : ", ") + std::to_string(r.twin_threads);
   s << "(twin: RenderOnCpu as render runs it, row by row, on each scene's threads: " << threads
     << "; verify: VerifyImage of that image at 8 subpixel bits, one band of rows per hardware "
        "thread; uncertain: of the covered pixels)\n";
@@ -60,9 +61,9 @@ std::string VerifyBenchTable(const VerifyBenchResult& result) {
   return s.str();
 }
 
-nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
+nlohmann::ordered_json VerifyBenchJson(const bench::VerifyBenchResult& result) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (const VerifyBenchRow& r : result.rows) {
+  for (const bench::VerifyBenchRow& r : result.rows) {
     rows.push_back({{"scene", r.scene},
                     {"width", r.width},
                     {"height", r.height},
@@ -76,7 +77,7 @@ nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
                     {"violations", r.violations}});
   }
   nlohmann::ordered_json processes = nlohmann::ordered_json::array();
-  for (const VerifyProcessRow& r : result.processes) {
+  for (const bench::VerifyProcessRow& r : result.processes) {
     processes.push_back({{"scene", r.scene},
                          {"render_ms", r.render_ms},
                          {"verify_passing_ms", r.verify_passing_ms},
@@ -91,4 +92,4 @@ nlohmann::ordered_json VerifyBenchJson(const VerifyBenchResult& result) {
           {"processes", processes}};
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::bench_report

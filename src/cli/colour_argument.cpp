@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -78,4 +78,4 @@ double ParsePercentArgument(const std::string& option, const std::string& value)
   return v;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -7,11 +7,11 @@
 
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // "255,0,255", "255, 0, 255" or "#ff00ff" (either case); throws UsageError otherwise.
 Rgb8 ParseColourArgument(const std::string& option, const std::string& value);
 // A decimal number in 0..100 ("0.5", "2"); throws UsageError otherwise.
 double ParsePercentArgument(const std::string& option, const std::string& value);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -25,7 +25,7 @@
 #include <iostream>
 #include <memory>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -40,8 +40,8 @@ struct BenchArguments {
   bool scale = false;
   bool verify = false;
   bool loaders = false;
-  std::string gltf = kDefaultLoaderBenchAsset;  // --loaders' asset
-  std::optional<std::string> html, svg;         // the page, the plot
+  std::string gltf = bench::kDefaultLoaderBenchAsset;  // --loaders' asset
+  std::optional<std::string> html, svg;                // the page, the plot
   std::vector<std::size_t> counts = {1'000, 10'000, 100'000, 1'000'000};
   std::size_t batch_scenes = 1000;  // --scale's batch of small scenes
 };
@@ -65,7 +65,7 @@ std::ostream& TableStream(const BenchArguments& a) {
 // `in_out`: the texts of OutFiles(a), in order.
 void WriteTogether(const BenchArguments& a, const std::vector<std::string>& in_out, const std::string& page,
                    const std::string& plot) {
-  std::vector<StagedFile> staged;
+  std::vector<files::StagedFile> staged;
   if (a.out) {
     const std::vector<std::string> names = OutFiles(a);
     for (std::size_t i = 0; i < names.size() && i < in_out.size(); ++i) {
@@ -74,7 +74,7 @@ void WriteTogether(const BenchArguments& a, const std::vector<std::string>& in_o
   }
   if (a.html && !ToStandardOutput(a.html)) staged.emplace_back(*a.html, page);
   if (a.svg && !ToStandardOutput(a.svg)) staged.emplace_back(*a.svg, plot);
-  for (StagedFile& file : staged) file.Commit();
+  for (files::StagedFile& file : staged) file.Commit();
   if (ToStandardOutput(a.html)) WriteStandardOutput(page);
   if (ToStandardOutput(a.svg)) WriteStandardOutput(plot);
 }
@@ -100,44 +100,44 @@ void PrepareOutputs(const BenchArguments& a) {
 
 // bench --scale: the million cubes at growing instance counts.
 int BenchScale(const BenchArguments& a) {
-  ScaleOptions options;
+  bench::ScaleOptions options;
   options.counts = a.counts;
   options.runs = a.runs;
   // Fixed costs: this very executable, started as a user starts it, on the suite's chapter scene
   // (not measured without it: the table says so).
   const std::filesystem::path chapter = std::filesystem::path(a.scenes) / "cgfs-transforms.json";
   if (std::filesystem::is_regular_file(chapter)) {
-    options.processes = ProcessBenchOptions{.executable = std::filesystem::read_symlink("/proc/self/exe"),
-                                            .chapter_scene = chapter,
-                                            .runs = std::max(a.runs, 5),
-                                            .batch_runs = std::min(a.runs, 5),
-                                            .batch_scenes = a.batch_scenes};
+    options.processes = bench::ProcessBenchOptions{.executable = std::filesystem::read_symlink("/proc/self/exe"),
+                                                   .chapter_scene = chapter,
+                                                   .runs = std::max(a.runs, 5),
+                                                   .batch_runs = std::min(a.runs, 5),
+                                                   .batch_scenes = a.batch_scenes};
   }
   Progress progress = Progress::OnStandardError(a.quiet);
   if (progress.active()) {
-    options.on_row = [&progress](const ScaleRow& row, std::size_t done, std::size_t total) {
+    options.on_row = [&progress](const bench::ScaleRow& row, std::size_t done, std::size_t total) {
       progress.Line("scale " + std::to_string(done) + "/" + std::to_string(total) + ": " +
                     Counted(row.instances, "instance"));
     };
   }
-  const ScaleResult result = RunScaleBench(options);
-  const std::string table = report::ScaleTable(result), plot = report::ScaleChartSvg(result);
-  const std::string page = report::ScalePageHtml(result, table);
+  const bench::ScaleResult result = bench::RunScaleBench(options);
+  const std::string table = bench_report::ScaleTable(result), plot = bench_report::ScaleChartSvg(result);
+  const std::string page = bench_report::ScalePageHtml(result, table);
   WriteTogether(a,
-                {report::ScaleCsv(result), plot, report::ScaleStagesSvg(result), page,
-                 report::ScaleJson(result).dump(2) + "\n", table},
+                {bench_report::ScaleCsv(result), plot, bench_report::ScaleStagesSvg(result), page,
+                 bench_report::ScaleJson(result).dump(2) + "\n", table},
                 page, plot);
   if (a.json)
-    std::cout << report::ScaleJson(result).dump(2) << "\n";
+    std::cout << bench_report::ScaleJson(result).dump(2) << "\n";
   else
-    TableStream(a) << report::ScaleTable(result);
+    TableStream(a) << bench_report::ScaleTable(result);
   return kExitOk;
 }
 
 // bench --verify: the twin's render against the verifier's judgement of it.
 int BenchVerify(const BenchArguments& a) {
   std::vector<std::filesystem::path> scenes;
-  for (const auto& file : DefaultVerifyBenchScenes(a.scenes)) {
+  for (const auto& file : bench::DefaultVerifyBenchScenes(a.scenes)) {
     if (!a.only || file.string().find(*a.only) != std::string::npos) scenes.push_back(file);
   }
   if (scenes.empty()) throw UsageError("--only " + a.only.value_or("") + ": none of the verify bench's scenes");
@@ -149,13 +149,15 @@ int BenchVerify(const BenchArguments& a) {
   Progress progress = Progress::OnStandardError(a.quiet);
   progress.Status("verify bench: " + Counted(scenes.size(), "scene") + ", " + Counted(a.runs, "run") + "...");
   // The whole processes are this very executable, started as a user starts it.
-  const VerifyBenchResult result = RunVerifyBench(scenes, a.runs, std::filesystem::read_symlink("/proc/self/exe"));
+  const bench::VerifyBenchResult result =
+      bench::RunVerifyBench(scenes, a.runs, std::filesystem::read_symlink("/proc/self/exe"));
   progress.Clear();
-  WriteTogether(a, {report::VerifyBenchJson(result).dump(2) + "\n", report::VerifyBenchTable(result)}, "", "");
+  WriteTogether(a, {bench_report::VerifyBenchJson(result).dump(2) + "\n", bench_report::VerifyBenchTable(result)}, "",
+                "");
   if (a.json)
-    std::cout << report::VerifyBenchJson(result).dump(2) << "\n";
+    std::cout << bench_report::VerifyBenchJson(result).dump(2) << "\n";
   else
-    std::cout << report::VerifyBenchTable(result);
+    std::cout << bench_report::VerifyBenchTable(result);
   return kExitOk;
 }
 
@@ -164,16 +166,18 @@ int BenchLoaders(const BenchArguments& a) {
   if (!std::filesystem::is_regular_file(a.gltf)) {
     throw UsageError(
         "--gltf " + a.gltf + ": no such file" +
-        (a.gltf == kDefaultLoaderBenchAsset ? " (Debian's assimp-testmodels: scripts/setup.sh --tests)" : ""));
+        (a.gltf == bench::kDefaultLoaderBenchAsset ? " (Debian's assimp-testmodels: scripts/setup.sh --tests)" : ""));
   }
   Progress progress = Progress::OnStandardError(a.quiet);
   progress.Status("loaders bench: " + a.gltf + ", " + Counted(a.runs, "run") + "...");
-  const LoaderBenchResult result = RunLoaderBench({.gltf = a.gltf,
-                                                   .runs = a.runs,
-                                                   .memory_runs = std::min(a.runs, 5),
-                                                   .executable = std::filesystem::read_symlink("/proc/self/exe")});
+  const bench::LoaderBenchResult result =
+      bench::RunLoaderBench({.gltf = a.gltf,
+                             .runs = a.runs,
+                             .memory_runs = std::min(a.runs, 5),
+                             .executable = std::filesystem::read_symlink("/proc/self/exe")});
   progress.Clear();
-  const std::string table = report::LoaderBenchTable(result), json = report::LoaderBenchJson(result).dump(2) + "\n";
+  const std::string table = bench_report::LoaderBenchTable(result),
+                    json = bench_report::LoaderBenchJson(result).dump(2) + "\n";
   WriteTogether(a, {json, table}, "", "");
   std::cout << (a.json ? json : table);
   return kExitOk;
@@ -189,7 +193,7 @@ int Bench(const BenchArguments& a) {
   if (a.scale) return BenchScale(a);
   if (a.verify) return BenchVerify(a);
   if (a.loaders) return BenchLoaders(a);
-  BenchOptions options;
+  bench::BenchOptions options;
   options.runs = a.runs;
   options.only = a.only;
   options.methods = a.methods;
@@ -200,18 +204,19 @@ int Bench(const BenchArguments& a) {
   }
   Progress progress = Progress::OnStandardError(a.quiet);
   if (progress.active()) {
-    options.on_row = [&progress](const BenchRow& row, std::size_t done, std::size_t total) {
-      progress.Line(report::BenchProgressLine(row, done, total));
+    options.on_row = [&progress](const bench::BenchRow& row, std::size_t done, std::size_t total) {
+      progress.Line(bench_report::BenchProgressLine(row, done, total));
     };
   }
-  const BenchResult result = RunBench(options);
-  const std::string table = report::BenchTable(result), plot = report::BenchChartSvg(result);
-  const std::string page = report::BenchPageHtml(result, table);
-  WriteTogether(a, {report::BenchCsv(result), plot, page, report::BenchJson(result).dump(2) + "\n", table}, page, plot);
+  const bench::BenchResult result = bench::RunBench(options);
+  const std::string table = bench_report::BenchTable(result), plot = bench_report::BenchChartSvg(result);
+  const std::string page = bench_report::BenchPageHtml(result, table);
+  WriteTogether(a, {bench_report::BenchCsv(result), plot, page, bench_report::BenchJson(result).dump(2) + "\n", table},
+                page, plot);
   if (a.json) {
-    std::cout << report::BenchJson(result).dump(2) << "\n";
+    std::cout << bench_report::BenchJson(result).dump(2) << "\n";
   } else {
-    TableStream(a) << report::BenchTable(result);
+    TableStream(a) << bench_report::BenchTable(result);
   }
   return kExitOk;
 }
@@ -239,7 +244,7 @@ CommandRun AddBenchCommand(CLI::App& app) {
   ExpectIntegerIn(command->add_option("--runs", a->runs, "timed runs per median (default: 15)")->type_name("N"), 1,
                   1000);
   command->add_option("--only", a->only, "only the scenes whose path contains TEXT")->type_name("TEXT");
-  std::vector<std::string> methods = BenchMethodNames();
+  std::vector<std::string> methods = bench::BenchMethodNames();
   std::string method_list;
   for (const std::string& m : methods) method_list += (method_list.empty() ? "" : ", ") + m;
   ExpectOneOf(
@@ -268,7 +273,7 @@ CommandRun AddBenchCommand(CLI::App& app) {
   command
       ->add_option("--gltf", a->gltf,
                    std::string("with --loaders: the .glb or .gltf file (default: assimp-testmodels'\n") +
-                       kDefaultLoaderBenchAsset + ")")
+                       bench::kDefaultLoaderBenchAsset + ")")
       ->type_name("FILE");
   command->add_option("--counts", a->counts, "with --scale: the instance counts (default: 1000,10000,100000,1000000)")
       ->type_name("N,N")
@@ -281,4 +286,4 @@ CommandRun AddBenchCommand(CLI::App& app) {
   return [a] { return Bench(*a); };
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -15,7 +15,7 @@
 #include <iostream>
 #include <memory>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -47,15 +47,15 @@ void PrepareDiff(const CompareArguments& args) {
 
 // Every row of a file read and checked, none kept: a file of another size is still refused
 // when it is corrupt, as one compared would be.
-void CheckRows(PngRowReader& file) {
+void CheckRows(files::PngRowReader& file) {
   for (std::uint32_t y = 0; y < file.Size().height; ++y) file.NextRow();
   file.Finish();
 }
 
 // The two files compared a row at a time, the diff's rows drawn into `diff` when given.
-Comparison CompareRows(PngRowReader& a, PngRowReader& b, Image* diff) {
+Comparison CompareRows(files::PngRowReader& a, files::PngRowReader& b, Image* diff) {
   Comparison c;
-  const PngSize size = a.Size();
+  const files::PngSize size = a.Size();
   for (std::uint32_t y = 0; y < size.height; ++y) {
     const std::uint8_t *row_a = a.NextRow(), *row_b = b.NextRow();
     CompareRow(row_a, row_b, size.width, c);
@@ -69,16 +69,16 @@ Comparison CompareRows(PngRowReader& a, PngRowReader& b, Image* diff) {
 int Compare(const CompareArguments& args) {
   PrepareDiff(args);
   // Both headers before either file is decoded: a refusal, or sizes that differ, cost nothing.
-  const PngSize size_a = ReadPngSize(args.a), size_b = ReadPngSize(args.b);
+  const files::PngSize size_a = files::ReadPngSize(args.a), size_b = files::ReadPngSize(args.b);
   const bool same_size = size_a == size_b;
   const std::uint64_t pixels = std::uint64_t{size_a.width} * size_a.height;
-  if (args.diff && same_size && pixels > kMaxWholePixels) {
+  if (args.diff && same_size && pixels > files::kMaxWholePixels) {
     throw UsageError("--diff " + *args.diff + ": a diff image is drawn whole, for at most " +
-                     std::to_string(kMaxWholePixels) + " pixels, and these are " + std::to_string(size_a.width) +
+                     std::to_string(files::kMaxWholePixels) + " pixels, and these are " + std::to_string(size_a.width) +
                      " x " + std::to_string(size_a.height) + ": compare them without --diff");
   }
   // Read a row at a time, never whole: memory stays a few rows, whatever size the files declare.
-  PngRowReader a(args.a), b(args.b);
+  files::PngRowReader a(args.a), b(args.b);
   Comparison comparison;
   std::optional<Image> diff;
   if (!same_size) {
@@ -91,9 +91,9 @@ int Compare(const CompareArguments& args) {
   }
   const bool wrote_diff = diff && !comparison.Equal();
   if (wrote_diff && DiffToStandardOutput(args)) {
-    WriteStandardOutput(EncodePng(*diff));
+    WriteStandardOutput(files::EncodePng(*diff));
   } else if (wrote_diff) {
-    WritePng(*args.diff, *diff);
+    files::WritePng(*args.diff, *diff);
   }
   // A diff left by an earlier run would now describe images that no longer differ.
   std::error_code ignored;
@@ -102,14 +102,15 @@ int Compare(const CompareArguments& args) {
     std::filesystem::remove(*args.diff, ignored);
   }
 
-  const report::NamedImage named_a{args.a, size_a.width, size_a.height}, named_b{args.b, size_b.width, size_b.height};
+  const run_report::NamedImage named_a{args.a, size_a.width, size_a.height},
+      named_b{args.b, size_b.width, size_b.height};
   if (args.json) {
-    std::cout << report::CompareJson(named_a, named_b, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
+    std::cout << run_report::CompareJson(named_a, named_b, comparison, wrote_diff ? args.diff : std::nullopt).dump(2)
               << "\n";
   } else {
     const std::string diff_name = DiffToStandardOutput(args) ? "standard output" : args.diff.value_or("");
-    (DiffToStandardOutput(args) ? std::cerr : std::cout)
-        << report::ComparisonText(named_a, named_b, comparison) << (wrote_diff ? ", diff in " + diff_name : "") << "\n";
+    (DiffToStandardOutput(args) ? std::cerr : std::cout) << run_report::ComparisonText(named_a, named_b, comparison)
+                                                         << (wrote_diff ? ", diff in " + diff_name : "") << "\n";
   }
   return comparison.Equal() ? kExitOk : kExitImagesDiffer;
 }
@@ -132,4 +133,4 @@ CommandRun AddCompareCommand(CLI::App& app) {
   return [a] { return Compare(*a); };
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -18,7 +18,7 @@
 #include <iostream>
 #include <memory>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -67,10 +67,10 @@ int RunExplain(const ExplainArguments& a) {
     const Explanation page_chain = Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll});
     CheckDrawable(page_chain);
     if (page_to_stdout) {
-      WriteStandardOutput(report::ChainPageHtml(page_chain));
+      WriteStandardOutput(explain_report::ChainPageHtml(page_chain));
       return kExitOk;
     }
-    StagedFile page(*a.html, report::ChainPageHtml(page_chain));
+    files::StagedFile page(*a.html, explain_report::ChainPageHtml(page_chain));
     page.Commit();
     if (!a.json) {
       std::cout << "wrote " << *a.html << "\n";
@@ -79,9 +79,9 @@ int RunExplain(const ExplainArguments& a) {
   }
   const Explanation explanation = Explain(scene, {a.instance, a.vertex, VerticesFor(a)});
   if (a.json) {
-    std::cout << report::ExplainJson(explanation).dump(2) << "\n";
+    std::cout << explain_report::ExplainJson(explanation).dump(2) << "\n";
   } else {
-    std::cout << report::ExplainText(explanation);
+    std::cout << explain_report::ExplainText(explanation);
   }
   return kExitOk;
 }
@@ -122,4 +122,4 @@ CommandRun AddExplainCommand(CLI::App& app) {
   return [a] { return RunExplain(*a); };
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -20,7 +20,7 @@
 #include <memory>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -33,7 +33,7 @@ int Render(RenderArguments& a) {
   PrepareDestinations(a);
   Progress progress = Progress::OnStandardError(a.quiet);
   RenderBatch batch(a, progress);  // several scenes: each written while the next draws
-  IsolationOptions isolation;
+  gpu::IsolationOptions isolation;
   isolation.gpu.device = a.device;
   isolation.timeout_seconds = a.timeout_seconds;
   isolation.before_fork = batch.BeforeFork();
@@ -146,4 +146,4 @@ CommandRun AddRenderCommand(CLI::App& app) {
   };
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -24,7 +24,7 @@
 #include <iostream>
 #include <memory>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -83,11 +83,11 @@ void PrepareMap(const VerifyArguments& a) {
 // Writes the map, staged, or to standard output; returns what the report calls it.
 std::string WriteMap(const VerifyArguments& a, const Image& map) {
   if (MapToStandardOutput(a)) {
-    WriteStandardOutput(EncodePng(map));
+    WriteStandardOutput(files::EncodePng(map));
     return "standard output";
   }
   const std::string file = a.map.value_or(Suffixed(a.image, "map"));
-  StagePng(file, map).Commit();
+  files::StagePng(file, map).Commit();
   return file;
 }
 
@@ -102,11 +102,11 @@ int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& im
   const run::CoverageJudgement judgement = run::JudgeCoverage(scene, image, options, !a.no_map);
   std::optional<std::string> map;
   if (judgement.map) map = WriteMap(a, *judgement.map);
-  const report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
+  const run_report::CoverageReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
   if (a.json)
-    std::cout << report::CoverageJson(outputs).dump(2) << "\n";
+    std::cout << run_report::CoverageJson(outputs).dump(2) << "\n";
   else
-    ReportStream(a) << report::CoverageReportText(outputs);
+    ReportStream(a) << run_report::CoverageReportText(outputs);
   return ExitCodeOf(judgement.verdict);
 }
 
@@ -124,24 +124,24 @@ int Verify(const VerifyArguments& a) {
   PrintSceneNotes(scene, a.scene);
   if (a.wireframe) scene.wireframe = true;
   // The canvas is the size the image must declare, checked before any pixel is decoded.
-  const Image image = ReadPng(a.image, [&](std::uint32_t width, std::uint32_t height) {
+  const Image image = files::ReadPng(a.image, [&](std::uint32_t width, std::uint32_t height) {
     if (width != scene.canvas.width || height != scene.canvas.height) {
-      throw FileError(a.image + ": the image is " + std::to_string(width) + " x " + std::to_string(height) + ", but " +
-                      a.scene + " draws a canvas of " + std::to_string(scene.canvas.width) + " x " +
-                      std::to_string(scene.canvas.height));
+      throw files::FileError(a.image + ": the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                             ", but " + a.scene + " draws a canvas of " + std::to_string(scene.canvas.width) + " x " +
+                             std::to_string(scene.canvas.height));
     }
   });
-  const std::optional<verify::DrawnBy> drawn_by = report::DrawnByOf(ReadPngNotes(a.image));
+  const std::optional<verify::DrawnBy> drawn_by = run_report::DrawnByOf(files::ReadPngNotes(a.image));
   if (a.coverage) return VerifyCoverage(a, scene, image, drawn_by, coverage);
   const run::DeviceRules rules = DeviceRulesOf(a, drawn_by);
   const run::ImageJudgement judgement = run::JudgeImage(scene, image, rules.rules, !a.no_map);
   std::optional<std::string> map;
   if (judgement.map) map = WriteMap(a, *judgement.map);
-  const report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
+  const run_report::VerifyReport outputs{a.scene, a.image, scene.wireframe, drawn_by, rules, judgement, map};
   if (a.json)
-    std::cout << report::VerifyJson(outputs).dump(2) << "\n";
+    std::cout << run_report::VerifyJson(outputs).dump(2) << "\n";
   else
-    ReportStream(a) << report::VerifyText(outputs);
+    ReportStream(a) << run_report::VerifyText(outputs);
   return ExitCodeOf(judgement.verdict);
 }
 
@@ -212,4 +212,4 @@ CommandRun AddVerifyCommand(CLI::App& app) {
   return [a] { return Verify(*a); };
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

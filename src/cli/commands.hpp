@@ -10,7 +10,7 @@ namespace CLI {
 class App;  // CLI11 itself is included only by the .cpp files: it is a large header
 }
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // Runs a parsed command and returns the exit code; throws SceneError, FileError, UsageError or
 // GpuUnavailable for main() to report.
@@ -22,4 +22,4 @@ CommandRun AddCompareCommand(CLI::App& app);
 CommandRun AddVerifyCommand(CLI::App& app);
 CommandRun AddBenchCommand(CLI::App& app);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

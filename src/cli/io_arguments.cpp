@@ -14,7 +14,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 // The same bound LoadScene() puts on a file: far beyond any scene a person writes.
@@ -91,8 +91,8 @@ bool StandardOutputIsTerminal() { return ::isatty(STDOUT_FILENO) == 1; }
 
 void WriteStandardOutput(std::string_view bytes) {
   if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0) {
-    throw FileError(std::string("standard output: cannot write: ") + std::strerror(errno));
+    throw files::FileError(std::string("standard output: cannot write: ") + std::strerror(errno));
   }
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // "-" as SCENE or as an output: the standard stream, as in most command-line tools.
 bool IsStandardStream(std::string_view argument);
@@ -31,4 +31,4 @@ bool StandardOutputIsTerminal();
 // All of `bytes` to standard output, flushed; throws FileError naming standard output.
 void WriteStandardOutput(std::string_view bytes);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

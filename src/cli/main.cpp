@@ -22,6 +22,7 @@
 namespace {
 
 using namespace twinraster;
+using namespace twinraster::cli;  // main is global, as C++ requires: it reads the command line's names
 
 // A mistake on the command line: one line saying what, and where to read how.
 int ReportUsageError(const CLI::App* command, const std::string& problem) {
@@ -119,11 +120,11 @@ int main(int argc, char** argv) {
   } catch (const SceneError& e) {
     std::cerr << "twinraster: " << e.what() << "\n";
     return kExitBadInput;
-  } catch (const FileError& e) {
+  } catch (const files::FileError& e) {
     std::cerr << "twinraster: " << e.what() << "\n";
     return kExitBadInput;
-  } catch (const GpuUnavailable& e) {
-    if (!VulkanInBuild()) {  // no device could ever be usable: say so in one line
+  } catch (const gpu::GpuUnavailable& e) {
+    if (!gpu::VulkanInBuild()) {  // no device could ever be usable: say so in one line
       std::cerr << "twinraster: " << e.what() << "; render --backend cpu draws without it\n";
       return kExitNoVulkan;
     }

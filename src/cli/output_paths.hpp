@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 class OutputPaths {
  public:
@@ -27,4 +27,4 @@ class OutputPaths {
 // Whether an output argument names a directory rather than a file: it ends in / or is one.
 bool NamesDirectory(const std::string& argument);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

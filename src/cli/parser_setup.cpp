@@ -10,7 +10,7 @@
 #include <cmath>
 #include <memory>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -106,4 +106,4 @@ CLI::Option* ExpectOneOf(CLI::Option* option, const std::string& noun, const std
       "", "one of"));
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -10,7 +10,7 @@ class App;
 class Option;
 }  // namespace CLI
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // The settings of the top-level parser: name, help flag and formatter, option policies. Call it
 // before adding any command, which inherits them.
@@ -32,4 +32,4 @@ CLI::Option* ExpectNumberIn(CLI::Option* option, double lo, double hi, const std
 // closest: unknown backend "gpuu" (did you mean "gpu"?); choose from gpu, cpu, both.
 CLI::Option* ExpectOneOf(CLI::Option* option, const std::string& noun, const std::vector<std::string>& choices);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

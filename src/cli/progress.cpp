@@ -4,7 +4,7 @@
 
 #include <iostream>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 // Back to the start of the line and clear it: how a terminal status line is replaced or erased.
@@ -55,4 +55,4 @@ void Progress::ClearLocked() {
   status_showing_ = false;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // Whether progress belongs on file descriptor `fd`: it is a terminal and quiet is not asked for.
 bool ShowProgressOn(int fd, bool quiet);
@@ -42,4 +42,4 @@ class Progress {
   std::mutex mutex_;
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

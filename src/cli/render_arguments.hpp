@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 struct RenderArguments {
   std::vector<std::string> scenes;
   std::optional<std::string> output;     // one scene: OUT.png, - or a directory; several: a directory
   std::optional<std::string> directory;  // where each scene's files go, named after it (CheckOutput)
-  int png_level = kPngFastest;
+  int png_level = files::kPngFastest;
   std::string backend = "both";
   bool backend_given = false;  // --backend on the command line, rather than the default
   std::string rules = "vulkan";
@@ -34,4 +34,4 @@ struct RenderArguments {
   run::RunOptions run;                // the words above as the run stage takes them (ResolveOptions)
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -9,14 +9,14 @@
 #include <memory>
 #include <utility>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
 // Whether a scene's failure is its own (bad input, an output that cannot be written), which a batch
 // reports and goes on from, rather than the run's.
 bool SceneOwnError(const std::exception& e) {
-  return dynamic_cast<const SceneError*>(&e) || dynamic_cast<const FileError*>(&e);
+  return dynamic_cast<const SceneError*>(&e) || dynamic_cast<const files::FileError*>(&e);
 }
 
 }  // namespace
@@ -92,4 +92,4 @@ const run::RunRecord& RenderBatch::Tally(run::RunRecord record) {
   return batch_.Records().back();
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -15,7 +15,7 @@
 #include <functional>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 class RenderBatch {
  public:
@@ -47,4 +47,4 @@ class RenderBatch {
   SerialQueue writer_{2};  // each waiting task holds a scene's images
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <utility>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -30,22 +30,24 @@ std::vector<std::string> SceneFiles(const RenderArguments& a, const std::string&
 }
 
 // Thumbnails for the batch page, staged with the scene's other files.
-void StageThumbnails(const run::RunResult& result, const std::string& report_dir, std::vector<StagedFile>& staged) {
+void StageThumbnails(const run::RunResult& result, const std::string& report_dir,
+                     std::vector<files::StagedFile>& staged) {
   const run::RunRecord& record = result.record;
-  std::vector<std::pair<report::ImageKind, const Image*>> images;
+  std::vector<std::pair<run_report::ImageKind, const Image*>> images;
   for (std::size_t i = 0; i < record.backends.size(); ++i) {
     const bool gpu = record.backends[i].backend == run::Backend::kGpu;
-    images.emplace_back(gpu ? report::ImageKind::kGpu : report::ImageKind::kCpu, &result.images[i]);
+    images.emplace_back(gpu ? run_report::ImageKind::kGpu : run_report::ImageKind::kCpu, &result.images[i]);
   }
-  if (result.diff) images.emplace_back(report::ImageKind::kDiff, &*result.diff);
-  if (result.map) images.emplace_back(report::ImageKind::kMap, &*result.map);
+  if (result.diff) images.emplace_back(run_report::ImageKind::kDiff, &*result.diff);
+  if (result.map) images.emplace_back(run_report::ImageKind::kMap, &*result.map);
   for (const auto& [kind, image] : images) {
-    if (report::FullImage(record, kind).empty()) continue;
-    const std::filesystem::path file = std::filesystem::path(report_dir) / report::ThumbnailPath(record, kind);
+    if (run_report::FullImage(record, kind).empty()) continue;
+    const std::filesystem::path file = std::filesystem::path(report_dir) / run_report::ThumbnailPath(record, kind);
     const bool marks =
-        kind == report::ImageKind::kDiff || kind == report::ImageKind::kMap;  // keep saturated marks visible
-    staged.push_back(StagePng(file, Thumbnail(*image, report::kThumbnailSide,
-                                              marks ? ThumbnailFilter::kMostSaturated : ThumbnailFilter::kMean)));
+        kind == run_report::ImageKind::kDiff || kind == run_report::ImageKind::kMap;  // keep saturated marks visible
+    staged.push_back(
+        files::StagePng(file, Thumbnail(*image, run_report::kThumbnailSide,
+                                        marks ? ThumbnailFilter::kMostSaturated : ThumbnailFilter::kMean)));
   }
 }
 
@@ -74,30 +76,30 @@ void PrepareDestinations(const RenderArguments& a) {
   paths.MakeDirectories();
 }
 
-std::vector<StagedFile> StageImages(run::RunResult& result, const RenderArguments& a, const std::string& out,
-                                    std::string& png_bytes) {
+std::vector<files::StagedFile> StageImages(run::RunResult& result, const RenderArguments& a, const std::string& out,
+                                           std::string& png_bytes) {
   run::RunRecord& record = result.record;
   const bool to_stdout = IsStandardStream(out);
-  std::vector<StagedFile> staged;
+  std::vector<files::StagedFile> staged;
   for (std::size_t i = 0; i < record.backends.size(); ++i) {
     run::BackendRecord& backend = record.backends[i];
     if (!backend.Drawn()) continue;
     backend.output = a.run.backends == run::Backends::kBoth ? Suffixed(out, backend.Name()) : out;
     Stopwatch clock;
-    const PngNotes notes = report::NotesOf(result.drawn_by[i]);
+    const files::PngNotes notes = run_report::NotesOf(result.drawn_by[i]);
     if (to_stdout)
-      png_bytes = EncodePng(result.images[i], a.png_level, notes);
+      png_bytes = files::EncodePng(result.images[i], a.png_level, notes);
     else
-      staged.push_back(StagePng(backend.output, result.images[i], a.png_level, notes));
+      staged.push_back(files::StagePng(backend.output, result.images[i], a.png_level, notes));
     backend.png_ms = clock.Milliseconds();
   }
   if (result.diff) {
     record.diff = Suffixed(out, "diff");
-    staged.push_back(StagePng(record.diff, *result.diff, a.png_level));
+    staged.push_back(files::StagePng(record.diff, *result.diff, a.png_level));
   }
   if (result.map) {
     record.map = Suffixed(record.Find(*record.judged)->output, "map");
-    staged.push_back(StagePng(record.map, *result.map, a.png_level));
+    staged.push_back(files::StagePng(record.map, *result.map, a.png_level));
   }
   if (a.report) StageThumbnails(result, *a.report, staged);
   return staged;
@@ -113,13 +115,13 @@ void RemoveStaleDiff(const run::RunResult& result, const std::string& out) {
 }
 
 void WriteBatchReports(const RenderArguments& a, const run::BatchResult& batch) {
-  std::vector<StagedFile> staged;
+  std::vector<files::StagedFile> staged;
   if (a.report)
-    staged.emplace_back(std::filesystem::path(*a.report) / "index.html", report::BatchPageHtml(batch, *a.report));
+    staged.emplace_back(std::filesystem::path(*a.report) / "index.html", run_report::BatchPageHtml(batch, *a.report));
   const bool junit_to_stdout = a.junit && IsStandardStream(*a.junit);
-  if (a.junit && !junit_to_stdout) staged.emplace_back(*a.junit, report::JUnitXml(batch, a.verify));
-  for (StagedFile& file : staged) file.Commit();
-  if (junit_to_stdout) WriteStandardOutput(report::JUnitXml(batch, a.verify));
+  if (a.junit && !junit_to_stdout) staged.emplace_back(*a.junit, run_report::JUnitXml(batch, a.verify));
+  for (files::StagedFile& file : staged) file.Commit();
+  if (junit_to_stdout) WriteStandardOutput(run_report::JUnitXml(batch, a.verify));
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // A scene's PNG (or the stem of its PNGs): in the directory, -o OUT.png, - or the scene's name.
 std::string SceneOut(const RenderArguments& a, const std::string& scene_argument);
@@ -23,8 +23,8 @@ void PrepareDestinations(const RenderArguments& a);
 // Names and encodes every image of the run, each staged in full before any is renamed into place
 // (or, for -o -, kept in `png_bytes` for standard output), and records the files in the run's
 // record.
-std::vector<StagedFile> StageImages(run::RunResult& result, const RenderArguments& a, const std::string& out,
-                                    std::string& png_bytes);
+std::vector<files::StagedFile> StageImages(run::RunResult& result, const RenderArguments& a, const std::string& out,
+                                           std::string& png_bytes);
 
 // Removes a diff an earlier run left at `out`'s name when this run compared and wrote none: it
 // would describe images that no longer exist.
@@ -33,4 +33,4 @@ void RemoveStaleDiff(const run::RunResult& result, const std::string& out);
 // The page and the JUnit file, staged together after the batch: all of them or neither.
 void WriteBatchReports(const RenderArguments& a, const run::BatchResult& batch);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -12,7 +12,7 @@
 #include <set>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 void ResolveOptions(RenderArguments& a) {
   a.run.backends = a.backend == "gpu"   ? run::Backends::kGpu
@@ -114,4 +114,4 @@ void CheckOutput(RenderArguments& a) {
   }
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

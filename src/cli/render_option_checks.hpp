@@ -5,7 +5,7 @@
 
 #include "cli/render_arguments.hpp"
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // The run's typed options (a.run), from the words parsed. --rules book draws on the CPU only, so
 // it implies --backend cpu; asking for another is a mistake.
@@ -15,4 +15,4 @@ void ResolveOptions(RenderArguments& a);
 // each scene's files go into a directory, named after it.
 void CheckOutput(RenderArguments& a);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -7,11 +7,11 @@
 
 #include <iostream>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool several) {
   if (a.json) {
-    std::cout << (several ? report::RenderJson(record).dump() : report::RenderJson(record).dump(2)) << "\n"
+    std::cout << (several ? run_report::RenderJson(record).dump() : run_report::RenderJson(record).dump(2)) << "\n"
               << std::flush;
     return;
   }
@@ -19,7 +19,7 @@ void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool se
   const bool to_stdout =
       (!several && a.output && IsStandardStream(*a.output)) || (a.junit && IsStandardStream(*a.junit));
   if (to_stdout && a.quiet) return;
-  (to_stdout ? std::cerr : std::cout) << report::RenderText(record, a.verify) << std::flush;
+  (to_stdout ? std::cerr : std::cout) << run_report::RenderText(record, a.verify) << std::flush;
 }
 
 void PrintFailure(const RenderArguments& a, const std::string& message, const run::RunRecord& record, bool several) {
@@ -27,4 +27,4 @@ void PrintFailure(const RenderArguments& a, const std::string& message, const ru
   if (a.json) PrintRecord(a, record, several);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

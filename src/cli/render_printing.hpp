@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // One scene's record: JSON (one object; several scenes: JSON Lines, one per scene as it finishes)
 // or the report's lines (on standard error when the PNG goes to standard output).
@@ -17,4 +17,4 @@ void PrintRecord(const RenderArguments& a, const run::RunRecord& record, bool se
 // verdict error), so that every scene has its line.
 void PrintFailure(const RenderArguments& a, const std::string& message, const run::RunRecord& record, bool several);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -8,7 +8,7 @@
 
 #include <utility>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -49,7 +49,7 @@ run::RunRecord WriteScene(const RenderArguments& a, DrawnScene& drawn, Progress&
   run::RunResult& result = drawn.result;
   progress.Status(result.record.backends.size() == 1 ? "writing the PNG..." : "writing the PNGs...");
   std::string png_bytes;  // for -o -
-  for (StagedFile& file : StageImages(result, a, drawn.out, png_bytes)) file.Commit();
+  for (files::StagedFile& file : StageImages(result, a, drawn.out, png_bytes)) file.Commit();
   RemoveStaleDiff(result, drawn.out);
   progress.Clear();
   if (!png_bytes.empty()) WriteStandardOutput(png_bytes);
@@ -57,4 +57,4 @@ run::RunRecord WriteScene(const RenderArguments& a, DrawnScene& drawn, Progress&
   return std::move(result.record);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

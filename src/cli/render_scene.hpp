@@ -11,7 +11,7 @@
 
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // A scene read and drawn, its files not yet written.
 struct DrawnScene {
@@ -29,4 +29,4 @@ DrawnScene DrawScene(const RenderArguments& a, const std::string& scene_argument
 // the files named and its total time; throws FileError.
 run::RunRecord WriteScene(const RenderArguments& a, DrawnScene& drawn, Progress& progress);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

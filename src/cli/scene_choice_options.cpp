@@ -8,7 +8,7 @@
 #include <charconv>
 #include <iostream>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -58,4 +58,4 @@ void PrintSceneNotes(const Scene& scene, const std::string& file) {
   for (const std::string& note : scene.notes) std::cerr << "twinraster: note: " << file << ": " << note << "\n";
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

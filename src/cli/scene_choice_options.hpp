@@ -13,7 +13,7 @@ namespace CLI {
 class App;
 }
 
-namespace twinraster {
+namespace twinraster::cli {
 
 struct SceneChoiceArguments {
   std::optional<std::string> camera;
@@ -30,4 +30,4 @@ SceneChoice ChoiceOf(const SceneChoiceArguments& a);
 // error, naming the file.
 void PrintSceneNotes(const Scene& scene, const std::string& file);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 namespace {
 
@@ -70,4 +70,4 @@ std::string ParseErrorProblem(const CLI::ParseError& error) {
   return message;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -9,7 +9,7 @@ class App;
 class ParseError;
 }  // namespace CLI
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // The first argument no option or positional of `app` took, described ("unknown option --backnd
 // (did you mean --backend?)", "unexpected argument b.json"; at the top level, `unknown command
@@ -22,4 +22,4 @@ std::string MissingArgumentProblem(const CLI::App& app);
 // CLI11's error as one line in twinraster's words ("--runs: ...", "option --threads needs a value").
 std::string ParseErrorProblem(const CLI::ParseError& error);
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -8,12 +8,12 @@
 #include "twin_rules/lavapipe_path.hpp"
 #include "twin_rules/twin_rules.hpp"
 
-namespace twinraster {
+namespace twinraster::cli {
 namespace {
 
 // "lavapipe (llvmpipe (...)): llvmpipe, Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230, 8 subpixel bits,
 // strictLines true; twin: bit-exact (lavapipe rules, ...)": the device by the names --device takes.
-std::string DeviceLine(const DeviceIdentity& d, const twin_rules::CpuPath& path) {
+std::string DeviceLine(const gpu::DeviceIdentity& d, const twin_rules::CpuPath& path) {
   std::string driver = d.driver_name;
   if (!d.driver_info.empty()) driver += (driver.empty() ? "" : ", ") + d.driver_info;
   const twin_rules::TwinRules twin = twin_rules::ChooseTwinRules(run::FactsOf(d), path);
@@ -29,12 +29,12 @@ std::string DevicesText(const twin_rules::CpuPath& path) {
   for (const std::string& file : offer.files()) offered += (offered.empty() ? "" : ", ") + file;
   if (!offered.empty()) heading += " (also offered to the loader: " + offered + ")";
   try {
-    const std::vector<DeviceIdentity> devices = gpu::ListDevices();
+    const std::vector<gpu::DeviceIdentity> devices = gpu::ListDevices();
     if (devices.empty()) return heading + ": none reachable (the loader found no device)";
     std::string text = heading + ":";
-    for (const DeviceIdentity& device : devices) text += "\n" + DeviceLine(device, path);
+    for (const gpu::DeviceIdentity& device : devices) text += "\n" + DeviceLine(device, path);
     return text;
-  } catch (const GpuUnavailable& e) {
+  } catch (const gpu::GpuUnavailable& e) {
     return heading + ": none reachable (" + e.what() + ")";
   }
 }
@@ -51,4 +51,4 @@ std::string VersionText() {
          DevicesText(path);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

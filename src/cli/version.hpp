@@ -6,11 +6,11 @@
 
 #include <string>
 
-namespace twinraster {
+namespace twinraster::cli {
 
 // "twinraster 0.1.0 (93a62fb-dirty)\n..." Creates a Vulkan instance (with Chromium's SwiftShader
 // offered, gpu/driver_files.hpp), so call it only when --version is given. Never throws for a
 // missing Vulkan: the device list then says why none is reachable.
 std::string VersionText();
 
-}  // namespace twinraster
+}  // namespace twinraster::cli

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 namespace {
 
@@ -52,7 +52,7 @@ struct Panel {
 constexpr std::size_t kMaxTriangles = 4000;
 
 // Six significant digits (or `digits`), and no "-0" that would puzzle a reader.
-std::string Num(double x, int digits = 6) { return Number(x == 0 ? 0.0 : x, digits); }
+std::string Num(double x, int digits = 6) { return markup::Number(x == 0 ? 0.0 : x, digits); }
 
 template <int N>
 std::string Vec(const glm::vec<N, double>& v) {
@@ -108,8 +108,8 @@ std::string PanelSvg(const Panel& p) {
   double sx = (kWidth - 2 * kMargin) / (x1 - x0), sy = (kHeight - 2 * kMargin) / (y1 - y0);
   if (p.equal_axes) sx = sy = std::min(sx, sy);
   const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-  const auto X = [&](double x) { return Number(kWidth / 2 + (x - cx) * sx, 6); };
-  const auto Y = [&](double y) { return Number(kHeight / 2 + (p.y_down ? 1 : -1) * (y - cy) * sy, 6); };
+  const auto X = [&](double x) { return markup::Number(kWidth / 2 + (x - cx) * sx, 6); };
+  const auto Y = [&](double y) { return markup::Number(kHeight / 2 + (p.y_down ? 1 : -1) * (y - cy) * sy, 6); };
 
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"panel\" id=\"" << p.id << "\" width=\"" << kWidth
@@ -124,8 +124,9 @@ std::string PanelSvg(const Panel& p) {
       << "<line class=\"axis\" x1=\"" << X(0) << "\" y1=\"0\" x2=\"" << X(0) << "\" y2=\"" << kHeight << "\"/>\n";
   for (const auto& [a, b] : p.boxes) {
     svg << "<rect class=\"box\" x=\"" << X(std::min(a.x, b.x)) << "\" y=\""
-        << Y(p.y_down ? std::min(a.y, b.y) : std::max(a.y, b.y)) << "\" width=\"" << Number(std::abs(b.x - a.x) * sx, 6)
-        << "\" height=\"" << Number(std::abs(b.y - a.y) * sy, 6) << "\"/>\n";
+        << Y(p.y_down ? std::min(a.y, b.y) : std::max(a.y, b.y)) << "\" width=\""
+        << markup::Number(std::abs(b.x - a.x) * sx, 6) << "\" height=\"" << markup::Number(std::abs(b.y - a.y) * sy, 6)
+        << "\"/>\n";
   }
   if (!p.segments.empty()) {
     // One path per style keeps a mesh's page small.
@@ -140,9 +141,10 @@ std::string PanelSvg(const Panel& p) {
   }
   for (const Mark& m : p.marks) {
     svg << "<circle class=\"mark\" cx=\"" << X(m.at.x) << "\" cy=\"" << Y(m.at.y) << "\" r=\"4\" fill=\"" << m.colour
-        << "\"><title>" << Escape(m.label) << "</title></circle><text x=\""
-        << Number(kWidth / 2 + (m.at.x - cx) * sx + 6, 6) << "\" y=\"" << Number(std::stod(Y(m.at.y)) - 6, 6)
-        << "\" fill=\"" << m.colour << "\">" << Escape(m.label) << "</text>\n";
+        << "\"><title>" << markup::Escape(m.label) << "</title></circle><text x=\""
+        << markup::Number(kWidth / 2 + (m.at.x - cx) * sx + 6, 6) << "\" y=\""
+        << markup::Number(std::stod(Y(m.at.y)) - 6, 6) << "\" fill=\"" << m.colour << "\">" << markup::Escape(m.label)
+        << "</text>\n";
   }
   svg << "</g>\n<text x=\"" << kWidth - 6 << "\" y=\"" << kHeight - 6 << "\" text-anchor=\"end\" fill=\"#666\">+"
       << p.x_name << " →, +" << p.y_name << (p.y_down ? " ↓" : " ↑") << "</text>\n</svg>\n";
@@ -188,8 +190,8 @@ void AddFrustum(Panel& p, const Frustum& frustum, int u, int w) {
 }
 
 std::string Figure(const Panel& p) {
-  return "<figure class=\"chain-panel\" data-panel=\"" + p.id + "\"><figcaption><b>" + Escape(p.title) +
-         "</b></figcaption>" + PanelSvg(p) + "<pre>" + Escape(p.text) + "</pre></figure>\n";
+  return "<figure class=\"chain-panel\" data-panel=\"" + p.id + "\"><figcaption><b>" + markup::Escape(p.title) +
+         "</b></figcaption>" + PanelSvg(p) + "<pre>" + markup::Escape(p.text) + "</pre></figure>\n";
 }
 
 // What every panel reads: the explanation, the traced instance and vertex, and whether every
@@ -378,14 +380,15 @@ std::string PageHead(const Explanation& e, const Trace& t, const std::string& in
                      const std::string& vertex_name) {
   const std::string& scene_name = e.scene->name;
   std::ostringstream page;
-  page << PageStart("The chain of " + scene_name) << "<style>.axis{stroke:#ddd}.box{fill:none;stroke:#555}"
+  page << markup::PageStart("The chain of " + scene_name) << "<style>.axis{stroke:#ddd}.box{fill:none;stroke:#555}"
        << ".edge{fill:none;stroke:#2b6cb0;stroke-width:1}.frustum{fill:none;stroke:#999;stroke-dasharray:4 3}"
        << ".far{fill:none;stroke:#bbb;stroke-dasharray:2 4}.normal{stroke:#1a7f37;stroke-width:2}"
        << ".light{stroke:#b8860b;stroke-width:2}figure.chain-panel{width:402px}"
        << "figure.chain-panel pre{white-space:pre-wrap}</style>\n"
-       << "<h1>The chain of " << Escape(scene_name) << "</h1>\n"
-       << "<p>F = M_Projection · M_Camera · M_Model, computed in double by the host, takes " << Escape(vertex_name)
-       << " of " << Escape(instance_name) << " from model space to the canvas. Each panel draws one space with the "
+       << "<h1>The chain of " << markup::Escape(scene_name) << "</h1>\n"
+       << "<p>F = M_Projection · M_Camera · M_Model, computed in double by the host, takes "
+       << markup::Escape(vertex_name) << " of " << markup::Escape(instance_name)
+       << " from model space to the canvas. Each panel draws one space with the "
        << "matrix that leads into it and where the vertex (red) lands there. " << e.instances.size() << " of "
        << Counted(e.scene->instances.size(), "instance") << " shown"
        << (t.all_instances ? "" : " (edges of the traced instance only: the mesh is large)") << ".</p>\n";
@@ -417,8 +420,8 @@ std::string ChainPageHtml(const Explanation& e) {
   if (v.light) panels.push_back(LightPanel(t));
   std::string page = PageHead(e, t, instance_name, vertex_name);
   for (const Panel& p : panels) page += Figure(p);
-  page += kPageEnd;
+  page += markup::kPageEnd;
   return page;
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

@@ -10,11 +10,11 @@
 
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 // The page follows the first explained instance's traced vertex (instances[0].traced). Edges are
 // drawn between traced vertices only: `explanation` should trace every vertex
 // (ExplainVertices::kAll). Numbers have six significant digits; a negative zero shows as 0.
 std::string ChainPageHtml(const Explanation& explanation);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

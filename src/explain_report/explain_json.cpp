@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 namespace {
 
@@ -162,4 +162,4 @@ Json ExplainJson(const Explanation& e) {
   return out;
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 // The object's "format": any change to its keys or their meaning gets a new number.
 inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
@@ -15,4 +15,4 @@ inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
 // Every number as computed, a negative zero included, so that tools read exactly the chain's doubles.
 nlohmann::ordered_json ExplainJson(const Explanation& explanation);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

@@ -8,7 +8,7 @@
 #include <ostream>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 namespace {
 
@@ -233,4 +233,4 @@ std::string ExplainText(const Explanation& e) {
   return out.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

@@ -7,9 +7,9 @@
 
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::explain_report {
 
 // Numbers have six significant digits; a negative zero prints as 0.
 std::string ExplainText(const Explanation& explanation);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::explain_report

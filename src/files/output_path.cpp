@@ -9,7 +9,7 @@
 #include <cstring>
 #include <system_error>
 
-namespace twinraster {
+namespace twinraster::files {
 
 namespace {
 
@@ -59,4 +59,4 @@ void MakeMissingDirectories(const std::filesystem::path& directory) {
   if (error) throw FileError(directory.string() + ": cannot create the directory: " + error.message());
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::files

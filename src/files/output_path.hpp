@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::files {
 
 // Mode bits as the owner's intent: a file or directory without any write bit (chmod a-w) is
 // read-only even for root, whom access(2) lets write anything.
@@ -26,4 +26,4 @@ std::string DirectoryTargetProblem(const std::filesystem::path& directory);
 // Makes `directory` and its missing parents; throws FileError naming it.
 void MakeMissingDirectories(const std::filesystem::path& directory);
 
-}  // namespace twinraster
+}  // namespace twinraster::files

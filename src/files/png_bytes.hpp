@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string_view>
 
-namespace twinraster::png_format {
+namespace twinraster::files::png_format {
 
 inline constexpr std::string_view kSignature{"\x89PNG\r\n\x1a\n", 8};
 
@@ -38,4 +38,4 @@ inline bool IsValidKeyword(std::string_view key) {
   return key.find("  ") == std::string_view::npos && std::all_of(key.begin(), key.end(), IsPrintableLatin1);
 }
 
-}  // namespace twinraster::png_format
+}  // namespace twinraster::files::png_format

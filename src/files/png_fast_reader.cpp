@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace twinraster::png_fast {
+namespace twinraster::files::png_fast {
 namespace {
 
 using png_format::kMaxChunkLength, png_format::kMaxNotes, png_format::kMaxNoteValue;
@@ -163,4 +163,4 @@ std::optional<Image> Decode(std::istream& in, const PngSizeCheck& check) {
   return std::nullopt;  // no IEND
 }
 
-}  // namespace twinraster::png_fast
+}  // namespace twinraster::files::png_fast

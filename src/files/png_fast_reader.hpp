@@ -13,10 +13,10 @@
 #include <istream>
 #include <optional>
 
-namespace twinraster::png_fast {
+namespace twinraster::files::png_fast {
 
 // The image, or nothing when the full reader must decide. Reads `in` from its start; `check` runs
 // on the declared size before anything is inflated, as the full reader runs it, and may throw.
 std::optional<Image> Decode(std::istream& in, const PngSizeCheck& check);
 
-}  // namespace twinraster::png_fast
+}  // namespace twinraster::files::png_fast

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::files {
 
 namespace {
 
@@ -205,4 +205,4 @@ PngNotes ReadPngNotes(const std::filesystem::path& file) {
   return notes;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::files

@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::files {
 
 // Compression levels: 0 stores the pixels uncompressed; 1 (the default), the fastest, is the run
 // encoder (png_runs.hpp); 2 to 12 are libdeflate's, 12 the smallest file. Every level is lossless.
@@ -99,4 +99,4 @@ class PngRowReader {
 // a PNG has no notes (ReadPng reports that), and a malformed or cut-off chunk ends the walk.
 PngNotes ReadPngNotes(const std::filesystem::path& file);
 
-}  // namespace twinraster
+}  // namespace twinraster::files

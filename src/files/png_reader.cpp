@@ -24,7 +24,7 @@
 #include <string_view>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::files {
 namespace {
 
 // Ancillary chunks libspng keeps while reading (text, ICC profiles, ...): one at most 1 MiB, all
@@ -185,9 +185,9 @@ Image DecodePng(std::string_view bytes, const std::string& name, const PngSizeCh
       chunks, [&](spng_ctx* ctx) { return spng_set_png_buffer(ctx, bytes.data(), bytes.size()); }, name, check);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::files
 
-namespace twinraster {
+namespace twinraster::files {
 
 PngSize ReadPngSize(const std::filesystem::path& file) {
   std::ifstream chunks;
@@ -265,4 +265,4 @@ void PngRowReader::Finish() {
   if (s.ihdr.color_type == SPNG_COLOR_TYPE_INDEXED) CheckPaletteIndices(s.source, s.name, s.ihdr);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::files

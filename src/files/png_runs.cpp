@@ -13,7 +13,7 @@
 #include <span>
 #include <thread>
 
-namespace twinraster::png_runs {
+namespace twinraster::files::png_runs {
 
 namespace {
 
@@ -396,4 +396,4 @@ std::vector<std::uint8_t> ZlibStream(const Image& image) {
   return zlib;
 }
 
-}  // namespace twinraster::png_runs
+}  // namespace twinraster::files::png_runs

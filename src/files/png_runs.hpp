@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace twinraster::png_runs {
+namespace twinraster::files::png_runs {
 
 // The zlib stream of `image`'s filtered scanlines: header, deflate blocks and Adler-32.
 std::vector<std::uint8_t> ZlibStream(const Image& image);
 
-}  // namespace twinraster::png_runs
+}  // namespace twinraster::files::png_runs

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-namespace twinraster::png_scanlines {
+namespace twinraster::files::png_scanlines {
 
 // Rendered images are mostly flat runs and straight edges, where Up leaves long runs of zeros for
 // deflate; trying all five filters per row, as stb_image_write does, costs more than it saves at
@@ -22,4 +22,4 @@ void FilterRows(const Image& image, std::uint32_t first, std::uint32_t last, std
   }
 }
 
-}  // namespace twinraster::png_scanlines
+}  // namespace twinraster::files::png_scanlines

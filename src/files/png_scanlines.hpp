@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace twinraster::png_scanlines {
+namespace twinraster::files::png_scanlines {
 
 // The bytes of one filtered row: the filter byte and 4 per pixel.
 inline std::size_t RowBytes(const Image& image) { return std::size_t{image.width} * 4 + 1; }
@@ -17,4 +17,4 @@ inline std::size_t RowBytes(const Image& image) { return std::size_t{image.width
 // (Up reads the image, not the output), so parts of a frame can be filtered on different threads.
 void FilterRows(const Image& image, std::uint32_t first, std::uint32_t last, std::uint8_t* out);
 
-}  // namespace twinraster::png_scanlines
+}  // namespace twinraster::files::png_scanlines

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace twinraster::png_structure {
+namespace twinraster::files::png_structure {
 namespace {
 
 #ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
@@ -270,4 +270,4 @@ Header CheckStructure(std::istream& in, const std::string& name, const PngSizeCh
   }
 }
 
-}  // namespace twinraster::png_structure
+}  // namespace twinraster::files::png_structure

@@ -11,7 +11,7 @@
 #include <istream>
 #include <string>
 
-namespace twinraster::png_structure {
+namespace twinraster::files::png_structure {
 
 // What IHDR declares, checked: the sides, bit depth, colour type and interlace method.
 struct Header {
@@ -38,4 +38,4 @@ Header CheckHeader(std::istream& in, const std::string& name, const PngSizeCheck
 // Adler-32 right, exactly where the image data does, after exactly the bytes the header needs.
 Header CheckStructure(std::istream& in, const std::string& name, const PngSizeCheck& check);
 
-}  // namespace twinraster::png_structure
+}  // namespace twinraster::files::png_structure

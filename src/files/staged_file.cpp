@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-namespace twinraster {
+namespace twinraster::files {
 
 namespace {
 std::string SystemError() { return std::strerror(errno); }
@@ -53,4 +53,4 @@ void StagedFile::Commit() {
   temporary_.clear();
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::files

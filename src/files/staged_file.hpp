@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string_view>
 
-namespace twinraster {
+namespace twinraster::files {
 
 // An output or input file problem; the message names the file.
 class FileError : public std::runtime_error {
@@ -29,4 +29,4 @@ class StagedFile {
   std::filesystem::path target_, temporary_;
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::files

@@ -16,7 +16,7 @@
 #include <optional>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::gpu {
 namespace {
 
 void CheckSize(std::uint32_t width, std::uint32_t height, const vk::PhysicalDeviceLimits& limits) {
@@ -270,4 +270,4 @@ const std::vector<std::string>& GpuRenderer::ValidationMessages() const {
   return impl_ ? impl_->context.messages() : none;
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::gpu

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::gpu {
 
 struct GpuOptions {
   // Empty: prefer lavapipe (llvmpipe / CPU device type); else a substring of the device name to
@@ -85,4 +85,4 @@ class GpuRenderer {
   std::unique_ptr<Impl> impl_;  // pImpl: keeps vulkan.hpp out of every file that includes this one
 };
 
-}  // namespace twinraster
+}  // namespace twinraster::gpu

@@ -20,7 +20,7 @@
 #include <system_error>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::gpu {
 namespace {
 
 [[noreturn]] void ThrowErrno(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
@@ -329,4 +329,4 @@ IsolatedGpuResult RenderIsolated(const DrawList& list, const IsolationOptions& o
   return process.Render(list);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::gpu

@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-namespace twinraster {
+namespace twinraster::gpu {
 
 enum class GpuOutcome {
   kRendered,     // `image` holds the frame
@@ -92,4 +92,4 @@ class GpuProcess {
 // One list in a child of its own.
 IsolatedGpuResult RenderIsolated(const DrawList& list, const IsolationOptions& options);
 
-}  // namespace twinraster
+}  // namespace twinraster::gpu

@@ -7,7 +7,7 @@
 #include "gpu/driver_files.hpp"
 #include "gpu/gpu_renderer.hpp"
 
-namespace twinraster {
+namespace twinraster::gpu {
 namespace {
 
 [[noreturn]] void ThrowNoVulkan() {
@@ -40,8 +40,6 @@ const std::vector<std::string>& GpuRenderer::ValidationMessages() const {
   return none;
 }
 
-namespace gpu {
-
 std::vector<DeviceIdentity> ListDevices() { ThrowNoVulkan(); }
 
 // VK_API_VERSION_MAJOR, _MINOR and _PATCH without vulkan.h: 7, 10 and 12 bits above the variant's 3.
@@ -56,5 +54,4 @@ ExtraDriverOffer::~ExtraDriverOffer() = default;
 LavapipeAlone::LavapipeAlone() = default;
 LavapipeAlone::~LavapipeAlone() = default;
 
-}  // namespace gpu
-}  // namespace twinraster
+}  // namespace twinraster::gpu

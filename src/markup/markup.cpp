@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace twinraster::report {
+namespace twinraster::markup {
 
 std::string Escape(std::string_view text) {
   std::string out;
@@ -79,4 +79,4 @@ std::string PageStart(std::string_view title) {
          "</style>\n</head>\n<body>\n";
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::markup

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace twinraster::report {
+namespace twinraster::markup {
 
 // Text safe inside an element or a quoted attribute, in HTML, SVG and XML alike: & < > " ' escaped,
 // and control characters XML cannot hold replaced by U+FFFD.
@@ -24,4 +24,4 @@ std::string Href(std::string_view relative_path);
 std::string PageStart(std::string_view title);
 inline constexpr std::string_view kPageEnd = "</body>\n</html>\n";
 
-}  // namespace twinraster::report
+}  // namespace twinraster::markup

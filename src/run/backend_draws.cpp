@@ -19,7 +19,7 @@ verify::DrawnBy TwinDrawnBy(const cpu::RasterRules& rules) {
 
 }  // namespace
 
-IsolatedGpuResult GpuSession::Render(const DrawList& list) {
+gpu::IsolatedGpuResult GpuSession::Render(const DrawList& list) {
   Submit(list);
   return Collect();
 }
@@ -29,30 +29,30 @@ void GpuSession::Submit(const DrawList& list) {
   process_->Submit(list);
 }
 
-IsolatedGpuResult GpuSession::Collect() { return process_->Collect(); }
+gpu::IsolatedGpuResult GpuSession::Collect() { return process_->Collect(); }
 
-DeviceIdentity GpuSession::KnownDevice() const { return process_ ? process_->device() : DeviceIdentity{}; }
+gpu::DeviceIdentity GpuSession::KnownDevice() const { return process_ ? process_->device() : gpu::DeviceIdentity{}; }
 
-BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device) {
+BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, gpu::DeviceIdentity& device) {
   gpu.Submit(list);
   return CollectFromGpu(gpu, source, device);
 }
 
-BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIdentity& device) {
+BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, gpu::DeviceIdentity& device) {
   BackendRun run;
   run.record.backend = Backend::kGpu;
-  IsolatedGpuResult r = gpu.Collect();
+  gpu::IsolatedGpuResult r = gpu.Collect();
   device = r.device;
   run.drawn_by = {r.device.name, {.subpixel_bits = int(r.device.subpixel_bits), .strict_lines = r.device.strict_lines}};
   run.record.detail = r.device.name.empty() ? "no device" : r.device.name;
   run.record.driver = r.device.driver_info;
   switch (r.outcome) {
-    case GpuOutcome::kRendered: break;
-    case GpuOutcome::kUnavailable: throw GpuUnavailable(r.problem);
-    case GpuOutcome::kBadList: throw std::invalid_argument(r.problem);
-    case GpuOutcome::kCrashed:
-    case GpuOutcome::kTimedOut:
-      run.record.status = r.outcome == GpuOutcome::kCrashed ? BackendStatus::kCrashed : BackendStatus::kTimedOut;
+    case gpu::GpuOutcome::kRendered: break;
+    case gpu::GpuOutcome::kUnavailable: throw gpu::GpuUnavailable(r.problem);
+    case gpu::GpuOutcome::kBadList: throw std::invalid_argument(r.problem);
+    case gpu::GpuOutcome::kCrashed:
+    case gpu::GpuOutcome::kTimedOut:
+      run.record.status = r.outcome == gpu::GpuOutcome::kCrashed ? BackendStatus::kCrashed : BackendStatus::kTimedOut;
       run.record.problem = r.problem + " on " + source;
       return run;
   }
@@ -65,7 +65,7 @@ BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIden
   return run;
 }
 
-twin_rules::DeviceFacts FactsOf(const DeviceIdentity& device) {
+twin_rules::DeviceFacts FactsOf(const gpu::DeviceIdentity& device) {
   return {.name = device.name,
           .driver_info = device.driver_info,
           .driver_id = device.driver_id,

@@ -28,28 +28,28 @@ struct BackendRun {
 // its driver crashes; the next scene then gets a fresh one. Made on the first GPU draw only.
 class GpuSession {
  public:
-  explicit GpuSession(IsolationOptions options) : options_(std::move(options)) {}
-  IsolatedGpuResult Render(const DrawList& list);
+  explicit GpuSession(gpu::IsolationOptions options) : options_(std::move(options)) {}
+  gpu::IsolatedGpuResult Render(const DrawList& list);
   // Render in two halves (gpu/isolated_gpu.hpp), so that the twin can draw while the child does.
   void Submit(const DrawList& list);
-  IsolatedGpuResult Collect();
+  gpu::IsolatedGpuResult Collect();
   // The device the living child draws on, known once it has answered a list; empty otherwise.
-  DeviceIdentity KnownDevice() const;
+  gpu::DeviceIdentity KnownDevice() const;
 
  private:
-  IsolationOptions options_;
-  std::optional<GpuProcess> process_;
+  gpu::IsolationOptions options_;
+  std::optional<gpu::GpuProcess> process_;
 };
 
 // Throws GpuUnavailable without a device, and std::invalid_argument for a list the renderer
 // refuses. A crash or a timeout is a result: status kCrashed or kTimedOut, the problem naming
 // `source`, no image; `device` is still known when the child got that far.
-BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, DeviceIdentity& device);
+BackendRun DrawOnGpu(const DrawList& list, GpuSession& gpu, const std::string& source, gpu::DeviceIdentity& device);
 // The same for a list submitted earlier (GpuSession::Submit).
-BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, DeviceIdentity& device);
+BackendRun CollectFromGpu(GpuSession& gpu, const std::string& source, gpu::DeviceIdentity& device);
 
 // What the twin's choice of rules reads of a device (twin_rules/twin_rules.hpp).
-twin_rules::DeviceFacts FactsOf(const DeviceIdentity& device);
+twin_rules::DeviceFacts FactsOf(const gpu::DeviceIdentity& device);
 
 // The twin, with the arithmetic of the lavapipe it copies.
 BackendRun DrawOnTwin(const DrawList& list, const cpu::RasterRules& rules, unsigned threads);

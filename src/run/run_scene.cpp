@@ -25,7 +25,7 @@ RunRecord SceneRecord(const Scene& scene, const std::string& source, const RunOp
 }
 
 // The twin with the rules of the device that drew (with no device, lavapipe's default release).
-BackendRun Twin(const DrawList& list, const DeviceIdentity& device, const RunOptions& options,
+BackendRun Twin(const DrawList& list, const gpu::DeviceIdentity& device, const RunOptions& options,
                 std::optional<twin_rules::TwinRules>& rules) {
   rules = twin_rules::ChooseTwinRules(FactsOf(device), twin_rules::DetectCpuPath());
   return DrawOnTwin(list, rules->rules, options.threads);
@@ -39,7 +39,7 @@ void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gp
                  std::vector<BackendRun>& runs, const StatusLine& status) {
   Say(status, "gpu: drawing on Vulkan...");
   gpu.Submit(list);
-  const DeviceIdentity expected = gpu.KnownDevice();
+  const gpu::DeviceIdentity expected = gpu.KnownDevice();
   std::optional<BackendRun> twin;
   std::optional<twin_rules::TwinRules> twin_rules;
   if (options.backends == Backends::kBoth && !expected.name.empty()) {
@@ -51,7 +51,7 @@ void DrawWithGpu(const DrawList& list, const RunOptions& options, GpuSession& gp
       throw;
     }
   }
-  DeviceIdentity device;
+  gpu::DeviceIdentity device;
   runs.push_back(CollectFromGpu(gpu, record.scene, device));
   if (options.backends == Backends::kGpu) return;
   record.twin = twin_rules::ChooseTwinRules(FactsOf(device), twin_rules::DetectCpuPath());
@@ -78,7 +78,7 @@ std::vector<BackendRun> Draw(const Scene& scene, const DrawList& list, const Run
   }
   Say(status, "cpu: drawing...");
   if (options.device.empty()) {
-    runs.push_back(Twin(list, DeviceIdentity{}, options, record.twin));
+    runs.push_back(Twin(list, gpu::DeviceIdentity{}, options, record.twin));
   } else {
     record.twin = twin_rules::ChooseTwinRulesByName(options.device, twin_rules::DetectCpuPath());
     runs.push_back(DrawOnTwin(list, record.twin->rules, options.threads));

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -20,10 +20,10 @@ int Rank(run::Verdict verdict) { return static_cast<int>(verdict); }
 std::string RelativeLink(const std::string& file, const std::filesystem::path& dir) {
   const std::filesystem::path target = std::filesystem::absolute(file).lexically_normal();
   const std::filesystem::path base = std::filesystem::absolute(dir).lexically_normal();
-  return Href(target.lexically_relative(base).generic_string());
+  return markup::Href(target.lexically_relative(base).generic_string());
 }
 
-std::string Ms(double ms) { return Number(ms, ms < 10 ? 2 : 3); }
+std::string Ms(double ms) { return markup::Number(ms, ms < 10 ? 2 : 3); }
 
 void Thumbnails(std::ostringstream& row, const run::RunRecord& r, const std::filesystem::path& dir) {
   const ThumbnailSize size = ThumbnailSizeFor(r.width, r.height, kThumbnailSide);
@@ -34,8 +34,9 @@ void Thumbnails(std::ostringstream& row, const run::RunRecord& r, const std::fil
       continue;
     }
     row << "<td><a href=\"" << RelativeLink(full, dir) << "\"><img class=\"thumb\" loading=\"lazy\" src=\""
-        << Href(ThumbnailPath(r, kind).generic_string()) << "\" width=\"" << size.width << "\" height=\"" << size.height
-        << "\" alt=\"" << ImageKindName(kind) << " image of " << Escape(r.name) << "\"></a></td>";
+        << markup::Href(ThumbnailPath(r, kind).generic_string()) << "\" width=\"" << size.width << "\" height=\""
+        << size.height << "\" alt=\"" << ImageKindName(kind) << " image of " << markup::Escape(r.name)
+        << "\"></a></td>";
   }
 }
 
@@ -94,7 +95,7 @@ std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& 
 std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::path& dir) {
   using run::Verdict;
   std::ostringstream page;
-  page << PageStart("twinraster render: " + Counted(batch.Scenes(), "scene")) << "<h1>twinraster render</h1>\n";
+  page << markup::PageStart("twinraster render: " + Counted(batch.Scenes(), "scene")) << "<h1>twinraster render</h1>\n";
   page << "<table class=\"summary\" id=\"summary\"><tr>";
   const std::pair<const char*, std::size_t> counts[] = {{"scenes", batch.Scenes()},
                                                         {"identical", batch.Count(Verdict::kIdentical)},
@@ -107,7 +108,8 @@ std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::
   for (const auto& [name, count] : counts) page << "<th class=\"n\">" << name << "</th>";
   page << "<th class=\"n\">total time</th></tr>\n<tr>";
   for (const auto& [name, count] : counts) page << "<td class=\"n\" data-count=\"" << name << "\">" << count << "</td>";
-  page << "<td class=\"n\" data-count=\"seconds\">" << Number(batch.total_ms / 1000, 4) << " s</td></tr></table>\n";
+  page << "<td class=\"n\" data-count=\"seconds\">" << markup::Number(batch.total_ms / 1000, 4)
+       << " s</td></tr></table>\n";
   page << "<p>identical: the GPU's and the twin's images agree bit for bit. verified: they differ (or one image "
           "was judged) and every pixel is one Vulkan allows. inconclusive: no pixel is wrong, but too few are certain "
           "to tell a broken image (docs/verify.md). differing: a pixel the verifier rejects, or a difference "
@@ -119,26 +121,26 @@ std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::
   for (const run::RunRecord* r : PageOrder(batch.Records())) {
     const run::Verdict verdict = r->verdict;
     std::ostringstream row;
-    row << "<tr class=\"scene\" data-verdict=\"" << run::VerdictName(verdict) << "\" data-scene=\"" << Escape(r->scene)
-        << "\"><td class=\"name\"><b>" << Escape(r->name) << "</b><br><span class=\"path\">" << Escape(r->scene)
-        << "</span></td>";
+    row << "<tr class=\"scene\" data-verdict=\"" << run::VerdictName(verdict) << "\" data-scene=\""
+        << markup::Escape(r->scene) << "\"><td class=\"name\"><b>" << markup::Escape(r->name)
+        << "</b><br><span class=\"path\">" << markup::Escape(r->scene) << "</span></td>";
     if (verdict == run::Verdict::kError) {
       row << "<td colspan=\"4\" class=\"none\">no images</td>";
     } else {
       Thumbnails(row, *r, dir);
     }
     row << "<td class=\"reason verdict-" << run::VerdictName(verdict) << "\"><b>" << run::VerdictName(verdict)
-        << "</b><br>" << Escape(VerdictReason(*r)) << "</td>";
+        << "</b><br>" << markup::Escape(VerdictReason(*r)) << "</td>";
     row << "<td class=\"n differing\">" << (r->comparison ? std::to_string(r->comparison->differing_pixels) : "-")
         << "</td>";
     row << "<td class=\"n violations\">" << (r->verification ? std::to_string(r->verification->violations) : "-")
         << "</td>";
-    row << "<td class=\"details\">" << Escape(DeviceText(*r)) << "<br>"
+    row << "<td class=\"details\">" << markup::Escape(DeviceText(*r)) << "<br>"
         << (verdict == run::Verdict::kError ? "" : TimesText(*r)) << "</td></tr>\n";
     page << row.str();
   }
-  page << "</tbody></table>\n" << kPageEnd;
+  page << "</tbody></table>\n" << markup::kPageEnd;
   return page.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 // The longer side of a thumbnail, in pixels.
 inline constexpr std::uint32_t kThumbnailSide = 96;
@@ -33,4 +33,4 @@ std::vector<const run::RunRecord*> PageOrder(const std::vector<run::RunRecord>& 
 // The page, for `dir`/index.html: links to images are relative to `dir`.
 std::string BatchPageHtml(const run::BatchResult& batch, const std::filesystem::path& dir);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

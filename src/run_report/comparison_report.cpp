@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 nlohmann::ordered_json CompareJson(const NamedImage& a, const NamedImage& b, const Comparison& c,
                                    const std::optional<std::string>& diff) {
@@ -37,4 +37,4 @@ std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comp
          std::to_string(c.max_channel_difference) + (c.Equal() ? " (identical)" : "");
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 // compare --json's "format"; any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/).
@@ -29,4 +29,4 @@ std::string ComparisonText(const NamedImage& a, const NamedImage& b, const Compa
 // Two images of one size, `width` x `height`.
 std::string ComparisonText(std::uint32_t width, std::uint32_t height, const Comparison& c);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

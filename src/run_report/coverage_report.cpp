@@ -7,7 +7,7 @@
 
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -119,4 +119,4 @@ std::string CoverageReportText(const CoverageReport& r) {
   return s.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 inline constexpr const char* kCoverageJsonFormat = "twinraster.verify-coverage/2";
 
@@ -33,4 +33,4 @@ struct CoverageReport {
 nlohmann::ordered_json CoverageJson(const CoverageReport& report);
 std::string CoverageReportText(const CoverageReport& report);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -10,7 +10,7 @@ constexpr const char* kDevice = "twinraster:device";
 constexpr const char* kSubpixelBits = "twinraster:subPixelPrecisionBits";
 constexpr const char* kStrictLines = "twinraster:strictLines";
 
-const std::string* Find(const PngNotes& notes, const char* key) {
+const std::string* Find(const files::PngNotes& notes, const char* key) {
   for (const auto& [k, v] : notes) {
     if (k == key) return &v;
   }
@@ -19,13 +19,13 @@ const std::string* Find(const PngNotes& notes, const char* key) {
 
 }  // namespace
 
-PngNotes NotesOf(const verify::DrawnBy& drawn_by) {
+files::PngNotes NotesOf(const verify::DrawnBy& drawn_by) {
   return {{kDevice, drawn_by.device},
           {kSubpixelBits, std::to_string(drawn_by.rasterizes.subpixel_bits)},
           {kStrictLines, drawn_by.rasterizes.strict_lines ? "true" : "false"}};
 }
 
-std::optional<verify::DrawnBy> DrawnByOf(const PngNotes& notes) {
+std::optional<verify::DrawnBy> DrawnByOf(const files::PngNotes& notes) {
   const std::string *device = Find(notes, kDevice), *bits = Find(notes, kSubpixelBits),
                     *strict = Find(notes, kStrictLines);
   if (!device || !bits || !strict || (*strict != "true" && *strict != "false")) return std::nullopt;
@@ -35,4 +35,4 @@ std::optional<verify::DrawnBy> DrawnByOf(const PngNotes& notes) {
   return verify::DrawnBy{*device, {.subpixel_bits = n, .strict_lines = *strict == "true"}};
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

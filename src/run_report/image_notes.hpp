@@ -9,10 +9,10 @@
 #include <optional>
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
-PngNotes NotesOf(const verify::DrawnBy& drawn_by);
+files::PngNotes NotesOf(const verify::DrawnBy& drawn_by);
 // Empty when the notes lack a device or a rule, or hold one out of range (bits outside 0..24).
-std::optional<verify::DrawnBy> DrawnByOf(const PngNotes& notes);
+std::optional<verify::DrawnBy> DrawnByOf(const files::PngNotes& notes);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

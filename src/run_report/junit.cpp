@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -32,16 +32,16 @@ std::string JUnitXml(const run::BatchResult& batch, bool verify_asked) {
       << seconds << "\">\n<testsuite name=\"twinraster render\" " << counts << " time=\"" << seconds << "\">\n";
   for (const run::RunRecord& r : batch.Records()) {
     const run::Verdict v = r.verdict;
-    xml << "<testcase classname=\"twinraster.render\" name=\"" << Escape(r.scene) << "\" time=\"" << Seconds(r.total_ms)
-        << "\">\n";
+    xml << "<testcase classname=\"twinraster.render\" name=\"" << markup::Escape(r.scene) << "\" time=\""
+        << Seconds(r.total_ms) << "\">\n";
     if (run::IsFailure(v)) {
       const char* element = v == run::Verdict::kDiffering ? "failure" : "error";
-      xml << "<" << element << " type=\"" << run::VerdictName(v) << "\" message=\"" << Escape(VerdictReason(r))
+      xml << "<" << element << " type=\"" << run::VerdictName(v) << "\" message=\"" << markup::Escape(VerdictReason(r))
           << "\"/>\n";
     }
     // Neither passed nor failed: JUnit's nearest word for a test that could not decide.
-    if (run::IsInconclusive(v)) xml << "<skipped message=\"" << Escape(VerdictReason(r)) << "\"/>\n";
-    xml << "<system-out>" << Escape(v == run::Verdict::kError ? r.error + "\n" : RenderText(r, verify_asked))
+    if (run::IsInconclusive(v)) xml << "<skipped message=\"" << markup::Escape(VerdictReason(r)) << "\"/>\n";
+    xml << "<system-out>" << markup::Escape(v == run::Verdict::kError ? r.error + "\n" : RenderText(r, verify_asked))
         << "</system-out>\n";
     xml << "</testcase>\n";
   }
@@ -49,4 +49,4 @@ std::string JUnitXml(const run::BatchResult& batch, bool verify_asked) {
   return xml.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

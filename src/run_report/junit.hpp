@@ -7,10 +7,10 @@
 
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 // errors: bad input and crashed drivers; failures: differing images. Each failure's message says
 // why (VerdictReason); the scene's report lines are its system-out. The counts are the batch's.
 std::string JUnitXml(const run::BatchResult& batch, bool verify_asked);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -8,7 +8,7 @@
 
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -147,4 +147,4 @@ std::string VerdictReason(const run::RunRecord& r) {
   return "";
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 // render --json's "format"; any change to its keys or their meaning gets a new number
 // (docs/json-output.md, docs/schemas/).
@@ -23,4 +23,4 @@ nlohmann::ordered_json RenderJson(const run::RunRecord& record);
 // One line on why a scene got its verdict: the problem, the verifier's sentence, or the comparison's.
 std::string VerdictReason(const run::RunRecord& record);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 namespace {
 
@@ -163,4 +163,4 @@ std::string VerifyText(const VerifyReport& r) {
   return s.str();
 }
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-namespace twinraster::report {
+namespace twinraster::run_report {
 
 inline constexpr const char* kVerifyJsonFormat = "twinraster.verify/3";
 
@@ -60,4 +60,4 @@ struct VerifyReport {
 nlohmann::ordered_json VerifyJson(const VerifyReport& report);
 std::string VerifyText(const VerifyReport& report);
 
-}  // namespace twinraster::report
+}  // namespace twinraster::run_report

@@ -11,9 +11,7 @@
 #include <algorithm>
 #include <array>
 
-namespace twinraster {
-
-namespace gltf {
+namespace twinraster::gltf {
 
 std::size_t ReadIndex(const JsonReader& r, std::size_t size, std::string_view array) {
   if (size == 0) r.Fail("names an entry of \"" + std::string(array) + "\", but the file has none");
@@ -37,7 +35,9 @@ bool MultiplyChecked(std::uint64_t a, std::uint64_t b, std::uint64_t& product) {
   return !__builtin_mul_overflow(a, b, &product);
 }
 
-}  // namespace gltf
+}  // namespace twinraster::gltf
+
+namespace twinraster {
 
 namespace {
 

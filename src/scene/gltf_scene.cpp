@@ -11,9 +11,7 @@
 #include <cctype>
 #include <map>
 
-namespace twinraster {
-
-namespace gltf {
+namespace twinraster::gltf {
 
 std::vector<PlacedNode> WalkScene(const GltfDocument& doc, const std::optional<std::size_t>& scene) {
   std::vector<std::size_t> roots;
@@ -58,7 +56,9 @@ std::shared_ptr<const std::vector<TransformStep>> NodeSteps(const GltfDocument& 
   return steps;
 }
 
-}  // namespace gltf
+}  // namespace twinraster::gltf
+
+namespace twinraster {
 
 namespace {
 

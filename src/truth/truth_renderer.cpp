@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-namespace twinraster {
+namespace twinraster::truth {
 
 namespace {
 
@@ -194,4 +194,4 @@ TruthImage RenderTruthSurfaces(const DrawList& list, const ExactClipPositions& c
   return Render(list, clip, light, true);
 }
 
-}  // namespace twinraster
+}  // namespace twinraster::truth

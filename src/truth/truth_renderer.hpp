@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace twinraster {
+namespace twinraster::truth {
 
 // Clip-space positions in double for one draw: clip[i] = F_double · (mesh vertex i, 1), where
 // F_double is the instance's matrix composed in double and never rounded to float. One vector per
@@ -63,4 +63,4 @@ TruthImage RenderTruthSurfaces(const DrawList& list, const ExactClipPositions& c
 // transform with the viewport covering the canvas (x = (x/w + 1)·W/2, ...), minDepth 0, maxDepth 1.
 glm::dvec3 ExactFramebuffer(glm::dvec4 clip, std::uint32_t width, std::uint32_t height);
 
-}  // namespace twinraster
+}  // namespace twinraster::truth

@@ -39,7 +39,7 @@ class FrameShared {
   };
 
   const DrawList& list_;
-  std::optional<ExactLight> light_;
+  std::optional<truth::ExactLight> light_;
   std::unique_ptr<Once<Corners>[]> corners_;                                   // per draw; null: over the budget
   std::unique_ptr<Once<std::vector<std::array<Neighbour, 3>>>[]> neighbours_;  // per mesh
 };

@@ -60,19 +60,19 @@ TEST_CASE("bench's summary has a section only for what ran, and says none down t
 }
 
 TEST_CASE("RunBench reports each row through on_row as it is measured, in order, numbered of the total", "[bench]") {
-  BenchOptions options;
+  bench::BenchOptions options;
   options.scenes_dir = test::SourcePath("scenes");
   options.runs = 1;
   options.only = "cgfs-";
   options.methods = {"compose-f64", "camera-relative", "cpu-twin"};
-  std::vector<BenchRow> seen;
+  std::vector<bench::BenchRow> seen;
   std::vector<std::size_t> numbers, totals;
-  options.on_row = [&](const BenchRow& row, std::size_t done, std::size_t total) {
+  options.on_row = [&](const bench::BenchRow& row, std::size_t done, std::size_t total) {
     seen.push_back(row);
     numbers.push_back(done);
     totals.push_back(total);
   };
-  const BenchResult result = RunBench(options);
+  const bench::BenchResult result = bench::RunBench(options);
   // Three cgfs-* scenes, each with two vertex methods and the twin with 1 thread (and with every core).
   REQUIRE(result.rows.size() >= 9);
   REQUIRE(seen.size() == result.rows.size());

@@ -42,16 +42,16 @@ TEST_CASE("bench --out writes the CSV, the chart and the JSON for the chosen sce
 
 TEST_CASE("RunBench: every row of a lit scene has a colour error near 0 over most of the picture, unlit rows none",
           "[bench][lighting]") {
-  BenchOptions options;
+  bench::BenchOptions options;
   options.scenes_dir = test::SourcePath("scenes");
   options.runs = 1;
   options.only = "lit-gouraud";
-  const BenchResult lit = RunBench(options);
+  const bench::BenchResult lit = bench::RunBench(options);
   // Four vertex methods, then the twin and lavapipe with one thread (and with every core), then the
   // twin with SwiftShader's rules and SwiftShader.
   REQUIRE(lit.rows.size() >= 8);
   std::vector<int> swiftshader_errors;
-  for (const BenchRow& row : lit.rows) {
+  for (const bench::BenchRow& row : lit.rows) {
     INFO(row.method << " " << row.threads);
     REQUIRE(row.scene == "lit-gouraud");
     REQUIRE(row.colour_error.has_value());
@@ -69,9 +69,9 @@ TEST_CASE("RunBench: every row of a lit scene has a colour error near 0 over mos
   CHECK(swiftshader_errors[0] == swiftshader_errors[1]);
   options.only = "cgfs-scene";
   options.methods = {"compose-f32", "cpu-twin"};
-  const BenchResult unlit = RunBench(options);
+  const bench::BenchResult unlit = bench::RunBench(options);
   REQUIRE(unlit.rows.size() >= 2);
-  for (const BenchRow& row : unlit.rows) {
+  for (const bench::BenchRow& row : unlit.rows) {
     CHECK_FALSE(row.colour_error.has_value());
     CHECK(row.colour_pixels == 0);
   }

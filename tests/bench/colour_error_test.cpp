@@ -72,7 +72,7 @@ std::string TableRow(const std::string& table, const std::string& scene, const s
 TEST_CASE("SameSurfaceColourError: the largest channel difference where the image shows the truth's triangle",
           "[bench][lighting]") {
   // Five pixels in a row. The truth shows background, surface 1, 1, 2, 2.
-  TruthImage truth{Image(5, 1), {0, 1, 1, 2, 2}};
+  truth::TruthImage truth{Image(5, 1), {0, 1, 1, 2, 2}};
   Image image(5, 1), surfaces(5, 1);
   const Rgb8 truth_colours[5] = {{0, 0, 0}, {100, 100, 100}, {100, 100, 100}, {40, 50, 60}, {40, 50, 60}};
   const Rgb8 image_colours[5] = {{90, 0, 0}, {100, 103, 100}, {160, 100, 100}, {40, 50, 53}, {40, 50, 60}};
@@ -82,30 +82,30 @@ TEST_CASE("SameSurfaceColourError: the largest channel difference where the imag
     SetPixel(image, p, image_colours[p]);
     SetPixel(surfaces, p, SurfaceColour(shown[p]));
   }
-  const ColourError error = SameSurfaceColourError(image, surfaces, truth);
+  const bench::ColourError error = bench::SameSurfaceColourError(image, surfaces, truth);
   // Pixel 0 is background and pixel 2 another triangle: left out, however far their colours are.
   CHECK(error.max_channel == 7);
   CHECK(error.pixels == 3);
   // Surface numbers use all 24 bits: 0x010203 is not 0x030201.
   truth.surfaces = {0, 0x010203, 0, 0, 0};
   SetPixel(surfaces, 1, Rgb8{0x03, 0x02, 0x01});
-  CHECK(SameSurfaceColourError(image, surfaces, truth).pixels == 1);
+  CHECK(bench::SameSurfaceColourError(image, surfaces, truth).pixels == 1);
   SetPixel(surfaces, 1, Rgb8{0x01, 0x02, 0x03});
-  CHECK(SameSurfaceColourError(image, surfaces, truth).pixels == 0);
+  CHECK(bench::SameSurfaceColourError(image, surfaces, truth).pixels == 0);
   // Images that do not match in size compare nothing.
-  CHECK(SameSurfaceColourError(Image(4, 1), surfaces, truth).pixels == 0);
+  CHECK(bench::SameSurfaceColourError(Image(4, 1), surfaces, truth).pixels == 0);
 }
 
 TEST_CASE("SurfaceList numbers each draw's triangles after the earlier draws', as the truth's surfaces do",
           "[bench][lighting]") {
   const Scene scene = LitSquares({{-1.5, 0, 5}, {1.5, 0, 5}}, 0.2);
   const DrawList list = BuildDrawList(scene);
-  const std::optional<DrawList> ids = SurfaceList(list);
+  const std::optional<DrawList> ids = bench::SurfaceList(list);
   REQUIRE(ids.has_value());
   CHECK_FALSE(ids->lighting.has_value());
   const Image shown = cpu::RenderOnCpu(*ids);
-  const ExactLight light(scene);
-  const TruthImage truth = RenderTruthSurfaces(list, ExactClipSpace(scene), &light);
+  const truth::ExactLight light(scene);
+  const truth::TruthImage truth = truth::RenderTruthSurfaces(list, truth::ExactClipSpace(scene), &light);
   std::uint64_t same = 0, covered = 0, per_surface[5] = {0, 0, 0, 0, 0};
   for (std::size_t p = 0; p < truth.surfaces.size(); ++p) {
     const std::uint8_t* c = &shown.rgba[4 * p];
@@ -126,11 +126,12 @@ TEST_CASE("The colour error sees a wrong light: more ambient is off by what it a
   Scene brighter = scene;
   brighter.lighting->ambient = 0.35;  // I = 0.85 instead of 0.75: white goes from 191.25 to 216.75
   const DrawList list = BuildDrawList(scene);
-  const ExactLight light(scene);
-  const TruthImage truth = RenderTruthSurfaces(list, ExactClipSpace(scene), &light);
-  const Image surfaces = cpu::RenderOnCpu(*SurfaceList(list));
-  const ColourError right = SameSurfaceColourError(cpu::RenderOnCpu(list), surfaces, truth);
-  const ColourError wrong = SameSurfaceColourError(cpu::RenderOnCpu(BuildDrawList(brighter)), surfaces, truth);
+  const truth::ExactLight light(scene);
+  const truth::TruthImage truth = truth::RenderTruthSurfaces(list, truth::ExactClipSpace(scene), &light);
+  const Image surfaces = cpu::RenderOnCpu(*bench::SurfaceList(list));
+  const bench::ColourError right = bench::SameSurfaceColourError(cpu::RenderOnCpu(list), surfaces, truth);
+  const bench::ColourError wrong =
+      bench::SameSurfaceColourError(cpu::RenderOnCpu(BuildDrawList(brighter)), surfaces, truth);
   CHECK(right.max_channel <= 1);
   CHECK(wrong.max_channel >= 25);
   CHECK(wrong.max_channel <= 27);

@@ -22,8 +22,8 @@ struct Rendered {
 Rendered RenderBoth(const std::filesystem::path& file) {
   const Scene scene = LoadScene(file);
   const DrawList list = BuildDrawList(scene);
-  const ExactLight light(scene);
-  return {cpu::RenderOnCpu(list), RenderTruth(list, ExactClipSpace(scene), &light)};
+  const truth::ExactLight light(scene);
+  return {cpu::RenderOnCpu(list), truth::RenderTruth(list, truth::ExactClipSpace(scene), &light)};
 }
 
 // Blue (the far plate) where the truth shows red (the near plate).
@@ -98,9 +98,10 @@ TEST_CASE("Lit hard scenes: the twin's colours stay within 1 of the truth's tria
     ++lit_scenes;
     INFO(file.string());
     const DrawList list = BuildDrawList(scene);
-    const ExactLight light(scene);
-    const ColourError error = SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*SurfaceList(list)),
-                                                     RenderTruthSurfaces(list, ExactClipSpace(scene), &light));
+    const truth::ExactLight light(scene);
+    const bench::ColourError error =
+        bench::SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*bench::SurfaceList(list)),
+                                      truth::RenderTruthSurfaces(list, truth::ExactClipSpace(scene), &light));
     CHECK(error.pixels > 5000);  // the comparison covers most of each picture
     CHECK(error.max_channel <= 1);
   }

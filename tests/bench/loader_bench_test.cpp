@@ -90,22 +90,22 @@ TEST_CASE("DecomposeModelMatrix rebuilds rotations, mirrors and half turns throu
   };
   for (std::size_t i = 0; i < matrices.size(); ++i) {
     INFO(i);
-    const ObjectTransform t = DecomposeModelMatrix(matrices[i]);
+    const bench::ObjectTransform t = bench::DecomposeModelMatrix(matrices[i]);
     REQUIRE(t.residual < 1e-12);
   }
   // A shear has no object form: the residual says how far off it is.
   glm::dmat4 shear(1.0);
   shear[1][0] = 0.5;
-  REQUIRE(DecomposeModelMatrix(shear).residual > 0.1);
+  REQUIRE(bench::DecomposeModelMatrix(shear).residual > 0.1);
 }
 
 TEST_CASE("SceneAsJson writes a glTF file's Scene as JSON that loads as the same Scene", "[bench][loaders]") {
   const test::TempDir dir;
   const Scene gltf = LoadSceneOrObj(WriteTinyGlb(dir));
   REQUIRE(gltf.instances.size() == 2);
-  for (const JsonDigits digits : {JsonDigits::kExact, JsonDigits::kFloat}) {
+  for (const bench::JsonDigits digits : {bench::JsonDigits::kExact, bench::JsonDigits::kFloat}) {
     const std::filesystem::path file = dir / "scene.json";
-    test::WriteFile(file, SceneAsJson(gltf, digits));
+    test::WriteFile(file, bench::SceneAsJson(gltf, digits));
     const Scene json = LoadSceneOrObj(file);
     REQUIRE(json.models.size() == gltf.models.size());
     REQUIRE(json.models[0].vertices == gltf.models[0].vertices);  // float-valued: both spellings exact

@@ -24,7 +24,8 @@ TEST_CASE("compose-f64 through RasterizeClipSpace makes exactly the renderers' i
     const DrawList list = BuildDrawList(scene);
     if (list.width * list.height > 400'000) continue;  // the smaller scenes are enough here
     const Image direct = cpu::RenderOnCpu(list);
-    const Image via_clip = cpu::RasterizeClipSpace(list, TransformVertices(scene, list, VertexMethod::kComposeDouble));
+    const Image via_clip =
+        cpu::RasterizeClipSpace(list, bench::TransformVertices(scene, list, bench::VertexMethod::kComposeDouble));
     REQUIRE(direct.rgba == via_clip.rgba);
     ++judged;
   }
@@ -36,10 +37,11 @@ TEST_CASE("On the chapter's scenes every method lands within 1e-3 px of the trut
     INFO(name);
     const Scene scene = Load(name);
     const DrawList list = BuildDrawList(scene);
-    const ExactClipPositions exact = ExactClipSpace(scene);
-    for (VertexMethod method : kAllMethods) {
-      INFO(MethodName(method));
-      const double error = VertexErrorPixels(TransformVertices(scene, list, method), exact, list.width, list.height);
+    const truth::ExactClipPositions exact = truth::ExactClipSpace(scene);
+    for (bench::VertexMethod method : bench::kAllMethods) {
+      INFO(bench::MethodName(method));
+      const double error =
+          bench::VertexErrorPixels(bench::TransformVertices(scene, list, method), exact, list.width, list.height);
       REQUIRE(error > 0);  // float is never exact here: the measurement is live
       REQUIRE(error < 1e-3);
     }
@@ -50,15 +52,15 @@ TEST_CASE("1e7 units from the origin: composing in double keeps vertices within 
           "[methods][hard]") {
   const Scene scene = Load("scenes/hard/far-1e7.json");
   const DrawList list = BuildDrawList(scene);
-  const ExactClipPositions exact = ExactClipSpace(scene);
-  const auto error = [&](VertexMethod m) {
-    return VertexErrorPixels(TransformVertices(scene, list, m), exact, list.width, list.height);
+  const truth::ExactClipPositions exact = truth::ExactClipSpace(scene);
+  const auto error = [&](bench::VertexMethod m) {
+    return bench::VertexErrorPixels(bench::TransformVertices(scene, list, m), exact, list.width, list.height);
   };
-  REQUIRE(error(VertexMethod::kCameraRelative) < 1.0 / 256);
-  REQUIRE(error(VertexMethod::kComposeDouble) < 1.0 / 256);
+  REQUIRE(error(bench::VertexMethod::kCameraRelative) < 1.0 / 256);
+  REQUIRE(error(bench::VertexMethod::kComposeDouble) < 1.0 / 256);
   // Float has a spacing of 1 unit at 1e7: the scene, a few units across, falls apart.
-  REQUIRE(error(VertexMethod::kComposeFloat) > 10);
-  REQUIRE(error(VertexMethod::kStepsFloat) > 10);
+  REQUIRE(error(bench::VertexMethod::kComposeFloat) > 10);
+  REQUIRE(error(bench::VertexMethod::kStepsFloat) > 10);
 }
 
 TEST_CASE("Vertex error grows with the distance from the origin for float composition only", "[methods][hard]") {
@@ -67,11 +69,11 @@ TEST_CASE("Vertex error grows with the distance from the origin for float compos
     INFO(name);
     const Scene scene = Load(name);
     const DrawList list = BuildDrawList(scene);
-    const ExactClipPositions exact = ExactClipSpace(scene);
-    const double f32 =
-        VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kComposeFloat), exact, list.width, list.height);
-    const double relative = VertexErrorPixels(TransformVertices(scene, list, VertexMethod::kCameraRelative), exact,
-                                              list.width, list.height);
+    const truth::ExactClipPositions exact = truth::ExactClipSpace(scene);
+    const double f32 = bench::VertexErrorPixels(
+        bench::TransformVertices(scene, list, bench::VertexMethod::kComposeFloat), exact, list.width, list.height);
+    const double relative = bench::VertexErrorPixels(
+        bench::TransformVertices(scene, list, bench::VertexMethod::kCameraRelative), exact, list.width, list.height);
     REQUIRE(f32 > previous);
     REQUIRE(relative < 1.0 / 256);
     previous = f32;
@@ -81,7 +83,7 @@ TEST_CASE("Vertex error grows with the distance from the origin for float compos
 TEST_CASE("RasterizeClipSpace refuses positions that do not match the draw list", "[methods]") {
   const Scene scene = Load("scenes/cgfs-scene.json");
   const DrawList list = BuildDrawList(scene);
-  cpu::ClipPositions clip = TransformVertices(scene, list, VertexMethod::kComposeDouble);
+  cpu::ClipPositions clip = bench::TransformVertices(scene, list, bench::VertexMethod::kComposeDouble);
   clip[0].pop_back();
   REQUIRE_THROWS_AS(cpu::RasterizeClipSpace(list, clip), std::invalid_argument);
   REQUIRE_THROWS_AS(cpu::RasterizeClipSpace(list, {}), std::invalid_argument);

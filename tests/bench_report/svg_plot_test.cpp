@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-using namespace twinraster::report;
+using namespace twinraster::bench_report;
 
 namespace {
 

@@ -93,8 +93,8 @@ TEST_CASE(
   CHECK_THAT(r.out, HasSubstring("twin: SwiftShader rules ('swiftshader' asked, no device opened), SwiftShader "
                                  "Device (Subzero), driver 5.0.0, 4 subpixel bits"));
   CHECK_THAT(r.out, !HasSubstring("no device was asked"));
-  CHECK(ReadPng(dir / "c.png").rgba == ReadPng(dir / "b-gpu.png").rgba);
-  CHECK(ReadPng(dir / "c.png").rgba == ReadPng(dir / "b-cpu.png").rgba);
+  CHECK(files::ReadPng(dir / "c.png").rgba == files::ReadPng(dir / "b-gpu.png").rgba);
+  CHECK(files::ReadPng(dir / "c.png").rgba == files::ReadPng(dir / "b-cpu.png").rgba);
 
   // The JSON says whose rules, and the image's notes carry SwiftShader's 4 subpixel bits to verify.
   const test::CliResult j = test::RunCli(

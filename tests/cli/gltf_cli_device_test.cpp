@@ -57,7 +57,7 @@ TEST_CASE("A glTF file's COLOR_0 is interpolated across each triangle: lavapipe 
     CHECK(r.out.find("0 differing pixels") != std::string::npos);
     CHECK(r.out.find("verify: gpu image passes") != std::string::npos);
     // The colours vary across the quad: many more than its four corners'.
-    const Image image = ReadPng(dir / "q-cpu.png");
+    const Image image = files::ReadPng(dir / "q-cpu.png");
     CHECK(test::DistinctColours(image) > (unlit ? 1000u : 4u));
   }
 }
@@ -70,7 +70,7 @@ TEST_CASE("render, explain and verify take a glTF file with the same --camera an
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("320 x 200") != std::string::npos);
   CHECK(r.out.find("0 differing pixels") != std::string::npos);
-  CHECK(ReadPng(dir / "cam-gpu.png").width == 320);
+  CHECK(files::ReadPng(dir / "cam-gpu.png").width == 320);
 
   const test::CliResult v =
       test::RunCli({"verify", kCameras, (dir / "cam-gpu.png").string(), "--camera", "1", "--size", "320x200"});

@@ -27,7 +27,7 @@ bool Is(const std::uint8_t* p, Rgb8 c) { return p[0] == c.r && p[1] == c.g && p[
 
 // An engine's image of `twin`: covered pixels in random colours (never magenta), the clear magenta.
 std::filesystem::path Engine(const std::filesystem::path& twin, const std::filesystem::path& out) {
-  Image image = ReadPng(twin);
+  Image image = files::ReadPng(twin);
   std::mt19937 random(5);
   std::size_t covered = 0;
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
@@ -41,7 +41,7 @@ std::filesystem::path Engine(const std::filesystem::path& twin, const std::files
     ++covered;
   }
   REQUIRE(covered > 1000);
-  WritePng(out, image);
+  files::WritePng(out, image);
   return out;
 }
 

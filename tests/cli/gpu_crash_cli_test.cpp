@@ -32,7 +32,7 @@ TEST_CASE("render: a Vulkan driver that aborts is reported, and the twin's image
   CHECK(r.out.find("gpu vs cpu: not compared, there is no gpu image") != std::string::npos);
   CHECK(r.out.find("twin: ") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "f-gpu.png"));
-  const Image cpu = ReadPng((dir / "f-cpu.png").string());
+  const Image cpu = files::ReadPng((dir / "f-cpu.png").string());
   CHECK(cpu.width == 600);
 }
 

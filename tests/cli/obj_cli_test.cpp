@@ -32,7 +32,7 @@ TEST_CASE("render mesh.obj --backend cpu writes the framed mesh as a PNG", "[cli
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("1 instance, 8 triangles, 800 x 800") != std::string::npos);
-  const Image image = ReadPng(out);
+  const Image image = files::ReadPng(out);
   REQUIRE(image.width == 800);
   REQUIRE(image.height == 800);
   // The mesh covers the centre, and its corners are background.

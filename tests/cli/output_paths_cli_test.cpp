@@ -91,25 +91,25 @@ TEST_CASE("Missing directories are made for every option that writes, and a file
   const test::TempDir dir;
   const std::string png = (dir / "in.png").string();
   REQUIRE(test::RunCli({"render", kScene, "-o", png, "--backend", "cpu", "-q"}).exit_code == 0);
-  Image other = ReadPng(png);
+  Image other = files::ReadPng(png);
   other.rgba[0] = static_cast<std::uint8_t>(other.rgba[0] + 1);
-  WritePng(dir / "other.png", other);
+  files::WritePng(dir / "other.png", other);
 
   const auto render =
       test::RunCli({"render", kScene, "-o", (dir / "ci" / "ll.png").string(), "--backend", "cpu", "--junit",
                     (dir / "j" / "k" / "j.xml").string(), "--report", (dir / "r" / "s").string()});
   INFO(render.err);
   CHECK(render.exit_code == 0);
-  CHECK(ReadPng(dir / "ci" / "ll.png").width == 600);
+  CHECK(files::ReadPng(dir / "ci" / "ll.png").width == 600);
   CHECK(std::filesystem::is_regular_file(dir / "j" / "k" / "j.xml"));
   CHECK(std::filesystem::is_regular_file(dir / "r" / "s" / "index.html"));
   CHECK(test::RunCli({"explain", kScene, "--html", (dir / "e" / "x.html").string()}).exit_code == 0);
   CHECK(std::filesystem::is_regular_file(dir / "e" / "x.html"));
   CHECK(test::RunCli({"verify", kScene, png, "--map", (dir / "m" / "m.png").string()}).exit_code == 0);
-  CHECK(ReadPng(dir / "m" / "m.png").width == 600);
+  CHECK(files::ReadPng(dir / "m" / "m.png").width == 600);
   CHECK(test::RunCli({"compare", png, (dir / "other.png").string(), "--diff", (dir / "d" / "d.png").string()})
             .exit_code == 1);
-  CHECK(ReadPng(dir / "d" / "d.png").width == 600);
+  CHECK(files::ReadPng(dir / "d" / "d.png").width == 600);
 
   // A file where a directory must go: one line naming the option and the file, exit 2, nothing made.
   test::WriteFile(dir / "plain", "x");
@@ -141,9 +141,9 @@ TEST_CASE("render -o names a directory by a final / or an existing one, and a PN
   const test::CliResult one = test::RunCli({"render", kScene, "-o", (dir / "ci").string() + "/", "--backend", "cpu"});
   INFO(one.err);
   CHECK(one.exit_code == 0);
-  CHECK(ReadPng(dir / "ci" / "cgfs-transforms.png").width == 600);
+  CHECK(files::ReadPng(dir / "ci" / "cgfs-transforms.png").width == 600);
   CHECK(test::RunCli({"render", kLookAt, "-o", (dir / "ci").string(), "--backend", "cpu"}).exit_code == 0);
-  CHECK(ReadPng(dir / "ci" / "lookat.png").width == 640);
+  CHECK(files::ReadPng(dir / "ci" / "lookat.png").width == 640);
 
   const test::CliResult multi = test::RunCli({"render", kScene, kLookAt, "-o", (dir / "multi.png").string()});
   CHECK(multi.exit_code == 2);
@@ -179,15 +179,15 @@ TEST_CASE("A - output is standard output for every option that writes one file, 
 
   const test::CliResult map = test::RunCli({"verify", kScene, png, "--map", "-"});
   CHECK(map.exit_code == 0);
-  CHECK(DecodePng(map.out, "standard output").width == 600);
+  CHECK(files::DecodePng(map.out, "standard output").width == 600);
   CHECK_THAT(map.err, HasSubstring("map: standard output"));
 
-  Image other = ReadPng(png);
+  Image other = files::ReadPng(png);
   other.rgba[0] = static_cast<std::uint8_t>(other.rgba[0] + 1);
-  WritePng(dir / "other.png", other);
+  files::WritePng(dir / "other.png", other);
   const test::CliResult diff = test::RunCli({"compare", png, (dir / "other.png").string(), "--diff", "-"});
   CHECK(diff.exit_code == 1);
-  CHECK(DecodePng(diff.out, "standard output").width == 600);
+  CHECK(files::DecodePng(diff.out, "standard output").width == 600);
   CHECK_THAT(diff.err, HasSubstring("diff in standard output"));
   CHECK_FALSE(std::filesystem::exists(cwd / "-"));  // never a file named -
 

@@ -17,7 +17,7 @@ using namespace twinraster;
 TEST_CASE("Progress: a status line is replaced by the next and erased at the end, a line stays", "[cli][progress]") {
   std::ostringstream out;
   {
-    Progress progress(&out);
+    cli::Progress progress(&out);
     REQUIRE(progress.active());
     progress.Status("gpu: drawing...");
     progress.Status("cpu: drawing...");
@@ -32,13 +32,13 @@ TEST_CASE("Progress: a status line is replaced by the next and erased at the end
 TEST_CASE("Progress: a status longer than a terminal line is cut, so that erasing it erases all of it",
           "[cli][progress]") {
   std::ostringstream out;
-  Progress progress(&out);
+  cli::Progress progress(&out);
   progress.Status(std::string(200, 'x'));
   REQUIRE(out.str() == "\r\033[K" + std::string(69, 'x') + "...");
 }
 
 TEST_CASE("Progress without a stream writes nothing", "[cli][progress]") {
-  Progress progress(nullptr);
+  cli::Progress progress(nullptr);
   REQUIRE(!progress.active());
   progress.Status("drawing...");
   progress.Line("a row");
@@ -49,7 +49,7 @@ TEST_CASE("Progress without a stream writes nothing", "[cli][progress]") {
 TEST_CASE("Progress shows on a terminal only, and never when quiet", "[cli][progress]") {
   int pipe_ends[2];
   REQUIRE(::pipe(pipe_ends) == 0);
-  REQUIRE(!ShowProgressOn(pipe_ends[1], false));
+  REQUIRE(!cli::ShowProgressOn(pipe_ends[1], false));
   ::close(pipe_ends[0]);
   ::close(pipe_ends[1]);
 
@@ -60,25 +60,25 @@ TEST_CASE("Progress shows on a terminal only, and never when quiet", "[cli][prog
   REQUIRE(::unlockpt(master) == 0);
   const int terminal = ::open(::ptsname(master), O_RDWR | O_NOCTTY);
   REQUIRE(terminal >= 0);
-  CHECK(ShowProgressOn(terminal, false));
-  CHECK(!ShowProgressOn(terminal, true));
+  CHECK(cli::ShowProgressOn(terminal, false));
+  CHECK(!cli::ShowProgressOn(terminal, true));
   ::close(terminal);
   ::close(master);
 }
 
 TEST_CASE("BenchProgressLine numbers the row and gives its figures", "[cli][progress]") {
-  BenchRow row;
+  bench::BenchRow row;
   row.scene = "hard/far-1e5";
   row.method = "compose-f32";
   row.threads = 2;
   row.frame_ms = 0.974;
   row.vertex_error_px = 2.6213;
   row.image_error_px = 2514;
-  REQUIRE(report::BenchProgressLine(row, 3, 56) ==
+  REQUIRE(bench_report::BenchProgressLine(row, 3, 56) ==
           "[ 3/56] hard/far-1e5 compose-f32, 2 threads: frame 0.97 ms, vertex error 2.62e+00 px, image error 2514 px");
   row.method = "lavapipe";
   row.threads = 1;
   row.vertex_error_px = -1;  // whole-frame rows have no vertex error
-  REQUIRE(report::BenchProgressLine(row, 56, 56) ==
+  REQUIRE(bench_report::BenchProgressLine(row, 56, 56) ==
           "[56/56] hard/far-1e5 lavapipe, 1 thread: frame 0.97 ms, image error 2514 px");
 }

@@ -41,7 +41,7 @@ TEST_CASE("render --backend both writes both PNGs, reports 0 differing pixels, e
   for (const char* backend : {"gpu", "cpu"}) {
     const auto& b = j["backends"][backend];
     for (const char* stage : {"setup", "draw", "readback", "png"}) REQUIRE(b["timings_ms"][stage].get<double>() >= 0);
-    const Image image = ReadPng(b["output"].get<std::string>());
+    const Image image = files::ReadPng(b["output"].get<std::string>());
     REQUIRE(image.width == 600);
   }
   REQUIRE(std::filesystem::exists(dir / "frame-gpu.png"));
@@ -62,7 +62,7 @@ TEST_CASE("Without a Vulkan device: gpu exits 3 saying what to install, cpu stil
       test::RunCli({"render", kScene, "-o", (dir / "c.png").string(), "--backend", "cpu"}, {kNoVulkan});
   INFO(cpu.err);
   REQUIRE(cpu.exit_code == 0);
-  REQUIRE(ReadPng(dir / "c.png").height == 600);
+  REQUIRE(files::ReadPng(dir / "c.png").height == 600);
 }
 
 TEST_CASE(
@@ -165,7 +165,7 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   REQUIRE(r.err.find("broken.json: line 1") != std::string::npos);
   for (const char* file : {"cgfs-transforms-gpu.png", "cgfs-transforms-cpu.png", "lookat-gpu.png", "lookat-cpu.png"}) {
     INFO(file);
-    REQUIRE(ReadPng(out / file).width > 0);
+    REQUIRE(files::ReadPng(out / file).width > 0);
   }
   REQUIRE_FALSE(std::filesystem::exists(out / "broken-gpu.png"));
   // The Vulkan device is made once: the second scene's set-up is only its buffers.
@@ -174,7 +174,7 @@ TEST_CASE("render with several scenes writes each into -o DIR, keeps going past 
   const test::CliResult good =
       test::RunCli({"render", kScene, lookat, "-o", out.string(), "--backend", "cpu", "--png-level", "9"});
   REQUIRE(good.exit_code == 0);
-  REQUIRE(ReadPng(out / "lookat.png").width == 640);
+  REQUIRE(files::ReadPng(out / "lookat.png").width == 640);
   // One scene that cannot be read, with --json: its object says so, as a batch's line would.
   const test::CliResult alone = test::RunCli(
       {"render", (dir / "broken.json").string(), "-o", out.string() + "/b.png", "--backend", "cpu", "--json"});
@@ -239,8 +239,8 @@ TEST_CASE("render with several scenes: records in the order given, each scene's 
   // A batch's images are the ones a scene drawn on its own gets.
   const test::CliResult alone = test::RunCli({"render", lookat, "-o", (dir / "alone.png").string()});
   REQUIRE(alone.exit_code == 0);
-  CHECK(ReadPng(dir / "out/again-gpu.png").rgba == ReadPng(dir / "alone-gpu.png").rgba);
-  CHECK(ReadPng(dir / "out/again-cpu.png").rgba == ReadPng(dir / "alone-cpu.png").rgba);
+  CHECK(files::ReadPng(dir / "out/again-gpu.png").rgba == files::ReadPng(dir / "alone-gpu.png").rgba);
+  CHECK(files::ReadPng(dir / "out/again-cpu.png").rgba == files::ReadPng(dir / "alone-cpu.png").rgba);
 }
 
 TEST_CASE("render --wireframe: both backends draw the edges, identically, and the report says so",

@@ -48,9 +48,9 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   for (std::size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = std::uint8_t(i * 7);
   Image b = a;
   b.pixel(2, 1)[1] = std::uint8_t(b.pixel(2, 1)[1] + 9);
-  WritePng(dir / "a.png", a);
-  WritePng(dir / "a2.png", a);
-  WritePng(dir / "b.png", b);
+  files::WritePng(dir / "a.png", a);
+  files::WritePng(dir / "a2.png", a);
+  files::WritePng(dir / "b.png", b);
   REQUIRE(test::RunCli({"compare", (dir / "a.png").string(), (dir / "a2.png").string()}).exit_code == 0);
   const test::CliResult r = test::RunCli(
       {"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.png").string(), "--json"});
@@ -65,7 +65,7 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(j["differing_pixels"] == 1);
   REQUIRE(j["max_channel_difference"] == 9);
   REQUIRE(j["diff"] == (dir / "d.png").string());
-  const Image diff = ReadPng(dir / "d.png");
+  const Image diff = files::ReadPng(dir / "d.png");
   REQUIRE(diff.pixel(2, 1)[0] == 255);
   REQUIRE(diff.pixel(2, 1)[1] == 0);
   test::WriteFile(dir / "not.png", "text");
@@ -74,7 +74,7 @@ TEST_CASE("compare: identical images exit 0, different ones exit 1 with a diff",
   REQUIRE(bad.err.find("not.png") != std::string::npos);
 
   // Sizes that differ: no pixel counts (null, not missing), no diff, exit 1.
-  WritePng(dir / "small.png", Image(2, 2));
+  files::WritePng(dir / "small.png", Image(2, 2));
   const test::CliResult sizes =
       test::RunCli({"compare", (dir / "a.png").string(), (dir / "small.png").string(), "--json"});
   REQUIRE(sizes.exit_code == 1);
@@ -126,7 +126,7 @@ TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes
   // Standard output is the PNG and nothing else; the report went to standard error.
   REQUIRE(r.out.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   test::WriteFile(dir / "out.png", r.out);
-  const Image image = ReadPng(dir / "out.png");
+  const Image image = files::ReadPng(dir / "out.png");
   REQUIRE(image.width == 600);
   REQUIRE(image.height == 600);
   REQUIRE(r.err.rfind("-: 2 instances, 24 triangles, 600 x 600, loaded in ", 0) == 0);
@@ -134,7 +134,7 @@ TEST_CASE("render reads SCENE - from standard input and writes -o - as PNG bytes
 
   // The same image as a file written from the scene file.
   REQUIRE(test::RunCli({"render", kScene, "-o", (dir / "file.png").string(), "--backend", "cpu"}).exit_code == 0);
-  REQUIRE(ReadPng(dir / "file.png").rgba == image.rgba);
+  REQUIRE(files::ReadPng(dir / "file.png").rgba == image.rgba);
 
   // --quiet: nothing at all on standard error.
   const test::CliResult quiet = test::RunCliWithInput({"render", "-", "-o", "-", "--backend", "cpu", "-q"}, scene_text);
@@ -187,12 +187,12 @@ TEST_CASE("render -o and compare --diff must name .png files, in any case", "[cl
       test::RunCli({"render", kScene, "-o", (dir / "Frame.PNG").string(), "--backend", "cpu"});
   INFO(upper.err);
   REQUIRE(upper.exit_code == 0);
-  REQUIRE(ReadPng(dir / "Frame.PNG").width == 600);
+  REQUIRE(files::ReadPng(dir / "Frame.PNG").width == 600);
 
   Image a(2, 2), b(2, 2);
   b.pixel(0, 0)[0] = 200;
-  WritePng(dir / "a.png", a);
-  WritePng(dir / "b.png", b);
+  files::WritePng(dir / "a.png", a);
+  files::WritePng(dir / "b.png", b);
   const test::CliResult diff =
       test::RunCli({"compare", (dir / "a.png").string(), (dir / "b.png").string(), "--diff", (dir / "d.gif").string()});
   REQUIRE(diff.exit_code == 2);

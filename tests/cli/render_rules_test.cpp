@@ -39,7 +39,7 @@ TEST_CASE(
   REQUIRE(j["backends"]["cpu"]["device"] == "book rules: the chapter's demos, 1 thread");
   REQUIRE(j["differing_pixels"].is_null());
   // Figure 10-2's wireframe: 2509 painted pixels on the demo page's canvas (tests/book).
-  const Image image = ReadPng(dir / "f.png");
+  const Image image = files::ReadPng(dir / "f.png");
   REQUIRE(image.width == 600);
   REQUIRE(test::CountNotColour(image, {255, 255, 255}) == 2509);
   REQUIRE(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 1);
@@ -50,22 +50,22 @@ TEST_CASE(
   REQUIRE(text.exit_code == 0);
   REQUIRE(text.out.find("cpu: " + (dir / "g.png").string() + "  (book rules: the chapter's demos, 1 thread)") !=
           std::string::npos);
-  REQUIRE(ReadPng(dir / "g.png").rgba == image.rgba);
+  REQUIRE(files::ReadPng(dir / "g.png").rgba == image.rgba);
 
   // Several scenes into a directory: one PNG each, named after the scene, no -cpu suffix.
   const auto out = dir / "figures";
   const test::CliResult many = test::RunCli({"render", kFigure2, kFigure10, "--rules", "book", "-o", out.string()});
   INFO(many.err);
   REQUIRE(many.exit_code == 0);
-  REQUIRE(ReadPng(out / "cgfs-scene.png").rgba == image.rgba);
-  REQUIRE(test::CountNotColour(ReadPng(out / "cgfs-transforms.png"), {255, 255, 255}) == 5648);
+  REQUIRE(files::ReadPng(out / "cgfs-scene.png").rgba == image.rgba);
+  REQUIRE(test::CountNotColour(files::ReadPng(out / "cgfs-transforms.png"), {255, 255, 255}) == 5648);
   REQUIRE(std::distance(std::filesystem::directory_iterator(out), {}) == 2);
 
   // -o - is one PNG on standard output.
   const test::CliResult piped = test::RunCli({"render", kFigure2, "--rules", "book", "-o", "-"});
   REQUIRE(piped.exit_code == 0);
   test::WriteFile(dir / "piped.png", piped.out);
-  REQUIRE(ReadPng(dir / "piped.png").rgba == image.rgba);
+  REQUIRE(files::ReadPng(dir / "piped.png").rgba == image.rgba);
 }
 
 TEST_CASE(
@@ -93,6 +93,6 @@ TEST_CASE(
       test::RunCli({"render", (dir / "odd.json").string(), kFigure2, "--rules", "book", "-o", out.string()});
   REQUIRE(many.exit_code == 2);
   REQUIRE(many.err.find("odd.json: canvas: --rules book: ") != std::string::npos);
-  REQUIRE(test::CountNotColour(ReadPng(out / "cgfs-scene.png"), {255, 255, 255}) == 2509);
+  REQUIRE(test::CountNotColour(files::ReadPng(out / "cgfs-scene.png"), {255, 255, 255}) == 2509);
   REQUIRE_FALSE(std::filesystem::exists(out / "odd.png"));
 }

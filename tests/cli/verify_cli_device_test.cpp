@@ -43,7 +43,7 @@ TEST_CASE("verify: lavapipe's image passes (exit 0), and the map beside it is al
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.out, HasSubstring("passes: "));
   CHECK_THAT(r.out, HasSubstring(" 0 violations (subpixel bits 8, strict lines)"));
-  const Image map = ReadPng((dir / "gpu-map.png").string());
+  const Image map = files::ReadPng((dir / "gpu-map.png").string());
   CHECK(map.width == 600);
   CHECK(CountRed(map) == 0);
 }
@@ -52,12 +52,12 @@ TEST_CASE(
     "verify: an image upside down fails (exit 1), names the worst pixel and what is allowed there, and maps it red",
     "[cli][verify]") {
   const test::TempDir dir;
-  Image image = ReadPng(LavapipeImage(dir).string());
+  Image image = files::ReadPng(LavapipeImage(dir).string());
   Image flipped(image.width, image.height);
   for (std::uint32_t y = 0; y < image.height; ++y) {
     std::copy_n(image.pixel(0, y), image.width * 4, flipped.pixel(0, image.height - 1 - y));
   }
-  WritePng((dir / "flipped.png").string(), flipped);
+  files::WritePng((dir / "flipped.png").string(), flipped);
   const test::CliResult r = test::RunCli({"verify", kScene, (dir / "flipped.png").string(), "--json"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 1);
@@ -67,7 +67,7 @@ TEST_CASE(
   CHECK(j["pixels"]["violations"].get<int>() > 1000);
   CHECK(j["worst"]["allowed"].size() >= 1);
   CHECK(j["map"] == (dir / "flipped-map.png").string());
-  CHECK(CountRed(ReadPng((dir / "flipped-map.png").string())) == j["pixels"]["violations"].get<std::size_t>());
+  CHECK(CountRed(files::ReadPng((dir / "flipped-map.png").string())) == j["pixels"]["violations"].get<std::size_t>());
   const test::CliResult text = test::RunCli({"verify", kScene, (dir / "flipped.png").string(), "--no-map"});
   CHECK_THAT(text.out, HasSubstring("fails: "));
   CHECK_THAT(text.out, HasSubstring(" allowed ("));

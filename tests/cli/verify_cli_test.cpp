@@ -26,9 +26,9 @@ namespace {
 std::filesystem::path ResavedImage(const test::TempDir& dir, std::uint8_t alpha = 255) {
   const test::CliResult r = test::RunCli({"render", kScene, "--backend", "cpu", "-o", (dir / "twin.png").string()});
   REQUIRE(r.exit_code == 0);
-  Image image = ReadPng(dir / "twin.png");
+  Image image = files::ReadPng(dir / "twin.png");
   for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = alpha;
-  WritePng(dir / "resaved.png", image);
+  files::WritePng(dir / "resaved.png", image);
   return dir / "resaved.png";
 }
 

@@ -34,7 +34,7 @@ bool Is(const std::uint8_t* p, Rgb8 c) { return p[0] == c.r && p[1] == c.g && p[
 // An engine's image: the twin's covered pixels in random colours (never `clear`), its background
 // `clear`, written without notes (judged at the spec's loosest rules).
 std::filesystem::path Engine(const std::filesystem::path& twin, Rgb8 clear, const std::filesystem::path& out) {
-  Image image = ReadPng(twin);
+  Image image = files::ReadPng(twin);
   std::mt19937 random(3);
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
     std::uint8_t* p = &image.rgba[i];
@@ -45,7 +45,7 @@ std::filesystem::path Engine(const std::filesystem::path& twin, Rgb8 clear, cons
     for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(random() & 255);
     if (Is(p, clear)) p[0] ^= 1;
   }
-  WritePng(out, image);
+  files::WritePng(out, image);
   return out;
 }
 
@@ -70,7 +70,7 @@ TEST_CASE("verify --coverage: an engine's own shading and clear colour pass (exi
                                    "255) (--background)"));
     CHECK_THAT(r.out, HasSubstring("(subpixel bits 4)"));
   }
-  const Image map = ReadPng(dir / "engine-map.png");
+  const Image map = files::ReadPng(dir / "engine-map.png");
   CHECK(Count(map, {255, 0, 0}) == 0);
   CHECK(Count(map, {0, 64, 255}) == 0);
 
@@ -101,7 +101,7 @@ TEST_CASE("verify --coverage: a field of view 1 % off fails (exit 1) and the map
   const std::uint64_t spills = j["pixels"]["spills"], holes = j["pixels"]["holes"];
   CHECK(spills + holes == j["pixels"]["violations"].get<std::uint64_t>());
   CHECK(spills + holes > 0);
-  const Image map = ReadPng(dir / "bug-map.png");
+  const Image map = files::ReadPng(dir / "bug-map.png");
   CHECK(Count(map, {255, 0, 0}) == spills);
   CHECK(Count(map, {0, 64, 255}) == holes);
   const test::CliResult text = test::RunCli({"verify", "--coverage", kScene, engine.string(), "--no-map"});

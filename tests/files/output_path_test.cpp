@@ -16,13 +16,13 @@ using namespace twinraster;
 
 TEST_CASE("ReadOnlyByMode: no write bit for anyone is read-only, any write bit is for the system to judge",
           "[image][output]") {
-  CHECK(ReadOnlyByMode(S_IFREG | 0444));
-  CHECK(ReadOnlyByMode(S_IFREG | 0555));
-  CHECK(ReadOnlyByMode(S_IFDIR | 0500));
-  CHECK_FALSE(ReadOnlyByMode(S_IFREG | 0644));
-  CHECK_FALSE(ReadOnlyByMode(S_IFREG | 0200));
-  CHECK_FALSE(ReadOnlyByMode(S_IFREG | 0464));
-  CHECK_FALSE(ReadOnlyByMode(S_IFDIR | 0777));
+  CHECK(files::ReadOnlyByMode(S_IFREG | 0444));
+  CHECK(files::ReadOnlyByMode(S_IFREG | 0555));
+  CHECK(files::ReadOnlyByMode(S_IFDIR | 0500));
+  CHECK_FALSE(files::ReadOnlyByMode(S_IFREG | 0644));
+  CHECK_FALSE(files::ReadOnlyByMode(S_IFREG | 0200));
+  CHECK_FALSE(files::ReadOnlyByMode(S_IFREG | 0464));
+  CHECK_FALSE(files::ReadOnlyByMode(S_IFDIR | 0777));
 }
 
 TEST_CASE("A read-only file is refused as a target, and StagedFile leaves it as it was", "[image][output]") {
@@ -30,42 +30,43 @@ TEST_CASE("A read-only file is refused as a target, and StagedFile leaves it as 
   const auto golden = dir / "golden.png";
   test::WriteFile(golden, "protected");
   std::filesystem::permissions(golden, std::filesystem::perms(0444));
-  CHECK_THAT(FileTargetProblem(golden), HasSubstring("read-only"));
-  CHECK_THROWS_WITH(StagedFile(golden, "new"), HasSubstring(golden.string() + ": is read-only"));
+  CHECK_THAT(files::FileTargetProblem(golden), HasSubstring("read-only"));
+  CHECK_THROWS_WITH(files::StagedFile(golden, "new"), HasSubstring(golden.string() + ": is read-only"));
   CHECK(test::ReadFile(golden) == "protected");
   CHECK((std::filesystem::status(golden).permissions() & std::filesystem::perms::all) == std::filesystem::perms(0444));
   CHECK(std::distance(std::filesystem::directory_iterator(dir.path()), {}) == 1);  // no temporary left
 
   std::filesystem::permissions(golden, std::filesystem::perms(0644));
-  CHECK(FileTargetProblem(golden).empty());
-  StagedFile(golden, "new").Commit();
+  CHECK(files::FileTargetProblem(golden).empty());
+  files::StagedFile(golden, "new").Commit();
   CHECK(test::ReadFile(golden) == "new");
 }
 
 TEST_CASE("A target's directory: missing ones are fine, a file or a read-only directory on the way is not",
           "[image][output]") {
   const test::TempDir dir;
-  CHECK(FileTargetProblem(dir / "new" / "deeper" / "x.png").empty());
-  CHECK(DirectoryTargetProblem(dir / "new" / "deeper").empty());
+  CHECK(files::FileTargetProblem(dir / "new" / "deeper" / "x.png").empty());
+  CHECK(files::DirectoryTargetProblem(dir / "new" / "deeper").empty());
   CHECK_FALSE(std::filesystem::exists(dir / "new"));  // checking makes nothing
 
   test::WriteFile(dir / "plain", "x");
-  CHECK(FileTargetProblem(dir / "plain" / "x.png") == (dir / "plain").string() + " is a file, not a directory");
-  CHECK(DirectoryTargetProblem(dir / "plain" / "a" / "b") == (dir / "plain").string() + " is a file, not a directory");
-  CHECK(DirectoryTargetProblem(dir / "plain") == (dir / "plain").string() + " is a file, not a directory");
+  CHECK(files::FileTargetProblem(dir / "plain" / "x.png") == (dir / "plain").string() + " is a file, not a directory");
+  CHECK(files::DirectoryTargetProblem(dir / "plain" / "a" / "b") ==
+        (dir / "plain").string() + " is a file, not a directory");
+  CHECK(files::DirectoryTargetProblem(dir / "plain") == (dir / "plain").string() + " is a file, not a directory");
 
   std::filesystem::create_directory(dir / "locked");
   std::filesystem::permissions(dir / "locked", std::filesystem::perms(0555));
-  CHECK_THAT(FileTargetProblem(dir / "locked" / "x.png"), HasSubstring("cannot write in the directory"));
-  CHECK_THAT(FileTargetProblem(dir / "locked" / "sub" / "x.png"),
+  CHECK_THAT(files::FileTargetProblem(dir / "locked" / "x.png"), HasSubstring("cannot write in the directory"));
+  CHECK_THAT(files::FileTargetProblem(dir / "locked" / "sub" / "x.png"),
              HasSubstring("cannot write in the directory " + (dir / "locked").string() + " to make"));
   std::filesystem::permissions(dir / "locked", std::filesystem::perms(0755));
 
-  CHECK(FileTargetProblem(dir.path()) == "is a directory, not a file name");
-  CHECK(FileTargetProblem(dir / "x/") == "ends in /: a directory, not a file name");
-  CHECK(FileTargetProblem("/dev/null") == "is not a regular file (a device, pipe or socket)");
+  CHECK(files::FileTargetProblem(dir.path()) == "is a directory, not a file name");
+  CHECK(files::FileTargetProblem(dir / "x/") == "ends in /: a directory, not a file name");
+  CHECK(files::FileTargetProblem("/dev/null") == "is not a regular file (a device, pipe or socket)");
 
-  MakeMissingDirectories(dir / "new" / "deeper");
+  files::MakeMissingDirectories(dir / "new" / "deeper");
   CHECK(std::filesystem::is_directory(dir / "new" / "deeper"));
-  CHECK_THROWS_AS(MakeMissingDirectories(dir / "plain" / "a"), FileError);
+  CHECK_THROWS_AS(files::MakeMissingDirectories(dir / "plain" / "a"), files::FileError);
 }

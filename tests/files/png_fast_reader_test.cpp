@@ -98,7 +98,7 @@ std::string Png(const Image& image, const Form& form, int first_filter = 0) {
 
 std::optional<Image> Fast(const std::string& png) {
   std::istringstream in(png);
-  return png_fast::Decode(in, {});
+  return files::png_fast::Decode(in, {});
 }
 
 Image Noise(std::uint32_t width, std::uint32_t height, std::uint32_t seed, int levels) {
@@ -141,8 +141,8 @@ TEST_CASE("PNG fast reader: every filter, every row, reads back the pixels it wa
           // libspng reads the same image data when a chunk it alone reads comes first.
           const std::string spng = Png(image, Form{.before = Chunk("twIn", "x"), .idats = idats}, first_filter);
           CHECK_FALSE(Fast(spng));
-          CHECK(DecodePng(spng, "spng.png").rgba == image.rgba);
-          CHECK(DecodePng(png, "png.png").rgba == image.rgba);
+          CHECK(files::DecodePng(spng, "spng.png").rgba == image.rgba);
+          CHECK(files::DecodePng(png, "png.png").rgba == image.rgba);
         }
       }
     }
@@ -187,9 +187,10 @@ TEST_CASE("PNG fast reader: anything outside its form is left to libspng", "[png
 TEST_CASE("PNG fast reader: the caller's size check runs before anything is inflated", "[png][reader]") {
   const std::string png = Png(Noise(40, 30, 5, 2), Form{});
   std::istringstream in(png);
-  CHECK_THROWS_WITH(png_fast::Decode(in,
-                                     [](std::uint32_t w, std::uint32_t h) {
-                                       throw FileError("refused " + std::to_string(w) + "x" + std::to_string(h));
-                                     }),
-                    "refused 40x30");
+  CHECK_THROWS_WITH(
+      files::png_fast::Decode(in,
+                              [](std::uint32_t w, std::uint32_t h) {
+                                throw files::FileError("refused " + std::to_string(w) + "x" + std::to_string(h));
+                              }),
+      "refused 40x30");
 }

@@ -36,8 +36,8 @@ Image TestImage(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
   return image;
 }
 
-const PngNotes kNotes = {{"twinraster:subPixelPrecisionBits", "8"},
-                         {"Device name", "llvmpipe (LLVM 15.0.6, 256 bits)"}};
+const files::PngNotes kNotes = {{"twinraster:subPixelPrecisionBits", "8"},
+                                {"Device name", "llvmpipe (LLVM 15.0.6, 256 bits)"}};
 
 // Where the first chunk of `type` starts (its length field) in the bytes of a PNG.
 std::size_t ChunkAt(const std::string& png, const std::string& type) {
@@ -56,10 +56,10 @@ TEST_CASE("PNG round trip: every level decodes to the same pixels", "[png]") {
   const test::TempDir dir;
   for (const auto& [width, height] : {std::pair{1u, 1u}, {3u, 5u}, {640u, 480u}, {1920u, 1080u}}) {
     const Image image = TestImage(width, height, width + height);
-    for (const int level : {0, kPngFastest, 6, kPngSmallest}) {
+    for (const int level : {0, files::kPngFastest, 6, files::kPngSmallest}) {
       INFO(width << "x" << height << " level " << level);
-      WritePng(dir / "round.png", image, level);
-      const Image back = ReadPng(dir / "round.png");
+      files::WritePng(dir / "round.png", image, level);
+      const Image back = files::ReadPng(dir / "round.png");
       REQUIRE(back.width == image.width);
       REQUIRE(back.height == image.height);
       REQUIRE(back.rgba == image.rgba);
@@ -116,55 +116,55 @@ TEST_CASE("PNG at the fastest level: zlib and libspng, two decoders of their own
   images.push_back(stripes);
   for (const Image& image : images) {
     INFO(image.width << "x" << image.height);
-    const std::string png = EncodePng(image, kPngFastest);
+    const std::string png = files::EncodePng(image, files::kPngFastest);
     CHECK(std::ranges::equal(InflateByZlib(png, image.width, image.height), image.rgba));
-    CHECK(DecodePng(png, "fast.png").rgba == image.rgba);
+    CHECK(files::DecodePng(png, "fast.png").rgba == image.rgba);
   }
 }
 
 TEST_CASE("PNG levels: 0 stores, higher levels are no larger", "[png]") {
   const Image image = TestImage(640, 480, 7);
-  const std::size_t stored = EncodePng(image, 0).size();
-  const std::size_t fastest = EncodePng(image, kPngFastest).size();
-  const std::size_t smallest = EncodePng(image, kPngSmallest).size();
+  const std::size_t stored = files::EncodePng(image, 0).size();
+  const std::size_t fastest = files::EncodePng(image, files::kPngFastest).size();
+  const std::size_t smallest = files::EncodePng(image, files::kPngSmallest).size();
   REQUIRE(stored > image.rgba.size());  // the filtered scanlines, uncompressed, plus headers
   REQUIRE(fastest < stored);
   REQUIRE(smallest <= fastest);
 }
 
 TEST_CASE("PNG: a level outside 0..12 and an empty image are refused", "[png]") {
-  REQUIRE_THROWS_AS(EncodePng(TestImage(2, 2, 1), -1), std::invalid_argument);
-  REQUIRE_THROWS_AS(EncodePng(TestImage(2, 2, 1), 13), std::invalid_argument);
-  REQUIRE_THROWS_AS(EncodePng(Image()), std::invalid_argument);
+  REQUIRE_THROWS_AS(files::EncodePng(TestImage(2, 2, 1), -1), std::invalid_argument);
+  REQUIRE_THROWS_AS(files::EncodePng(TestImage(2, 2, 1), 13), std::invalid_argument);
+  REQUIRE_THROWS_AS(files::EncodePng(Image()), std::invalid_argument);
 }
 
 TEST_CASE("PNG notes: two notes round trip, written between IHDR and IDAT", "[png]") {
   const test::TempDir dir;
-  WritePng(dir / "notes.png", TestImage(3, 2, 1), kPngFastest, kNotes);
-  REQUIRE(ReadPngNotes(dir / "notes.png") == kNotes);
+  files::WritePng(dir / "notes.png", TestImage(3, 2, 1), files::kPngFastest, kNotes);
+  REQUIRE(files::ReadPngNotes(dir / "notes.png") == kNotes);
   const std::string png = test::ReadFile(dir / "notes.png");
   REQUIRE(png.find("IHDR") < png.find("tEXt"));
   REQUIRE(png.rfind("tEXt") < png.find("IDAT"));
 
-  WritePng(dir / "plain.png", TestImage(3, 2, 1));
-  REQUIRE(ReadPngNotes(dir / "plain.png").empty());
-  REQUIRE(test::ReadFile(dir / "plain.png") == EncodePng(TestImage(3, 2, 1)));  // no notes, no tEXt chunk
+  files::WritePng(dir / "plain.png", TestImage(3, 2, 1));
+  REQUIRE(files::ReadPngNotes(dir / "plain.png").empty());
+  REQUIRE(test::ReadFile(dir / "plain.png") == files::EncodePng(TestImage(3, 2, 1)));  // no notes, no tEXt chunk
   REQUIRE(test::ReadFile(dir / "plain.png").find("tEXt") == std::string::npos);
 }
 
 TEST_CASE("PNG notes survive StagePng and Commit", "[png]") {
   const test::TempDir dir;
-  StagedFile staged = StagePng(dir / "staged.png", TestImage(4, 4, 2), kPngSmallest, kNotes);
+  files::StagedFile staged = files::StagePng(dir / "staged.png", TestImage(4, 4, 2), files::kPngSmallest, kNotes);
   REQUIRE(!std::filesystem::exists(dir / "staged.png"));
   staged.Commit();
-  REQUIRE(ReadPngNotes(dir / "staged.png") == kNotes);
+  REQUIRE(files::ReadPngNotes(dir / "staged.png") == kNotes);
 }
 
 TEST_CASE("PNG notes: an image with notes decodes to exactly the same pixels", "[png]") {
   const test::TempDir dir;
   const Image image = TestImage(640, 480, 3);
-  WritePng(dir / "notes.png", image, kPngFastest, kNotes);
-  const Image back = ReadPng(dir / "notes.png");
+  files::WritePng(dir / "notes.png", image, files::kPngFastest, kNotes);
+  const Image back = files::ReadPng(dir / "notes.png");
   REQUIRE(back.width == image.width);
   REQUIRE(back.height == image.height);
   REQUIRE(back.rgba == image.rgba);
@@ -172,58 +172,58 @@ TEST_CASE("PNG notes: an image with notes decodes to exactly the same pixels", "
 
 TEST_CASE("PNG notes: a tEXt chunk with a wrong CRC is skipped, and the image refused", "[png]") {
   const test::TempDir dir;
-  std::string png = EncodePng(TestImage(2, 2, 4), kPngFastest, kNotes);
+  std::string png = files::EncodePng(TestImage(2, 2, 4), files::kPngFastest, kNotes);
   const std::size_t first = ChunkAt(png, "tEXt");
   const std::uint32_t length = static_cast<std::uint32_t>(kNotes[0].first.size() + 1 + kNotes[0].second.size());
   png[first + 8 + length] ^= 1;  // the first byte of its CRC
   test::WriteFile(dir / "crc.png", png);
-  REQUIRE(ReadPngNotes(dir / "crc.png") == PngNotes{kNotes[1]});
+  REQUIRE(files::ReadPngNotes(dir / "crc.png") == files::PngNotes{kNotes[1]});
   // The image reader takes the file as corrupt: no verdict on it (png_reader_test.cpp).
-  REQUIRE_THROWS_WITH(ReadPng(dir / "crc.png"),
+  REQUIRE_THROWS_WITH(files::ReadPng(dir / "crc.png"),
                       HasSubstring("crc.png: cannot read as PNG: corrupt: invalid chunk checksum"));
 }
 
 TEST_CASE("PNG notes: a cut-off file or an absurd chunk length ends the walk, keeping what came before", "[png]") {
   const test::TempDir dir;
-  const std::string png = EncodePng(TestImage(2, 2, 5), kPngFastest, kNotes);
+  const std::string png = files::EncodePng(TestImage(2, 2, 5), files::kPngFastest, kNotes);
   const std::size_t second = ChunkAt(png, "tEXt") + 12 + kNotes[0].first.size() + 1 + kNotes[0].second.size();
   for (std::size_t size = 0; size <= png.size(); ++size) {
     INFO("cut at " << size << " of " << png.size() << " bytes");
     test::WriteFile(dir / "cut.png", png.substr(0, size));
-    const PngNotes notes = ReadPngNotes(dir / "cut.png");
+    const files::PngNotes notes = files::ReadPngNotes(dir / "cut.png");
     const std::size_t complete = size >= ChunkAt(png, "IDAT") ? 2 : size >= second ? 1 : 0;
-    REQUIRE(notes == PngNotes(kNotes.begin(), kNotes.begin() + static_cast<std::ptrdiff_t>(complete)));
+    REQUIRE(notes == files::PngNotes(kNotes.begin(), kNotes.begin() + static_cast<std::ptrdiff_t>(complete)));
   }
   for (const std::uint32_t length : {0x7fffffffu, 0x80000000u, 0xffffffffu, static_cast<std::uint32_t>(png.size())}) {
     INFO("length " << length);
     std::string absurd = png;
     SetBigEndian(absurd, second, length);
     test::WriteFile(dir / "absurd.png", absurd);
-    REQUIRE(ReadPngNotes(dir / "absurd.png") == PngNotes{kNotes[0]});
+    REQUIRE(files::ReadPngNotes(dir / "absurd.png") == files::PngNotes{kNotes[0]});
   }
 }
 
 TEST_CASE("PNG notes: a file that is not a PNG, or is missing, has none", "[png]") {
   const test::TempDir dir;
   test::WriteFile(dir / "text.png", "not a PNG, though long enough to hold a signature and a chunk");
-  REQUIRE(ReadPngNotes(dir / "text.png").empty());
-  REQUIRE(ReadPngNotes(dir / "missing.png").empty());
-  REQUIRE(ReadPngNotes(dir.path()).empty());  // a directory
+  REQUIRE(files::ReadPngNotes(dir / "text.png").empty());
+  REQUIRE(files::ReadPngNotes(dir / "missing.png").empty());
+  REQUIRE(files::ReadPngNotes(dir.path()).empty());  // a directory
 }
 
 TEST_CASE("PNG notes: a value with a control character is dropped", "[png]") {
   const test::TempDir dir;
-  const PngNotes notes = {{"tab", "a\tb"}, {"newline", "a\nb"}, {"delete", "a\x7f"}, {"kept", "Latin-1 \xe9"}};
-  WritePng(dir / "control.png", TestImage(2, 2, 6), kPngFastest, notes);
-  REQUIRE(ReadPngNotes(dir / "control.png") == PngNotes{{"kept", "Latin-1 \xe9"}});
+  const files::PngNotes notes = {{"tab", "a\tb"}, {"newline", "a\nb"}, {"delete", "a\x7f"}, {"kept", "Latin-1 \xe9"}};
+  files::WritePng(dir / "control.png", TestImage(2, 2, 6), files::kPngFastest, notes);
+  REQUIRE(files::ReadPngNotes(dir / "control.png") == files::PngNotes{{"kept", "Latin-1 \xe9"}});
 }
 
 TEST_CASE("PNG notes: at most 64 are read, each value at most 1024 bytes", "[png]") {
   const test::TempDir dir;
-  PngNotes notes = {{"long", std::string(1025, 'x')}, {"longest", std::string(1024, 'x')}};
+  files::PngNotes notes = {{"long", std::string(1025, 'x')}, {"longest", std::string(1024, 'x')}};
   for (int i = 0; i < 70; ++i) notes.emplace_back("n" + std::to_string(i), std::to_string(i));
-  WritePng(dir / "many.png", TestImage(2, 2, 7), kPngFastest, notes);
-  const PngNotes back = ReadPngNotes(dir / "many.png");
+  files::WritePng(dir / "many.png", TestImage(2, 2, 7), files::kPngFastest, notes);
+  const files::PngNotes back = files::ReadPngNotes(dir / "many.png");
   REQUIRE(back.size() == 64);
   REQUIRE(back.front() == notes[1]);
   REQUIRE(back.back() == notes[64]);
@@ -235,8 +235,9 @@ TEST_CASE("PNG notes: an invalid key or a NUL in a value is refused", "[png]") {
        {std::string(), std::string(80, 'k'), std::string(" lead"), std::string("trail "), std::string("double  space"),
         std::string("new\nline"), std::string("del\x7f"), std::string("nul\0", 4), std::string("c1 \x85")}) {
     INFO("key \"" << key << "\"");
-    REQUIRE_THROWS_AS(EncodePng(image, kPngFastest, {{key, "v"}}), std::invalid_argument);
+    REQUIRE_THROWS_AS(files::EncodePng(image, files::kPngFastest, {{key, "v"}}), std::invalid_argument);
   }
-  REQUIRE_THROWS_AS(EncodePng(image, kPngFastest, {{"key", std::string("a\0b", 3)}}), std::invalid_argument);
-  REQUIRE_NOTHROW(EncodePng(image, kPngFastest, {{std::string(79, 'k'), ""}, {"one space \xe9", "v"}}));
+  REQUIRE_THROWS_AS(files::EncodePng(image, files::kPngFastest, {{"key", std::string("a\0b", 3)}}),
+                    std::invalid_argument);
+  REQUIRE_NOTHROW(files::EncodePng(image, files::kPngFastest, {{std::string(79, 'k'), ""}, {"one space \xe9", "v"}}));
 }

@@ -20,11 +20,11 @@ std::filesystem::path Png(const std::string& folder, const std::string& name) {
 }
 
 // The message ReadPng throws for a file, or "" if it reads it.
-std::string Refusal(const std::filesystem::path& file, const PngSizeCheck& check = {}) {
+std::string Refusal(const std::filesystem::path& file, const files::PngSizeCheck& check = {}) {
   try {
-    ReadPng(file, check);
+    files::ReadPng(file, check);
     return "";
-  } catch (const FileError& e) {
+  } catch (const files::FileError& e) {
     return e.what();
   }
 }
@@ -46,7 +46,7 @@ std::string ReferenceOf(const std::string& name) {
 }  // namespace
 
 TEST_CASE("PNG reader: every valid encoding of the picture reads as the same RGBA", "[png][reader]") {
-  const Image rgba = ReadPng(Png("valid", "rgba8.png"));
+  const Image rgba = files::ReadPng(Png("valid", "rgba8.png"));
   REQUIRE(rgba.width == 13);
   REQUIRE(rgba.height == 7);
   // The picture, by hand: bands of red, blue, green and clear white, a band every 4 columns and 3 rows.
@@ -57,8 +57,8 @@ TEST_CASE("PNG reader: every valid encoding of the picture reads as the same RGB
   for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/valid"))) {
     const std::string name = entry.path().filename().string();
     INFO(name << " against " << ReferenceOf(name));
-    const Image image = ReadPng(entry.path());
-    const Image reference = ReadPng(Png("valid", ReferenceOf(name)));
+    const Image image = files::ReadPng(entry.path());
+    const Image reference = files::ReadPng(Png("valid", ReferenceOf(name)));
     CHECK(image.width == reference.width);
     CHECK(image.height == reference.height);
     CHECK(image.rgba == reference.rgba);
@@ -99,8 +99,8 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
   };
   // Like verify's canvas check: a size is refused before anything is decoded (the bomb would be
   // 1 GiB of RGBA).
-  const PngSizeCheck canvas = [](std::uint32_t w, std::uint32_t h) {
-    if (w > 1024 || h > 1024) throw FileError("refused: " + std::to_string(w) + " x " + std::to_string(h));
+  const files::PngSizeCheck canvas = [](std::uint32_t w, std::uint32_t h) {
+    if (w > 1024 || h > 1024) throw files::FileError("refused: " + std::to_string(w) + " x " + std::to_string(h));
   };
   int refused = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::SourcePath("tests/files/pngs/malformed"))) {
@@ -121,10 +121,11 @@ TEST_CASE("PNG reader: every malformed file is refused, naming the file and the 
 
 TEST_CASE("PNG reader: bytes in memory are read as a file is, and refused as a file is", "[png][reader]") {
   const std::string good = test::ReadFile(Png("valid", "palette4.png"));
-  CHECK(DecodePng(good, "palette4.png").rgba == ReadPng(Png("valid", "rgba8.png")).rgba);
+  CHECK(files::DecodePng(good, "palette4.png").rgba == files::ReadPng(Png("valid", "rgba8.png")).rgba);
   const std::string bad = test::ReadFile(Png("malformed", "palette-index-out-of-range.png"));
-  CHECK_THROWS_WITH(DecodePng(bad, "bytes"), HasSubstring("bytes: cannot read as PNG: corrupt: palette index 3"));
-  CHECK_THROWS_WITH(DecodePng("", "nothing"), HasSubstring("nothing: cannot read as PNG: the file ends"));
+  CHECK_THROWS_WITH(files::DecodePng(bad, "bytes"),
+                    HasSubstring("bytes: cannot read as PNG: corrupt: palette index 3"));
+  CHECK_THROWS_WITH(files::DecodePng("", "nothing"), HasSubstring("nothing: cannot read as PNG: the file ends"));
 }
 
 TEST_CASE("PNG reader: every malformed file is refused in the same words from a file and from memory",
@@ -137,8 +138,8 @@ TEST_CASE("PNG reader: every malformed file is refused in the same words from a 
     const std::string from_file = Refusal(entry.path());
     std::string from_memory;
     try {
-      DecodePng(test::ReadFile(entry.path()), file);
-    } catch (const FileError& e) {
+      files::DecodePng(test::ReadFile(entry.path()), file);
+    } catch (const files::FileError& e) {
       from_memory = e.what();
     }
     CHECK_FALSE(from_file.empty());
@@ -154,13 +155,13 @@ namespace {
 // throws.
 std::pair<Image, std::string> ReadRows(const std::filesystem::path& file) {
   try {
-    PngRowReader rows(file, 0);
+    files::PngRowReader rows(file, 0);
     Image image(rows.Size().width, rows.Size().height);
     for (std::uint32_t y = 0; y < image.height; ++y)
       std::copy_n(rows.NextRow(), std::size_t{image.width} * 4, image.pixel(0, y));
     rows.Finish();
     return {image, ""};
-  } catch (const FileError& e) {
+  } catch (const files::FileError& e) {
     return {Image(), e.what()};
   }
 }
@@ -178,8 +179,8 @@ TEST_CASE(
       const auto [image, message] = ReadRows(entry.path());
       CHECK(message == Refusal(entry.path()));
       if (message.empty()) {
-        CHECK(image.rgba == ReadPng(entry.path()).rgba);
-        CHECK(ReadPngSize(entry.path()) == PngSize{image.width, image.height});
+        CHECK(image.rgba == files::ReadPng(entry.path()).rgba);
+        CHECK(files::ReadPngSize(entry.path()) == files::PngSize{image.width, image.height});
       }
       ++read;
     }
@@ -190,15 +191,15 @@ TEST_CASE(
 TEST_CASE("PNG reader: a row at a time, a file that declares 16384 x 16384 pixels gives its rows one by one",
           "[png][reader]") {
   const auto file = Png("large", "declares-16384x16384.png");
-  CHECK(ReadPngSize(file) == PngSize{16384, 16384});
-  PngRowReader rows(file);
-  REQUIRE(rows.Size() == PngSize{16384, 16384});
+  CHECK(files::ReadPngSize(file) == files::PngSize{16384, 16384});
+  files::PngRowReader rows(file);
+  REQUIRE(rows.Size() == files::PngSize{16384, 16384});
   // Its first and last rows: black and opaque (1-bit grey 0).
   const std::uint8_t* first = rows.NextRow();
   CHECK((first[0] == 0 && first[3] == 255 && first[16383 * 4 + 3] == 255));
   // An interlaced file is decoded whole, so one over kMaxWholePixels is refused before anything is.
   const auto interlaced = Png("large", "interlaced-8192x4097.png");
-  CHECK_THROWS_WITH(PngRowReader(interlaced),
+  CHECK_THROWS_WITH(files::PngRowReader(interlaced),
                     interlaced.string() +
                         ": cannot read as PNG: an interlaced PNG is decoded whole, and its 8192 x 4097 "
                         "pixels are over the 33554432 twinraster holds whole (write it without "

@@ -37,7 +37,7 @@ class StringSource final : public ByteSource {
 
 DeviceReply SomeDevice() {
   DeviceReply reply;
-  DeviceIdentity& d = reply.device;
+  gpu::DeviceIdentity& d = reply.device;
   d.name = "llvmpipe (LLVM 15.0.6, 256 bits)", d.driver_name = "llvmpipe", d.driver_info = "";
   d.vendor_id = 0x10005, d.device_id = 7, d.driver_id = 13, d.driver_version = 0x5803006;
   d.api_version = 0x403105, d.subpixel_bits = 8, d.strict_lines = true;
@@ -46,7 +46,7 @@ DeviceReply SomeDevice() {
 }
 
 RenderedReply SomeRendered(std::size_t pixel_bytes) {
-  const GpuTimings timings{
+  const gpu::GpuTimings timings{
       .setup_ms = 1.5, .draw_ms = 2.25, .readback_ms = 0.125, .draw_commands = 300, .instanced_draws = 9};
   return {.timings = timings, .work_ms = 4.5, .pixel_bytes = pixel_bytes};
 }
@@ -196,7 +196,7 @@ TEST_CASE("The bytes of a device reply: the tag, then the fields in order, numbe
   std::memcpy(&name_size, bytes.data() + 1, sizeof name_size);
   CHECK(name_size == SomeDevice().device.name.size());
   // Three texts, seven 32-bit numbers (strict lines as one of them), one double.
-  const DeviceIdentity& d = SomeDevice().device;
+  const gpu::DeviceIdentity& d = SomeDevice().device;
   CHECK(bytes.size() == 1 + 3 * 4 + d.name.size() + d.driver_name.size() + d.driver_info.size() + 7 * 4 + 8);
   CHECK(EncodeRendered(SomeRendered(0)).size() == 1 + 3 * 8 + 2 * 8 + 8 + 8);
   std::string problem = "X";

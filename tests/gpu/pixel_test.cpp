@@ -32,7 +32,7 @@ TEST_CASE("A triangle with F = identity covers exactly the pixels inside it", "[
   // an edge: covered exactly when x >= 1, y >= 1 and 5x + 6y < 35.5 (the long edge).
   const Rgb8 colour{200, 100, 50};
   const WindowTriangle triangle{{1, 1}, {7, 1}, {1, 6}, colour};
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(image.width == 8);
   REQUIRE(image.height == 8);
@@ -60,7 +60,7 @@ TEST_CASE("A triangle with F = identity covers exactly the pixels inside it", "[
 TEST_CASE("The pixel checker fails on wrong images (the tests can fail)", "[gpu][pixels]") {
   const Rgb8 colour{200, 100, 50};
   const WindowTriangle triangle{{1, 1}, {7, 1}, {1, 6}, colour};
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   Image image = gpu.Render(ListOf(8, 8, {MeshOf({triangle}, 8, 8)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(CheckPixels(image, kBackground, {triangle}).mismatches == 0);
 
@@ -78,7 +78,7 @@ TEST_CASE("The pixel checker fails on wrong images (the tests can fail)", "[gpu]
 }
 
 TEST_CASE("The background is the clear colour exactly, for every 8-bit value", "[gpu][pixels]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   for (int k = 0; k < 256; ++k) {
     DrawList list;
     list.width = 3;
@@ -102,7 +102,7 @@ TEST_CASE("Triangle colours arrive exactly, for every 8-bit value", "[gpu][pixel
                       static_cast<std::uint8_t>((i * 37) % 256)};
     for (const WindowTriangle& t : Square(x, y, x + 1, y + 1, colour)) squares.push_back(t);
   }
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(16, 16, {MeshOf(squares, 16, 16)}, {DrawCall{0, glm::mat4(1.0f)}}));
   for (int i = 0; i < 256; ++i) {
     const auto x = static_cast<std::uint32_t>(i % 16), y = static_cast<std::uint32_t>(i / 16);
@@ -118,7 +118,7 @@ TEST_CASE("A nearer triangle hides a farther one whatever the draw order", "[gpu
   const std::vector<DrawMesh> meshes = {square(near_colour, 0.25f), square(far_colour, 0.75f), square(other_far, 0.75f),
                                         square(near_colour, 1.0f)};
   const glm::mat4 identity(1.0f);
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const auto expect_square = [&](std::vector<DrawCall> draws, std::optional<Rgb8> visible) {
     const Image image = gpu.Render(ListOf(8, 8, meshes, std::move(draws)));
     const std::vector<WindowTriangle> expected = visible ? Square(2, 2, 6, 6, *visible) : std::vector<WindowTriangle>{};
@@ -150,7 +150,7 @@ TEST_CASE("Each triangle gets its own colour, in every mesh and instance", "[gpu
       {{0, 14}, {2, 14}, {0, 16}, a}, {{3, 14}, {5, 14}, {3, 16}, b}, {{6, 14}, {8, 14}, {6, 16}, c}};
   const std::vector<WindowTriangle> second = {{{1, 1}, {7.3, 1}, {1, 6.6}, left},
                                               {{15, 1}, {9, 6.6}, {15, 6.6}, right}};
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   DrawList list = ListOf(16, 16, {MeshOf(first, 16, 16), MeshOf(second, 16, 16)}, {});
 
   SECTION("one instance of each mesh") {
@@ -187,7 +187,7 @@ TEST_CASE("An odd-sized image keeps its rows apart and top first", "[gpu][pixels
   // near the top left shows any transposition, flip or row-pitch error.
   const std::vector<WindowTriangle> triangles = {{{2.2, 1.3}, {30.7, 4.1}, {5.1, 20.6}, {9, 99, 199}},
                                                  {{33, 2}, {36.5, 22.5}, {31.2, 22}, {77, 0, 255}}};
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(37, 23, {MeshOf(triangles, 37, 23)}, {DrawCall{0, glm::mat4(1.0f)}}));
   REQUIRE(image.width == 37);
   REQUIRE(image.height == 23);
@@ -208,7 +208,7 @@ TEST_CASE("A triangle through the near plane is clipped and keeps its colour", "
                     glm::vec3(-0.75f, -0.75f, -0.5f), glm::vec3(0.75f, -0.75f, 0.5f), glm::vec3(-0.75f, 0.75f, 0.5f)};
   mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
   mesh.colours = {dropped, kept};
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(16, 16, {mesh}, {DrawCall{0, glm::mat4(1.0f)}}));
   // In window pixels the triangle is (2,2), (14,2), (2,14); z = 0 runs from (8,2) to (2,8).
   const std::vector<WindowTriangle> visible = {{{8, 2}, {14, 2}, {2, 14}, kept}, {{8, 2}, {2, 14}, {2, 8}, kept}};
@@ -245,7 +245,7 @@ TEST_CASE("The vertex shader sums F's columns in the documented order", "[gpu][p
     CHECK(std::abs(right_to_left - p.z) >= 0.25f);
   }
 
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image image = gpu.Render(ListOf(8, 8, {mesh}, {DrawCall{0, F}}));
   const PixelCheck check = CheckPixels(image, kBackground, {{{1, 1}, {7, 1}, {1, 6}, colour}});
   INFO(check.first_mismatch);

@@ -44,10 +44,10 @@ double Median(std::vector<double> values) {
 }  // namespace
 
 TEST_CASE("Without options the renderer picks lavapipe, and a name picks a device", "[gpu]") {
-  CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
-  CHECK_THAT(GpuRenderer(GpuOptions{.device = "LLVMPIPE"}).DeviceName(), HasSubstring("llvmpipe"));
-  CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "no such device"}), GpuUnavailable);
-  CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "no such device"}),
+  CHECK_THAT(gpu::GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
+  CHECK_THAT(gpu::GpuRenderer(gpu::GpuOptions{.device = "LLVMPIPE"}).DeviceName(), HasSubstring("llvmpipe"));
+  CHECK_THROWS_AS(gpu::GpuRenderer(gpu::GpuOptions{.device = "no such device"}), gpu::GpuUnavailable);
+  CHECK_THROWS_WITH(gpu::GpuRenderer(gpu::GpuOptions{.device = "no such device"}),
                     HasSubstring("no such device") && HasSubstring("llvmpipe"));
 }
 
@@ -63,7 +63,7 @@ TEST_CASE("The default device loads lavapipe's driver alone, unless the user's l
       CHECK(driver_files() == alone.manifest());
     }
     CHECK(driver_files() == "(unset)");
-    CHECK_THAT(GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
+    CHECK_THAT(gpu::GpuRenderer().DeviceName(), HasSubstring("llvmpipe"));
   }
   SECTION("the user's choice stands") {
     for (const char* variable : {"VK_LOADER_DRIVERS_SELECT", "VK_LOADER_DRIVERS_DISABLE", "VK_ICD_FILENAMES",
@@ -80,7 +80,7 @@ TEST_CASE("The default device loads lavapipe's driver alone, unless the user's l
     CHECK(gpu::LavapipeAlone().manifest().empty());
   }
   SECTION("a device asked by name still finds the others") {
-    CHECK_THAT(GpuRenderer(GpuOptions{.device = "swiftshader"}).DeviceName(), HasSubstring("SwiftShader"));
+    CHECK_THAT(gpu::GpuRenderer(gpu::GpuOptions{.device = "swiftshader"}).DeviceName(), HasSubstring("SwiftShader"));
   }
 }
 
@@ -88,20 +88,20 @@ TEST_CASE("GpuUnavailable says what to install", "[gpu][errors]") {
   // The loader's own variables hide the driver or the layer, as on a machine without them.
   SECTION("no Vulkan driver") {
     const ScopedEnv no_driver("VK_ICD_FILENAMES", "/nonexistent/no_icd.json");
-    CHECK_THROWS_AS(GpuRenderer(), GpuUnavailable);
-    CHECK_THROWS_WITH(GpuRenderer(), HasSubstring("apt-get install mesa-vulkan-drivers"));
+    CHECK_THROWS_AS(gpu::GpuRenderer(), gpu::GpuUnavailable);
+    CHECK_THROWS_WITH(gpu::GpuRenderer(), HasSubstring("apt-get install mesa-vulkan-drivers"));
   }
   SECTION("no validation layer") {
     const ScopedEnv no_layers("VK_LAYER_PATH", "/nonexistent");
-    CHECK_NOTHROW(GpuRenderer());  // only validation needs the layer
-    CHECK_THROWS_AS(GpuRenderer(GpuOptions{.device = "", .validation = true}), GpuUnavailable);
-    CHECK_THROWS_WITH(GpuRenderer(GpuOptions{.device = "", .validation = true}),
+    CHECK_NOTHROW(gpu::GpuRenderer());  // only validation needs the layer
+    CHECK_THROWS_AS(gpu::GpuRenderer(gpu::GpuOptions{.device = "", .validation = true}), gpu::GpuUnavailable);
+    CHECK_THROWS_WITH(gpu::GpuRenderer(gpu::GpuOptions{.device = "", .validation = true}),
                       HasSubstring("apt-get install vulkan-validationlayers"));
   }
 }
 
 TEST_CASE("Render takes any size from 1x1 to 16384 a side, and refuses others", "[gpu][sizes]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   for (const auto& [width, height] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
            {1, 1}, {2, 3}, {16384, 1}, {1, 16384}, {600, 600}, {600, 600}, {5, 1}}) {
     INFO(width << "x" << height);
@@ -120,7 +120,7 @@ TEST_CASE("Render takes any size from 1x1 to 16384 a side, and refuses others", 
 }
 
 TEST_CASE("Render takes the largest image, 16384 x 16384", "[gpu][sizes]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   DrawList list = Covering(16384, 16384);
   // The triangle now covers the top-left half only: pixels with x + y < 16383 (x + y = 16383
   // lies on its edge).
@@ -138,7 +138,7 @@ TEST_CASE("Render takes the largest image, 16384 x 16384", "[gpu][sizes]") {
 }
 
 TEST_CASE("Malformed draw lists are refused before anything is drawn", "[gpu][errors]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   DrawList list = Covering(4, 4);
   SECTION("a colour missing") { list.meshes[0].colours.clear(); }
   SECTION("an index past the vertices") { list.meshes[0].triangles[0][2] = 3; }
@@ -148,7 +148,7 @@ TEST_CASE("Malformed draw lists are refused before anything is drawn", "[gpu][er
 }
 
 TEST_CASE("Empty lists and meshes without triangles draw only the clear", "[gpu]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   DrawList list = Covering(5, 4);
   SECTION("no draws") { list.draws.clear(); }
   SECTION("no meshes, no draws") {
@@ -165,25 +165,25 @@ TEST_CASE("Empty lists and meshes without triangles draw only the clear", "[gpu]
 }
 
 TEST_CASE("A moved renderer keeps working and the moved-from one refuses", "[gpu]") {
-  GpuRenderer first;
-  GpuRenderer second = std::move(first);
+  gpu::GpuRenderer first;
+  gpu::GpuRenderer second = std::move(first);
   CHECK(AllPixels(second.Render(Covering(3, 2)), kColour));
   CHECK_THROWS_AS(first.Render(Covering(3, 2)),
                   std::logic_error);  // NOLINT(bugprone-use-after-move)
   CHECK(first.DeviceName().empty());
-  GpuRenderer third;
+  gpu::GpuRenderer third;
   third = std::move(second);
   CHECK(AllPixels(third.Render(Covering(2, 3)), kColour));
 }
 
 TEST_CASE("The chapter's two cubes at 600x600: deterministic, timed", "[gpu][timing]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const DrawList list = ChapterInstances(600, 600);
   REQUIRE(list.draws.size() == 2);
   const Image first = gpu.Render(list);
   std::vector<double> setup, draw, readback, total;
   for (int i = 0; i < 20; ++i) {
-    GpuTimings timings;
+    gpu::GpuTimings timings;
     const Image again = gpu.Render(list, &timings);
     REQUIRE(again.rgba == first.rgba);
     CHECK(timings.draw_ms > 0);
@@ -211,11 +211,11 @@ TEST_CASE("The chapter's two cubes at 600x600: deterministic, timed", "[gpu][tim
 
 TEST_CASE("LP_NUM_THREADS=0 (rasterize on the calling thread) gives the same image", "[gpu]") {
   const DrawList list = ChapterInstances(301, 203);
-  const Image threaded = GpuRenderer().Render(list);
+  const Image threaded = gpu::GpuRenderer().Render(list);
   Image single;
   {
     const ScopedEnv no_threads("LP_NUM_THREADS", "0");
-    single = GpuRenderer().Render(list);
+    single = gpu::GpuRenderer().Render(list);
   }
   CHECK(single.rgba == threaded.rgba);
   CHECK(CountColour(single, {0, 0, 255}) > 100);

@@ -53,7 +53,7 @@ std::size_t DifferentPixels(const Image& a, const Image& b) {
   return count;
 }
 
-void RequireSilence(const GpuRenderer& gpu, const char* after) {
+void RequireSilence(const gpu::GpuRenderer& gpu, const char* after) {
   INFO("after " << after);
   for (const std::string& message : gpu.ValidationMessages()) UNSCOPED_INFO(message);
   REQUIRE(gpu.ValidationMessages().empty());
@@ -62,7 +62,7 @@ void RequireSilence(const GpuRenderer& gpu, const char* after) {
 }  // namespace
 
 TEST_CASE("With reversed Z the larger depth is nearer, whatever the draw order", "[gpu][pixels][depth][reversed_z]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const auto render = [&](std::vector<std::uint32_t> order) { return gpu.Render(SquaresList(std::move(order), true)); };
   SECTION("near after far") { CheckSquare(render({kAt025, kAt075}), kRed); }
   SECTION("near before far") { CheckSquare(render({kAt075, kAt025}), kRed); }
@@ -95,7 +95,7 @@ TEST_CASE("With reversed Z the larger depth is nearer, whatever the draw order",
 TEST_CASE("One renderer alternates standard and reversed Z renders", "[gpu][depth][reversed_z]") {
   // The same draws, far square (0.25) first: the flag alone decides which square is in front.
   // Each render reuses the same 8x8 images and switches pipeline and depth clear value.
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   for (const bool reversed_z : {false, true, true, false, true, false, false, true}) {
     INFO("reversed_z " << reversed_z);
     CheckSquare(gpu.Render(SquaresList({kAt025, kAt075}, reversed_z)), reversed_z ? kRed : kGreen);
@@ -107,7 +107,7 @@ TEST_CASE("One renderer alternates standard and reversed Z renders", "[gpu][dept
 }
 
 TEST_CASE("The chapter's cubes look the same with reversed Z", "[gpu][depth][reversed_z]") {
-  GpuRenderer gpu;
+  gpu::GpuRenderer gpu;
   const Image standard = gpu.Render(ChapterInstances(600, 600, false));
   const Image reversed = gpu.Render(ChapterInstances(600, 600, true));
   // The near faces (blue), the left cube's right face (green), the right cube's bottom (cyan)
@@ -132,7 +132,7 @@ TEST_CASE("The chapter's cubes look the same with reversed Z", "[gpu][depth][rev
 }
 
 TEST_CASE("Validation stays silent with reversed Z and when switching conventions", "[gpu][validation][reversed_z]") {
-  GpuRenderer gpu(GpuOptions{.device = "", .validation = true});
+  gpu::GpuRenderer gpu(gpu::GpuOptions{.device = "", .validation = true});
   RequireSilence(gpu, "construction");
 
   CheckSquare(gpu.Render(SquaresList({kAt025, kAt075, kAt0}, true)), kRed);

@@ -9,7 +9,7 @@ using namespace twinraster::gpu_test;
 
 namespace {
 
-void RequireSilence(const GpuRenderer& gpu, const char* after) {
+void RequireSilence(const gpu::GpuRenderer& gpu, const char* after) {
   INFO("after " << after);
   for (const std::string& message : gpu.ValidationMessages()) UNSCOPED_INFO(message);
   REQUIRE(gpu.ValidationMessages().empty());
@@ -29,7 +29,7 @@ DrawList OneTriangle(std::uint32_t width, std::uint32_t height) {
 }  // namespace
 
 TEST_CASE("Validation stays silent through construction and several renders", "[gpu][validation]") {
-  GpuRenderer gpu(GpuOptions{.device = "", .validation = true});
+  gpu::GpuRenderer gpu(gpu::GpuOptions{.device = "", .validation = true});
   RequireSilence(gpu, "construction");
 
   const Image triangle = gpu.Render(OneTriangle(8, 8));
@@ -69,7 +69,7 @@ TEST_CASE("The messenger records what the layer reports (silence is not deafness
   std::vector<std::string> messages;
   {
     const ScopedEnv best_practices("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT");
-    GpuRenderer gpu(GpuOptions{.device = "", .validation = true});
+    gpu::GpuRenderer gpu(gpu::GpuOptions{.device = "", .validation = true});
     gpu.Render(OneTriangle(8, 8));
     messages = gpu.ValidationMessages();
   }
@@ -77,7 +77,7 @@ TEST_CASE("The messenger records what the layer reports (silence is not deafness
   CHECK_FALSE(messages.empty());
 
   // Without validation nothing is collected, whatever the layer setting.
-  GpuRenderer quiet;
+  gpu::GpuRenderer quiet;
   quiet.Render(OneTriangle(8, 8));
   CHECK(quiet.ValidationMessages().empty());
 }

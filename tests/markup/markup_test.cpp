@@ -3,7 +3,7 @@
 
 #include "support/catch.hpp"
 
-using namespace twinraster::report;
+using namespace twinraster::markup;
 
 TEST_CASE("Escape: markup, quotes, ampersands and control characters come out as text", "[markup]") {
   CHECK(Escape("<script>alert(\"x\")</script>") == "&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt;");

@@ -11,7 +11,7 @@
 #include <string>
 
 using namespace twinraster;
-using namespace twinraster::report;
+using namespace twinraster::run_report;
 
 namespace {
 

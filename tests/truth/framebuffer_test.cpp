@@ -7,12 +7,12 @@
 using namespace twinraster;
 
 TEST_CASE("ExactFramebuffer: the viewport transform in double", "[truth][viewport]") {
-  CHECK(ExactFramebuffer({0, 0, 0.5, 1}, 8, 4) == glm::dvec3(4, 2, 0.5));
-  CHECK(ExactFramebuffer({-1, -1, 0, 1}, 8, 4) == glm::dvec3(0, 0, 0));   // top left, near
-  CHECK(ExactFramebuffer({2, 2, 2, 2}, 8, 4) == glm::dvec3(8, 4, 1));     // bottom right, far
-  CHECK(ExactFramebuffer({1, -2, 1, 2}, 8, 4) == glm::dvec3(6, 0, 0.5));  // divided by w
+  CHECK(truth::ExactFramebuffer({0, 0, 0.5, 1}, 8, 4) == glm::dvec3(4, 2, 0.5));
+  CHECK(truth::ExactFramebuffer({-1, -1, 0, 1}, 8, 4) == glm::dvec3(0, 0, 0));   // top left, near
+  CHECK(truth::ExactFramebuffer({2, 2, 2, 2}, 8, 4) == glm::dvec3(8, 4, 1));     // bottom right, far
+  CHECK(truth::ExactFramebuffer({1, -2, 1, 2}, 8, 4) == glm::dvec3(6, 0, 0.5));  // divided by w
   // No snapping: a position a millionth of a pixel off stays there.
-  const glm::dvec3 p = ExactFramebuffer({0.25 + 1e-6 / 300, 0, 0.3, 1}, 600, 600);
+  const glm::dvec3 p = truth::ExactFramebuffer({0.25 + 1e-6 / 300, 0, 0.3, 1}, 600, 600);
   CHECK(p.x == Approx(375.000001).epsilon(0).margin(1e-9));
   CHECK(p.z == 0.3);
 }
@@ -31,7 +31,7 @@ TEST_CASE("ExactClipSpace: the chapter's chain in double, one vector per instanc
   instance.transform.translation = {0, 0, 5};
   scene.instances = {instance, instance};
 
-  const ExactClipPositions clip = ExactClipSpace(scene);
+  const truth::ExactClipPositions clip = truth::ExactClipSpace(scene);
   REQUIRE(clip.size() == 2);
   REQUIRE(clip[0].size() == 2);
   const glm::dvec4 v = clip[0][0];
@@ -39,7 +39,7 @@ TEST_CASE("ExactClipSpace: the chapter's chain in double, one vector per instanc
   CHECK(v.y == Approx(-2).epsilon(1e-15));
   CHECK(v.z == Approx((100.0 * 6 - 10) / 99.9).epsilon(1e-15));
   CHECK(v.w == Approx(6).epsilon(1e-15));
-  const glm::dvec3 fb = ExactFramebuffer(v, 600, 600);
+  const glm::dvec3 fb = truth::ExactFramebuffer(v, 600, 600);
   CHECK(fb.x == Approx(400).epsilon(1e-15));
   CHECK(fb.y == Approx(200).epsilon(1e-15));
   CHECK(fb.z == Approx((100 - 10.0 / 6) / 99.9).epsilon(1e-15));

@@ -40,8 +40,8 @@ Scene FacingSquare(const Lighting& lighting, Shading shading) {
 }
 
 Image Truth(const Scene& scene) {
-  const ExactLight light(scene);
-  return RenderTruth(BuildDrawList(scene), ExactClipSpace(scene), &light);
+  const truth::ExactLight light(scene);
+  return truth::RenderTruth(BuildDrawList(scene), truth::ExactClipSpace(scene), &light);
 }
 
 int Red(const Image& image, int x, int y) { return image.rgba[4 * (std::size_t(y) * image.width + std::size_t(x))]; }
@@ -118,9 +118,9 @@ struct GouraudCheck {
 template <class Normal>
 GouraudCheck CheckGouraudPixels(const Scene& scene, Normal normal_of) {
   const DrawList list = BuildDrawList(scene);
-  const ExactClipPositions clip = ExactClipSpace(scene);
-  const ExactLight light(scene);
-  const TruthImage truth = RenderTruthSurfaces(list, clip, &light);
+  const truth::ExactClipPositions clip = truth::ExactClipSpace(scene);
+  const truth::ExactLight light(scene);
+  const truth::TruthImage truth = truth::RenderTruthSurfaces(list, clip, &light);
   const Model& model = scene.models[0];
   GouraudCheck check;
   for (std::size_t p = 0; p < truth.surfaces.size(); ++p) {
@@ -189,9 +189,10 @@ TEST_CASE("Truth light against the twin: random lit scenes agree within 1 triang
   for (std::uint32_t seed = 1; seed <= 60; ++seed) {
     const Scene scene = test::RandomLitScene(seed);
     const DrawList list = BuildDrawList(scene);
-    const ExactLight light(scene);
-    const ColourError error = SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*SurfaceList(list)),
-                                                     RenderTruthSurfaces(list, ExactClipSpace(scene), &light));
+    const truth::ExactLight light(scene);
+    const bench::ColourError error =
+        bench::SameSurfaceColourError(cpu::RenderOnCpu(list), cpu::RenderOnCpu(*bench::SurfaceList(list)),
+                                      truth::RenderTruthSurfaces(list, truth::ExactClipSpace(scene), &light));
     INFO("seed " << seed);
     CHECK(error.max_channel <= 1);
     worst = std::max(worst, error.max_channel);
@@ -203,11 +204,11 @@ TEST_CASE("Truth light against the twin: random lit scenes agree within 1 triang
 
 TEST_CASE("Truth light: a lit list without the light is refused, an unlit list needs none", "[truth][lighting]") {
   const Scene lit = FacingSquare({.ambient = 0.2, .lights = {}}, Shading::kFlat);
-  CHECK_THROWS_WITH(RenderTruth(BuildDrawList(lit), ExactClipSpace(lit)), HasSubstring("no light"));
+  CHECK_THROWS_WITH(truth::RenderTruth(BuildDrawList(lit), truth::ExactClipSpace(lit)), HasSubstring("no light"));
   Scene unlit = lit;
   unlit.lighting.reset();
   unlit.models[0].shading = Shading::kUnlit;
-  CHECK(Red(RenderTruth(BuildDrawList(unlit), ExactClipSpace(unlit)), 32, 32) == 255);  // its own white
+  CHECK(Red(truth::RenderTruth(BuildDrawList(unlit), truth::ExactClipSpace(unlit)), 32, 32) == 255);  // its own white
 }
 
 TEST_CASE("Truth light: a flat triangle takes its first corner's light from a point light, not its centroid's",
@@ -216,8 +217,9 @@ TEST_CASE("Truth light: a flat triangle takes its first corner's light from a po
   // both facing the camera; a point light off-centre in front; a colour that is not grey.
   Scene scene = FacingSquare({.ambient = 0.1, .lights = {Point({0.3, -0.4, 3}, 0.7)}}, Shading::kFlat);
   scene.models[0].triangles = {Triangle{{0, 2, 1}, Rgb8{200, 150, 100}}, Triangle{{2, 0, 3}, Rgb8{200, 150, 100}}};
-  const ExactLight light(scene);
-  const TruthImage truth = RenderTruthSurfaces(BuildDrawList(scene), ExactClipSpace(scene), &light);
+  const truth::ExactLight light(scene);
+  const truth::TruthImage truth =
+      truth::RenderTruthSurfaces(BuildDrawList(scene), truth::ExactClipSpace(scene), &light);
   // By hand: the normal is (0, 0, -1). Corner (-1, -1, 5): l = (1.3, 0.6, -2), n·l = 2,
   // |l| = √6.05, I = 0.1 + 0.7 · 2/√6.05 = 0.66918; corner (1, 1, 5): l = (-0.7, -1.4, -2),
   // |l| = √6.45, I = 0.1 + 0.7 · 2/√6.45 = 0.65127.
@@ -292,7 +294,7 @@ TEST_CASE("Truth light: a Gouraud floor cut by the near plane and the screen's s
   scene.lighting = Lighting{.ambient = 0.05, .lights = {Directional({0.2, 1, 0.3}, 0.5), Point({0, 0.5, 4}, 0.8)}};
 
   const auto normal = [&](std::size_t, std::size_t k) { return model.normals[k]; };
-  const ExactClipPositions clip = ExactClipSpace(scene);
+  const truth::ExactClipPositions clip = truth::ExactClipSpace(scene);
   REQUIRE(clip[0][0].w < 0);  // behind the camera: the near plane must cut
   const GouraudCheck check = CheckGouraudPixels(scene, normal);
   CHECK(check.pixels > 1000);  // the lower half of the picture, about 3000 pixels

@@ -32,7 +32,7 @@ inline glm::dvec4 FromWindow(double x, double y, double z, std::uint32_t width, 
 // One draw of one mesh holding every triangle's own three vertices, with the truth's clip positions.
 struct TruthInput {
   DrawList list;
-  ExactClipPositions clip;
+  truth::ExactClipPositions clip;
 };
 
 inline TruthInput MakeInput(std::uint32_t width, std::uint32_t height, const std::vector<ClipTriangle>& triangles,
@@ -59,7 +59,7 @@ inline TruthInput MakeInput(std::uint32_t width, std::uint32_t height, const std
   return in;
 }
 
-inline Image Render(const TruthInput& in) { return RenderTruth(in.list, in.clip); }
+inline Image Render(const TruthInput& in) { return truth::RenderTruth(in.list, in.clip); }
 
 inline bool IsBackground(const Image& image, std::uint32_t x, std::uint32_t y, Rgb8 background = kBackground) {
   const std::uint8_t* p = image.pixel(x, y);

@@ -22,7 +22,7 @@ TEST_CASE("Truth vs CPU twin: at most a few edge pixels differ on the chapter's 
     INFO(file.string());
     const Scene scene = LoadScene(file);
     const DrawList list = BuildDrawList(scene);
-    const Image truth = RenderTruth(list, ExactClipSpace(scene));
+    const Image truth = truth::RenderTruth(list, truth::ExactClipSpace(scene));
     const Image twin = cpu::RenderOnCpu(list, cpu::CpuOptions{1});
     REQUIRE(truth.width == twin.width);
     REQUIRE(truth.height == twin.height);

@@ -60,11 +60,11 @@ TEST_CASE("Truth: unlit scenes render byte for byte as before the truth learnt l
         REQUIRE_FALSE(scene.lighting.has_value());
         scene.wireframe = false;  // the truth draws filled triangles only
         const DrawList list = BuildDrawList(scene);
-        const ExactClipPositions clip = ExactClipSpace(scene);
-        CHECK(test::ImageHash(RenderTruth(list, clip)) == hash);
+        const truth::ExactClipPositions clip = truth::ExactClipSpace(scene);
+        CHECK(test::ImageHash(truth::RenderTruth(list, clip)) == hash);
         // Neither a light (which lights nothing here) nor asking for the surfaces changes a byte.
-        const ExactLight light(scene);
-        const TruthImage with_surfaces = RenderTruthSurfaces(list, clip, &light);
+        const truth::ExactLight light(scene);
+        const truth::TruthImage with_surfaces = truth::RenderTruthSurfaces(list, clip, &light);
         CHECK(test::ImageHash(with_surfaces.image) == hash);
         CHECK(with_surfaces.surfaces.size() == std::size_t{list.width} * list.height);
       });

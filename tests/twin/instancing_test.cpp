@@ -75,9 +75,9 @@ TEST_CASE("Equal depths: instanced draws keep instance order, then triangle orde
 TEST_CASE("Instanced and per-draw F give identical pixels, with ties and split buffers", "[twin][instancing]") {
   const DrawList list = CoincidentCubes();
   const Image cpu = cpu::RenderOnCpu(list, test::TwinOptions());
-  GpuRenderer split(
-      GpuOptions{.device = "", .validation = true, .instancing = gpu::Instancing::kAlways, .instances_per_buffer = 7});
-  GpuTimings timings;
+  gpu::GpuRenderer split(gpu::GpuOptions{
+      .device = "", .validation = true, .instancing = gpu::Instancing::kAlways, .instances_per_buffer = 7});
+  gpu::GpuTimings timings;
   const Image gpu_split = split.Render(list, &timings);
   INFO(CompareImages(gpu_split, cpu).differing_pixels << " pixels differ with buffers of 7");
   REQUIRE(CompareImages(gpu_split, cpu).Equal());
@@ -94,8 +94,8 @@ TEST_CASE("Instanced and per-draw F give identical pixels, with ties and split b
 
 TEST_CASE("kAuto instances long runs only, and still matches the twin", "[twin][instancing]") {
   const DrawList list = CoincidentCubes();  // runs of 40 draws of one mesh: instanced under kAuto
-  GpuRenderer automatic(GpuOptions{.device = "", .validation = true});
-  GpuTimings timings;
+  gpu::GpuRenderer automatic(gpu::GpuOptions{.device = "", .validation = true});
+  gpu::GpuTimings timings;
   const Image image = automatic.Render(list, &timings);
   REQUIRE(timings.instanced_draws == list.draws.size());
   REQUIRE(timings.draw_commands == 2);

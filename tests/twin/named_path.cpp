@@ -74,7 +74,7 @@ NamedPath PathThisRunNames() {
 
 void RequireLavapipeOnNamedPath() {
   const NamedPath path = PathThisRunNames();
-  const DeviceIdentity& device = SharedGpu().Device();
+  const gpu::DeviceIdentity& device = SharedGpu().Device();
   INFO("the " << path.name << " path; device " << device.name << " (" << device.driver_info << ")");
   REQUIRE(device.name.find(", " + std::to_string(path.vector_bits) + " bits)") != std::string::npos);
 

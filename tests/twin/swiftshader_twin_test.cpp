@@ -31,7 +31,7 @@ using namespace twinraster;
 
 namespace {
 
-GpuRenderer& SwiftShader() { return test::SharedSwiftShader(); }
+gpu::GpuRenderer& SwiftShader() { return test::SharedSwiftShader(); }
 
 twin_rules::TwinRules SwiftShaderRules() {
   return twin_rules::ChooseTwinRules(run::FactsOf(SwiftShader().Device()), twin_rules::DetectCpuPath());
@@ -184,7 +184,7 @@ DrawList DenormalDepths() {
 }  // namespace
 
 TEST_CASE("SwiftShader: the twin's rules are chosen from what the device reports", "[twin][swiftshader]") {
-  const DeviceIdentity& d = SwiftShader().Device();
+  const gpu::DeviceIdentity& d = SwiftShader().Device();
   const twin_rules::TwinRules twin = SwiftShaderRules();
   INFO(d.name << ": " << twin.text);
   REQUIRE(twin.exact);

@@ -38,12 +38,12 @@ TEST_CASE("The million-instance scenes at 480x270, filled and in wireframe: GPU 
     // A smaller canvas with the same field of view: the same geometry, a sixteenth of the pixels.
     scene.canvas.width = 480;
     scene.canvas.height = 270;
-    GpuRenderer gpu(GpuOptions{.device = "", .validation = true});  // kAuto: the path a user gets
+    gpu::GpuRenderer gpu(gpu::GpuOptions{.device = "", .validation = true});  // kAuto: the path a user gets
     for (const bool wireframe : {false, true}) {
       INFO((wireframe ? "wireframe" : "filled"));
       scene.wireframe = wireframe;
       const DrawList list = BuildDrawList(scene);
-      GpuTimings timings;
+      gpu::GpuTimings timings;
       const Image gpu_image = gpu.Render(list, &timings);
       REQUIRE(timings.instanced_draws == list.draws.size());
       const Image cpu_image = cpu::RenderOnCpu(list, test::TwinOptions());

@@ -15,25 +15,26 @@ namespace {
 std::size_t g_messages_seen[2] = {0, 0};  // per shared renderer
 }
 
-GpuRenderer& SharedGpu(gpu::Instancing instancing) {
+gpu::GpuRenderer& SharedGpu(gpu::Instancing instancing) {
   // Destroyed when the run ends, before main returns: on Debian 13 (Mesa 25.0.7, validation layer
   // 1.4.309) destroying them from a static destructor crashes the process after every test has
   // passed (the driver's own exit handlers have run by then), and never destroying them leaves
   // lavapipe's allocations to LeakSanitizer.
-  static std::unique_ptr<GpuRenderer> per_draw, instanced;
+  static std::unique_ptr<gpu::GpuRenderer> per_draw, instanced;
   if (instancing == gpu::Instancing::kAuto) throw std::logic_error("SharedGpu: choose a path");
-  std::unique_ptr<GpuRenderer>& renderer = instancing == gpu::Instancing::kAlways ? instanced : per_draw;
+  std::unique_ptr<gpu::GpuRenderer>& renderer = instancing == gpu::Instancing::kAlways ? instanced : per_draw;
   if (!renderer) {
-    renderer = std::make_unique<GpuRenderer>(GpuOptions{.device = "", .validation = true, .instancing = instancing});
+    renderer =
+        std::make_unique<gpu::GpuRenderer>(gpu::GpuOptions{.device = "", .validation = true, .instancing = instancing});
     AtEndOfRun([&renderer] { renderer.reset(); });
   }
   return *renderer;
 }
 
-GpuRenderer& SharedSwiftShader() {
-  static std::unique_ptr<GpuRenderer> gpu;
+gpu::GpuRenderer& SharedSwiftShader() {
+  static std::unique_ptr<gpu::GpuRenderer> gpu;
   if (!gpu) {
-    gpu = std::make_unique<GpuRenderer>(GpuOptions{.device = "SwiftShader", .validation = true});
+    gpu = std::make_unique<gpu::GpuRenderer>(gpu::GpuOptions{.device = "SwiftShader", .validation = true});
     AtEndOfRun([] { gpu.reset(); });
   }
   return *gpu;
@@ -41,7 +42,7 @@ GpuRenderer& SharedSwiftShader() {
 
 const twin_rules::TwinRules& SharedTwinRules() {
   static const twin_rules::TwinRules rules = [] {
-    const DeviceIdentity& device = SharedGpu().Device();
+    const gpu::DeviceIdentity& device = SharedGpu().Device();
     return twin_rules::ChooseTwinRules(run::FactsOf(device), twin_rules::DetectCpuPath());
   }();
   return rules;

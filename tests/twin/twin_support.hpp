@@ -15,7 +15,7 @@ namespace twinraster::test {
 
 // Created on first use with the validation layer and synchronization validation on; one per
 // way of feeding F to the vertex shader.
-GpuRenderer& SharedGpu(gpu::Instancing instancing = gpu::Instancing::kNever);
+gpu::GpuRenderer& SharedGpu(gpu::Instancing instancing = gpu::Instancing::kNever);
 
 // The list drawn three ways: on the GPU one push constant per draw, on the GPU with every run of
 // instances drawn instanced, and on the CPU twin. All three must agree.
@@ -29,7 +29,7 @@ struct TwinResult {
 
 // Chromium's SwiftShader (Debian's chromium package), created on first use with the validation
 // layer and released when the run ends, as the shared lavapipe renderers are.
-GpuRenderer& SharedSwiftShader();
+gpu::GpuRenderer& SharedSwiftShader();
 
 // The rules the twin follows against SharedGpu's device on this machine's CPU path, chosen as
 // render chooses them (twin_rules/twin_rules.hpp).

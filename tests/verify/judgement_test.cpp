@@ -44,7 +44,7 @@ TEST_CASE("verify: an empty image of a scene that draws something never passes, 
       const auto [scene, list] = test::ShippedScene(file, wireframe);
       for (const verify::VerifyOptions options : {verify::VerifyOptions{4, false}, verify::VerifyOptions{8, true}}) {
         const verify::Verification v = verify::VerifyImage(scene, list, Blank(list), options);
-        INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << report::VerificationText(v));
+        INFO(file.string() << (wireframe ? " --wireframe" : "") << ": " << run_report::VerificationText(v));
         CHECK(verify::JudgementOf(v) != verify::Judgement::kPassed);
         failed += verify::JudgementOf(v) == verify::Judgement::kFailed;
         ++judged;
@@ -63,7 +63,7 @@ TEST_CASE("verify: an empty image of a random scene that draws something never p
       const Image empty = Blank(list);
       if (cpu::RenderOnCpu(list).rgba == empty.rgba) continue;  // draws nothing: an empty image is right
       const verify::Verification v = verify::VerifyImage(scene, list, empty, {8, true});
-      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
+      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << run_report::VerificationText(v));
       CHECK(verify::JudgementOf(v) != verify::Judgement::kPassed);
       ++drawing;
     }
@@ -82,7 +82,7 @@ TEST_CASE("verify: where every pixel is uncertain the judgement is inconclusive,
   const DrawList list = BuildDrawList(scene);
   const verify::Verification drawn = verify::VerifyImage(scene, list, cpu::RenderOnCpu(list), {8, true});
   const verify::Verification empty = verify::VerifyImage(scene, list, Blank(list), {8, true});
-  INFO(report::VerificationText(drawn) << "\n" << report::VerificationText(empty));
+  INFO(run_report::VerificationText(drawn) << "\n" << run_report::VerificationText(empty));
   CHECK(drawn.NoViolations());
   CHECK(verify::JudgementOf(drawn) == verify::Judgement::kInconclusive);
   CHECK(verify::JudgementOf(empty) != verify::Judgement::kPassed);
@@ -95,7 +95,7 @@ TEST_CASE("verify: strict lines are sharper than non-strict ones, and the twin's
     const Image image = cpu::RenderOnCpu(list);
     const verify::Verification loose = verify::VerifyImage(scene, list, image, {8, false});
     const verify::Verification strict = verify::VerifyImage(scene, list, image, {8, true});
-    INFO(file.string() << ": " << report::VerificationText(loose) << "\n" << report::VerificationText(strict));
+    INFO(file.string() << ": " << run_report::VerificationText(loose) << "\n" << run_report::VerificationText(strict));
     CHECK(loose.NoViolations());
     CHECK(strict.NoViolations());
     CHECK(strict.UncertainOther() <= loose.UncertainOther());
@@ -119,7 +119,7 @@ TEST_CASE("verify: an edge through the eye plane must be drawn where it is in fr
   }
   const verify::Verification good = verify::VerifyImage(scene, list, drawn, {8, true});
   const verify::Verification bad = verify::VerifyImage(scene, list, dropped, {8, true});
-  INFO(report::VerificationText(good) << "\n" << report::VerificationText(bad));
+  INFO(run_report::VerificationText(good) << "\n" << run_report::VerificationText(bad));
   CHECK(good.NoViolations());
   CHECK(verify::JudgementOf(bad) == verify::Judgement::kFailed);
   CHECK(bad.violations >= 20);
@@ -141,7 +141,7 @@ TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyon
   const Image guarded = cpu::RenderOnCpu(list, guard);
   for (const Image* image : {&twin, &guarded}) {
     const verify::Verification v = verify::VerifyImage(scene, list, *image, {8, true});
-    INFO(report::VerificationText(v));
+    INFO(run_report::VerificationText(v));
     CHECK(v.NoViolations());
   }
 }

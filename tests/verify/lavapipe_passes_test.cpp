@@ -48,7 +48,7 @@ std::vector<NamedRules> LavapipeRules() {
 // Judged by the device's own rules: lavapipe reports strictLines, and the twin draws its lines.
 void RequirePasses(const Scene& scene, const DrawList& list, const Image& image, int bits, const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, {.subpixel_bits = bits, .strict_lines = true});
-  INFO(what << ": " << report::VerificationText(v));
+  INFO(what << ": " << run_report::VerificationText(v));
   CHECK(v.NoViolations());
 }
 
@@ -56,7 +56,7 @@ void RequirePasses(const Scene& scene, const DrawList& list, const Image& image,
 
 TEST_CASE("Lavapipe's image of every shipped scene, filled and in wireframe, passes at the device's subpixel bits",
           "[verify][gpu]") {
-  GpuRenderer& gpu = test::SharedGpu();
+  gpu::GpuRenderer& gpu = test::SharedGpu();
   const int bits = int(gpu.Device().subpixel_bits);
   REQUIRE(bits >= 4);
   REQUIRE(gpu.Device().strict_lines);
@@ -74,7 +74,7 @@ TEST_CASE("Lavapipe's image of every shipped scene, filled and in wireframe, pas
 }
 
 TEST_CASE("500 random scenes drawn by lavapipe pass, filled and in wireframe", "[verify][gpu][random]") {
-  GpuRenderer& gpu = test::SharedGpu();
+  gpu::GpuRenderer& gpu = test::SharedGpu();
   const int bits = int(gpu.Device().subpixel_bits);
   for (std::uint32_t seed = 1; seed <= kRandomScenes; ++seed) {
     for (const bool wireframe : {false, true}) {

@@ -22,12 +22,12 @@ namespace {
 
 constexpr std::uint32_t kGoogleSwiftShader = 10;  // VK_DRIVER_ID_GOOGLE_SWIFTSHADER
 
-GpuRenderer& SwiftShader() {
-  static GpuRenderer gpu(GpuOptions{.device = "SwiftShader"});  // GpuUnavailable fails the test
+gpu::GpuRenderer& SwiftShader() {
+  static gpu::GpuRenderer gpu(gpu::GpuOptions{.device = "SwiftShader"});  // GpuUnavailable fails the test
   return gpu;
 }
 
-verify::VerifyOptions RulesOf(const GpuRenderer& gpu) {
+verify::VerifyOptions RulesOf(const gpu::GpuRenderer& gpu) {
   return {int(gpu.Device().subpixel_bits), gpu.Device().strict_lines};
 }
 
@@ -48,10 +48,10 @@ bool CrossesEyePlane(const DrawList& list) {
   return false;
 }
 
-void Judge(const GpuRenderer& gpu, const Scene& scene, const DrawList& list, const Image& image, bool drops,
+void Judge(const gpu::GpuRenderer& gpu, const Scene& scene, const DrawList& list, const Image& image, bool drops,
            const std::string& what) {
   const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
-  INFO(what << ": " << report::VerificationText(v));
+  INFO(what << ": " << run_report::VerificationText(v));
   if (drops)
     CHECK(v.violations > 0);
   else
@@ -62,7 +62,7 @@ void Judge(const GpuRenderer& gpu, const Scene& scene, const DrawList& list, con
 
 TEST_CASE("SwiftShader is found by name with no environment variable, and reports its rules",
           "[verify][gpu][swiftshader]") {
-  const DeviceIdentity& d = SwiftShader().Device();
+  const gpu::DeviceIdentity& d = SwiftShader().Device();
   INFO(d.name << ", " << d.driver_name);
   CHECK(d.driver_id == kGoogleSwiftShader);
   CHECK(d.subpixel_bits == 4);
@@ -71,7 +71,7 @@ TEST_CASE("SwiftShader is found by name with no environment variable, and report
 
 TEST_CASE("SwiftShader's image of every shipped scene passes, filled and in wireframe, but its dropped edges",
           "[verify][gpu][swiftshader]") {
-  GpuRenderer& gpu = SwiftShader();
+  gpu::GpuRenderer& gpu = SwiftShader();
   const std::vector<std::filesystem::path> files = test::ShippedScenesAndMeshes();
   const std::set<std::string> dropping = {"near-plane.json", "camera-inside-cube.json"};
   int judged = 0, dropped = 0;
@@ -90,14 +90,14 @@ TEST_CASE("SwiftShader's image of every shipped scene passes, filled and in wire
 
 TEST_CASE("SwiftShader's images of 40 random scenes pass, filled and in wireframe, but its dropped edges",
           "[verify][gpu][swiftshader][random]") {
-  GpuRenderer& gpu = SwiftShader();
+  gpu::GpuRenderer& gpu = SwiftShader();
   int judged = 0, crossing = 0;
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     for (const bool wireframe : {false, true}) {
       const auto [scene, list] = test::RandomScene(seed, wireframe);
       const Image image = gpu.Render(list);
       const verify::Verification v = verify::VerifyImage(scene, list, image, RulesOf(gpu));
-      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << report::VerificationText(v));
+      INFO("seed " << seed << (wireframe ? " --wireframe: " : ": ") << run_report::VerificationText(v));
       if (!(wireframe && CrossesEyePlane(list))) {
         CHECK(v.NoViolations());
       } else {

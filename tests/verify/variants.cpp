@@ -132,15 +132,15 @@ std::vector<TwinVariant> ConformantVariants() {
                8,
                true,
                [](const Scene& scene, const DrawList& list) {
-                 ExactClipPositions clip;
+                 truth::ExactClipPositions clip;
                  for (const DrawCall& draw : list.draws) {
                    auto& out = clip.emplace_back();
                    for (const glm::vec3& p : list.meshes[draw.mesh].positions) {
                      out.push_back(glm::dmat4(draw.F) * glm::dvec4(glm::dvec3(p), 1.0));
                    }
                  }
-                 const ExactLight light(scene);
-                 return RenderTruth(list, clip, &light);
+                 const truth::ExactLight light(scene);
+                 return truth::RenderTruth(list, clip, &light);
                },
                {}});
   v.push_back({"no FMA (lavapipe's sse4.1 arithmetic)",

@@ -80,7 +80,7 @@ Tally Run(const test::TwinVariant& variant, const std::vector<Job>& jobs) {
       }
     }
     if (variant.conformant && !v.NoViolations())
-      UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << report::VerificationText(v));
+      UNSCOPED_INFO(variant.name << " on " << JobName(job) << ": " << run_report::VerificationText(v));
   }
   return t;
 }

@@ -80,7 +80,7 @@ TEST_CASE(
   CHECK(map.pixel(30, 20)[0] == 255);
   CHECK(map.pixel(30, 20)[1] == 0);
   CHECK(map.pixel(31, 20)[0] == map.pixel(31, 20)[1]);  // certain: grey
-  CHECK_THAT(report::VerificationText(v), HasSubstring("fails: 2 pixels are not allowed; worst at (30, 20)"));
+  CHECK_THAT(run_report::VerificationText(v), HasSubstring("fails: 2 pixels are not allowed; worst at (30, 20)"));
 }
 
 TEST_CASE("verify: with an edge through pixel centres, both answers are allowed there and those pixels are uncertain",

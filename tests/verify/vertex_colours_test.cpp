@@ -64,7 +64,7 @@ TEST_CASE("verify: the twin's vertex-coloured images pass under lavapipe's and S
       const DrawList list = BuildDrawList(scene);
       const verify::Verification v =
           Judge(scene, list, cpu::RenderOnCpu(list, cpu::CpuOptions{.rules = device.rules}), device.bits);
-      INFO(device.name << ", " << name << ": " << report::VerificationText(v));
+      INFO(device.name << ", " << name << ": " << run_report::VerificationText(v));
       CHECK(v.NoViolations());
       ++judged;
     }
@@ -80,13 +80,13 @@ TEST_CASE("verify: wrong vertex colours, or none, fail", "[verify][vertex-colour
     // Red and blue swapped in every vertex colour.
     const Image swapped = cpu::RenderOnCpu(BuildDrawList(SwappedRedBlue(scene)));
     const verify::Verification v = Judge(scene, list, swapped, 8);
-    INFO(report::VerificationText(v));
+    INFO(run_report::VerificationText(v));
     CHECK(v.violations > 1000);
     // The triangles' own colours instead of the vertices' (a driver that ignored the attribute).
     DrawList flat = list;
     for (DrawMesh& mesh : flat.meshes) mesh.vertex_colours.clear();
     const verify::Verification f = Judge(scene, list, cpu::RenderOnCpu(flat), 8);
-    INFO(report::VerificationText(f));
+    INFO(run_report::VerificationText(f));
     CHECK(f.violations > 1000);
     // One pixel inside a face, certain, with its green pushed 40 away.
     Image image = cpu::RenderOnCpu(list);
@@ -105,7 +105,7 @@ TEST_CASE("verify: wrong vertex colours, or none, fail", "[verify][vertex-colour
     std::uint8_t& green = image.rgba[4 * at + 1];
     green = static_cast<std::uint8_t>(green < 128 ? green + 40 : green - 40);
     const verify::Verification one = Judge(scene, list, image, 8);
-    INFO(report::VerificationText(one));
+    INFO(run_report::VerificationText(one));
     CHECK(one.violations == 1);
   }
 }

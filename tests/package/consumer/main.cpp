@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
     const twinraster::Scene scene = twinraster::LoadScene(argv[1]);
     const twinraster::DrawList list = twinraster::BuildDrawList(scene);
     const twinraster::Image image = twinraster::cpu::RenderOnCpu(list);
-    twinraster::WritePng(argv[2], image);
+    twinraster::files::WritePng(argv[2], image);
     std::cout << argv[2] << ": " << image.width << "x" << image.height << "\n";
   } catch (const std::exception& e) {
     std::cerr << "render_cpu: " << e.what() << "\n";
