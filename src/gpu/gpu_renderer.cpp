@@ -44,25 +44,25 @@ struct GpuRenderer::Impl {
   explicit Impl(const GpuOptions& options);
   Image Render(const DrawList& list, GpuTimings* timings);
   // Returns the number of draw commands recorded.
-  std::size_t Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
-                     const gpu::InstanceBuffers& instances, const gpu::LightBuffers* lights);
+  std::size_t Record(const DrawList& list, const DrawPlan& plan, const MeshBuffers& meshes,
+                     const InstanceBuffers& instances, const LightBuffers* lights);
   // Points the descriptor sets at this frame's colour buffer and, when lit, its light buffers.
-  void PointSets(const gpu::MeshBuffers& meshes, const gpu::LightBuffers* lights);
+  void PointSets(const MeshBuffers& meshes, const LightBuffers* lights);
   void BeginPass(const DrawList& list);
   void CopyOut(const DrawList& list);
 
-  gpu::Instancing instancing;
+  Instancing instancing;
   std::uint32_t instances_per_buffer;
   // Members are destroyed in reverse order: everything below goes before the device in `context`.
-  gpu::VulkanContext context;
-  gpu::Pipeline pipeline;
+  VulkanContext context;
+  Pipeline pipeline;
   vk::raii::DescriptorPool descriptor_pool = nullptr;
   vk::raii::DescriptorSet colour_set = nullptr;  // re-pointed at each Render()'s colour buffer
   vk::raii::DescriptorSet lit_set = nullptr;     // the same, and the light buffers, for lit draws
   vk::raii::CommandPool command_pool = nullptr;
-  vk::raii::CommandBuffer commands = nullptr;    // re-recorded by each Render()
-  vk::raii::Fence done = nullptr;                // signalled when the frame has been copied out
-  std::unique_ptr<gpu::OffscreenTarget> target;  // kept while the image size stays the same
+  vk::raii::CommandBuffer commands = nullptr;  // re-recorded by each Render()
+  vk::raii::Fence done = nullptr;              // signalled when the frame has been copied out
+  std::unique_ptr<OffscreenTarget> target;     // kept while the image size stays the same
 };
 
 GpuRenderer::Impl::Impl(const GpuOptions& options)
@@ -115,14 +115,14 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
                          " cannot draw wireframes (no fillModeNonSolid feature); "
                          "--backend cpu can");
   }
-  const gpu::MeshBuffers meshes(context, list);  // must live until the fence has signalled
-  const gpu::DrawPlan plan = gpu::PlanDraws(list, instancing, instances_per_buffer);
-  const gpu::InstanceBuffers instances(context, list, plan);  // likewise
-  std::optional<gpu::LightBuffers> lights;                    // likewise
+  const MeshBuffers meshes(context, list);  // must live until the fence has signalled
+  const DrawPlan plan = PlanDraws(list, instancing, instances_per_buffer);
+  const InstanceBuffers instances(context, list, plan);  // likewise
+  std::optional<LightBuffers> lights;                    // likewise
   if (list.lighting) lights.emplace(context, list);
   if (!target || target->width() != list.width || target->height() != list.height) {
     target.reset();  // free the old images first: at 16384x16384 one target holds 3 GiB
-    target = std::make_unique<gpu::OffscreenTarget>(context, pipeline.render_pass(), list.width, list.height);
+    target = std::make_unique<OffscreenTarget>(context, pipeline.render_pass(), list.width, list.height);
   }
   PointSets(meshes, lights ? &*lights : nullptr);
   const std::size_t draw_commands = Record(list, plan, meshes, instances, lights ? &*lights : nullptr);
@@ -145,7 +145,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
 
   if (timings != nullptr) {
     std::size_t instanced = 0;
-    for (const gpu::DrawBatch& batch : plan.batches) instanced += batch.instanced ? batch.count : 0;
+    for (const DrawBatch& batch : plan.batches) instanced += batch.instanced ? batch.count : 0;
     *timings = GpuTimings{.setup_ms = setup_ms,
                           .draw_ms = draw_ms,
                           .readback_ms = readback_ms,
@@ -156,7 +156,7 @@ Image GpuRenderer::Impl::Render(const DrawList& list, GpuTimings* timings) {
 }
 
 // Safe to rewrite: the previous frame that read the sets has finished (Render waited for it).
-void GpuRenderer::Impl::PointSets(const gpu::MeshBuffers& meshes, const gpu::LightBuffers* lights) {
+void GpuRenderer::Impl::PointSets(const MeshBuffers& meshes, const LightBuffers* lights) {
   const auto point = [&](const vk::raii::DescriptorSet& set, std::uint32_t binding, vk::Buffer buffer,
                          vk::DeviceSize range = VK_WHOLE_SIZE,
                          vk::DescriptorType type = vk::DescriptorType::eStorageBuffer) {
@@ -174,8 +174,8 @@ void GpuRenderer::Impl::PointSets(const gpu::MeshBuffers& meshes, const gpu::Lig
   }
 }
 
-std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan& plan, const gpu::MeshBuffers& meshes,
-                                      const gpu::InstanceBuffers& instances, const gpu::LightBuffers* lights) {
+std::size_t GpuRenderer::Impl::Record(const DrawList& list, const DrawPlan& plan, const MeshBuffers& meshes,
+                                      const InstanceBuffers& instances, const LightBuffers* lights) {
   const vk::raii::CommandBuffer& cmd = commands;
   cmd.reset();  // a Render() that threw halfway may have left it in the recording state
   cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
@@ -183,8 +183,8 @@ std::size_t GpuRenderer::Impl::Record(const DrawList& list, const gpu::DrawPlan&
   cmd.bindVertexBuffers(0, meshes.corners(), vk::DeviceSize{0});
   if (lights) cmd.bindVertexBuffers(2, lights->normals(), vk::DeviceSize{0});
   if (meshes.vertex_colours()) cmd.bindVertexBuffers(3, meshes.vertex_colours()->buffer(), vk::DeviceSize{0});
-  gpu::DrawRecorder recorder(cmd, pipeline, list, meshes, instances, *colour_set, *lit_set);
-  for (const gpu::DrawBatch& batch : plan.batches) recorder.Record(batch);
+  DrawRecorder recorder(cmd, pipeline, list, meshes, instances, *colour_set, *lit_set);
+  for (const DrawBatch& batch : plan.batches) recorder.Record(batch);
   cmd.endRenderPass();  // the render pass's last dependency orders the copy after the drawing
   CopyOut(list);
   cmd.end();

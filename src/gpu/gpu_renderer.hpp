@@ -21,9 +21,9 @@ struct GpuOptions {
   bool validation = false;
   // How F reaches the vertex shader (gpu/draw_batches.hpp): per draw, per instance, or chosen
   // per run of instances. Every choice gives the same pixels.
-  gpu::Instancing instancing = gpu::Instancing::kAuto;
+  Instancing instancing = Instancing::kAuto;
   // F matrices per instance buffer; smaller values only serve tests of the splitting.
-  std::uint32_t instances_per_buffer = gpu::kInstancesPerBuffer;
+  std::uint32_t instances_per_buffer = kInstancesPerBuffer;
 };
 
 // Per Render(): setup = buffers/upload/command recording, draw = submit+wait, readback = map+copy
@@ -56,7 +56,7 @@ class GpuUnavailable : public std::runtime_error {
 };
 
 // Whether this build has the Vulkan renderer: false when configured with -DTWINRASTER_VULKAN=OFF,
-// where every GpuRenderer (and gpu::ListDevices) throws GpuUnavailable saying so (gpu/no_vulkan.cpp).
+// where every GpuRenderer (and ListDevices) throws GpuUnavailable saying so (gpu/no_vulkan.cpp).
 bool VulkanInBuild();
 
 class GpuRenderer {

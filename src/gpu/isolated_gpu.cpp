@@ -47,18 +47,18 @@ bool SendList(int fd, const std::string& bytes) {
 
 // Reads exactly what is asked from a stream socket, waiting at most until the deadline (none:
 // forever).
-class SocketReader final : public gpu::ByteSource {
+class SocketReader final : public ByteSource {
  public:
   SocketReader(int fd, std::optional<double> deadline_ms, const Stopwatch& clock)
       : fd_(fd), deadline_ms_(deadline_ms), clock_(clock) {}
 
-  gpu::ReadStatus Read(void* data, std::size_t size) override {
+  ReadStatus Read(void* data, std::size_t size) override {
     char* p = static_cast<char*>(data);
     while (size > 0) {
       int wait_ms = -1;
       if (deadline_ms_) {
         const double left = *deadline_ms_ - clock_.Milliseconds();
-        if (left <= 0) return gpu::ReadStatus::kTimedOut;
+        if (left <= 0) return ReadStatus::kTimedOut;
         wait_ms = static_cast<int>(left) + 1;
       }
       pollfd ready{.fd = fd_, .events = POLLIN, .revents = 0};
@@ -67,10 +67,10 @@ class SocketReader final : public gpu::ByteSource {
       if (r <= 0) continue;  // interrupted, or the loop's top decides whether time is up
       const ssize_t n = read(fd_, p, size);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return gpu::ReadStatus::kClosed;
+      if (n <= 0) return ReadStatus::kClosed;
       p += n, size -= static_cast<std::size_t>(n);
     }
-    return gpu::ReadStatus::kOk;
+    return ReadStatus::kOk;
   }
 
  private:
@@ -90,21 +90,20 @@ void FaultForTests() {
 
 // Draws one list and reports it. Returns false when the child cannot go on.
 bool ServeList(GpuRenderer& renderer, const DrawList& list, int fd) {
-  using gpu::ReplyTag;
   try {
     FaultForTests();
     Stopwatch clock;
-    gpu::RenderedReply reply;
+    RenderedReply reply;
     const Image image = renderer.Render(list, &reply.timings);
     reply.work_ms = clock.Milliseconds();
     reply.pixel_bytes = image.rgba.size();
-    SendAll(fd, gpu::EncodeRendered(reply));
+    SendAll(fd, EncodeRendered(reply));
     return SendAll(fd, image.rgba.data(), image.rgba.size());
   } catch (const std::invalid_argument& e) {
     // Nothing was touched: the next list may draw.
-    return SendAll(fd, gpu::EncodeProblem(ReplyTag::kBadList, e.what()));
+    return SendAll(fd, EncodeProblem(ReplyTag::kBadList, e.what()));
   } catch (const std::exception& e) {
-    SendAll(fd, gpu::EncodeProblem(ReplyTag::kFailed, e.what()));
+    SendAll(fd, EncodeProblem(ReplyTag::kFailed, e.what()));
     return false;
   }
 }
@@ -112,16 +111,15 @@ bool ServeList(GpuRenderer& renderer, const DrawList& list, int fd) {
 // Makes the child's renderer and tells the parent its device; false, with the reason sent instead,
 // when it cannot be made.
 bool MakeRenderer(std::optional<GpuRenderer>& renderer, const GpuOptions& options, int fd) {
-  using gpu::ReplyTag;
   try {
     Stopwatch clock;
     renderer.emplace(options);
-    SendAll(fd, gpu::EncodeDevice({.device = renderer->Device(), .device_ms = clock.Milliseconds()}));
+    SendAll(fd, EncodeDevice({.device = renderer->Device(), .device_ms = clock.Milliseconds()}));
     return true;
   } catch (const GpuUnavailable& e) {
-    SendAll(fd, gpu::EncodeProblem(ReplyTag::kUnavailable, e.what()));
+    SendAll(fd, EncodeProblem(ReplyTag::kUnavailable, e.what()));
   } catch (const std::exception& e) {
-    SendAll(fd, gpu::EncodeProblem(ReplyTag::kFailed, e.what()));
+    SendAll(fd, EncodeProblem(ReplyTag::kFailed, e.what()));
   }
   return false;
 }
@@ -136,14 +134,14 @@ bool MakeRenderer(std::optional<GpuRenderer>& renderer, const GpuOptions& option
   SocketReader reader(fd, std::nullopt, never);
   for (;;) {
     std::uint64_t size = 0;
-    if (reader.Read(&size, sizeof size) != gpu::ReadStatus::kOk) _exit(0);  // the parent is done
+    if (reader.Read(&size, sizeof size) != ReadStatus::kOk) _exit(0);  // the parent is done
     std::string bytes(size, '\0');
-    if (reader.Read(bytes.data(), size) != gpu::ReadStatus::kOk) _exit(0);
+    if (reader.Read(bytes.data(), size) != ReadStatus::kOk) _exit(0);
     DrawList list;
     try {
-      list = gpu::DecodeDrawList(bytes);
+      list = DecodeDrawList(bytes);
     } catch (const std::exception& e) {
-      SendAll(fd, gpu::EncodeProblem(gpu::ReplyTag::kFailed, e.what()));
+      SendAll(fd, EncodeProblem(ReplyTag::kFailed, e.what()));
       _exit(0);
     }
     if (!ServeList(*renderer, list, fd)) _exit(0);
@@ -152,33 +150,32 @@ bool MakeRenderer(std::optional<GpuRenderer>& renderer, const GpuOptions& option
 
 // How the child answered one list.
 struct Answer {
-  gpu::ReadStatus status = gpu::ReadStatus::kOk;  // kOk: a whole answer came
-  bool child_goes_on = false;                     // it takes the next list
-  double work_ms = 0;                             // the list's time as the child measured it
+  ReadStatus status = ReadStatus::kOk;  // kOk: a whole answer came
+  bool child_goes_on = false;           // it takes the next list
+  double work_ms = 0;                   // the list's time as the child measured it
 };
 
 // Reads replies until one answers the list: the pixels into `image`, a fresh child's device (its
 // first reply) into `device`, the rest into `result`.
-Answer Await(gpu::ByteSource& in, DeviceIdentity& device, Image& image, IsolatedGpuResult& result) {
-  using gpu::ReadStatus, gpu::ReplyTag;
+Answer Await(ByteSource& in, DeviceIdentity& device, Image& image, IsolatedGpuResult& result) {
   Answer answer;
   for (;;) {
     ReplyTag tag{};
-    if ((answer.status = gpu::ReadTag(in, tag)) != ReadStatus::kOk) return answer;
+    if ((answer.status = ReadTag(in, tag)) != ReadStatus::kOk) return answer;
     if (tag == ReplyTag::kDevice) {
-      gpu::DeviceReply reply;
-      answer.status = gpu::ReadDevice(in, reply);
+      DeviceReply reply;
+      answer.status = ReadDevice(in, reply);
       device = reply.device, result.device_ms = reply.device_ms;
       if (answer.status != ReadStatus::kOk) return answer;
     } else if (tag == ReplyTag::kRendered) {
-      gpu::RenderedReply reply;
-      answer.status = gpu::ReadRendered(in, reply, image.rgba);
+      RenderedReply reply;
+      answer.status = ReadRendered(in, reply, image.rgba);
       result.timings = reply.timings, answer.work_ms = reply.work_ms;
       result.outcome = GpuOutcome::kRendered;
       answer.child_goes_on = answer.status == ReadStatus::kOk;
       return answer;
     } else {
-      answer.status = gpu::ReadProblem(in, result.problem);
+      answer.status = ReadProblem(in, result.problem);
       result.outcome = tag == ReplyTag::kUnavailable ? GpuOutcome::kUnavailable
                        : tag == ReplyTag::kBadList   ? GpuOutcome::kBadList
                                                      : GpuOutcome::kCrashed;
@@ -258,8 +255,8 @@ IsolatedGpuResult GpuProcess::Collect() {
   SocketReader reader(child_->fd, deadline, pending.clock);
   const Answer answer = Await(reader, device_, image, result);
   result.device = device_;
-  if (answer.status != gpu::ReadStatus::kOk) {
-    ReapLost(answer.status == gpu::ReadStatus::kTimedOut, result);
+  if (answer.status != ReadStatus::kOk) {
+    ReapLost(answer.status == ReadStatus::kTimedOut, result);
     return result;
   }
   if (!answer.child_goes_on) child_.reset();
@@ -275,7 +272,7 @@ IsolatedGpuResult GpuProcess::Collect() {
 // A living child is sent the list; when that fails it has died since, and a fresh one inherits the
 // list instead.
 void GpuProcess::Hand(const DrawList& list) {
-  if (child_ && !SendList(child_->fd, gpu::EncodeDrawList(list))) {
+  if (child_ && !SendList(child_->fd, EncodeDrawList(list))) {
     child_->Reap();
     child_.reset();
   }

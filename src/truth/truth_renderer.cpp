@@ -38,45 +38,45 @@ void ValidateInputs(const DrawList& list, const ExactClipPositions& clip, const 
 }
 
 // Clipping, then the viewport transform of the polygon's vertices, then the fan, drawn in order.
-void DrawClipTriangle(truth::TruthTarget& target, const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c,
-                      Rgb8 colour, std::uint64_t surface) {
-  const truth::ClipPolygon polygon = truth::ClipToViewVolume(a, b, c);
+void DrawClipTriangle(TruthTarget& target, const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, Rgb8 colour,
+                      std::uint64_t surface) {
+  const ClipPolygon polygon = ClipToViewVolume(a, b, c);
   std::vector<glm::dvec3> window;
   window.reserve(polygon.size());
   for (const glm::dvec4& p : polygon) {
     window.push_back(ExactFramebuffer(p, target.colour.width, target.colour.height));
   }
   for (std::size_t i = 2; i < window.size(); ++i) {
-    truth::WindowTriangle t;
+    WindowTriangle t;
     t.v = {window[0], window[i - 1], window[i]};
     t.colour = colour;
     t.surface = surface;
-    truth::DrawTriangle(target, t);
+    DrawTriangle(target, t);
   }
 }
 
 // The same for a lit triangle: the corner colours are clipped along with the positions.
-void DrawLitTriangle(truth::TruthTarget& target, const std::array<truth::LitVertex, 3>& v, std::uint64_t surface) {
-  const truth::LitPolygon polygon = truth::ClipToViewVolume(v[0], v[1], v[2]);
+void DrawLitTriangle(TruthTarget& target, const std::array<LitVertex, 3>& v, std::uint64_t surface) {
+  const LitPolygon polygon = ClipToViewVolume(v[0], v[1], v[2]);
   std::vector<glm::dvec3> window;
   window.reserve(polygon.size());
-  for (const truth::LitVertex& p : polygon) {
+  for (const LitVertex& p : polygon) {
     window.push_back(ExactFramebuffer(p.clip, target.colour.width, target.colour.height));
   }
   for (std::size_t i = 2; i < window.size(); ++i) {
     const std::size_t k[3] = {0, i - 1, i};
-    truth::WindowTriangle t;
+    WindowTriangle t;
     t.v = {window[k[0]], window[k[1]], window[k[2]]};
     t.colours = std::array<glm::dvec3, 3>{polygon[k[0]].colour, polygon[k[1]].colour, polygon[k[2]].colour};
     t.w = {polygon[k[0]].clip.w, polygon[k[1]].clip.w, polygon[k[2]].clip.w};
     t.surface = surface;
-    truth::DrawTriangle(target, t);
+    DrawTriangle(target, t);
   }
 }
 
 TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const ExactLight* light, bool surfaces) {
   ValidateInputs(list, clip, light);
-  truth::TruthTarget target(list.width, list.height, list.background, list.reversed_z, surfaces);
+  TruthTarget target(list.width, list.height, list.background, list.reversed_z, surfaces);
   // Draws in list order, triangles in index order, a clipped triangle's fan in fan order.
   std::uint64_t first_triangle = 0;  // of draw d, counting every draw's
   for (std::size_t d = 0; d < list.draws.size(); ++d) {
@@ -98,11 +98,10 @@ TruthImage Render(const DrawList& list, const ExactClipPositions& clip, const Ex
       if (colours.empty()) {
         DrawClipTriangle(target, positions[tri[0]], positions[tri[1]], positions[tri[2]], mesh.colours[t], surface);
       } else {
-        DrawLitTriangle(
-            target,
-            {truth::LitVertex{positions[tri[0]], colours[t][0]}, truth::LitVertex{positions[tri[1]], colours[t][1]},
-             truth::LitVertex{positions[tri[2]], colours[t][2]}},
-            surface);
+        DrawLitTriangle(target,
+                        {LitVertex{positions[tri[0]], colours[t][0]}, LitVertex{positions[tri[1]], colours[t][1]},
+                         LitVertex{positions[tri[2]], colours[t][2]}},
+                        surface);
       }
     }
   }
