@@ -8,15 +8,15 @@
 
 namespace twinraster::bench {
 
-double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipPositions& truth, std::uint32_t width,
-                         std::uint32_t height) {
+double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipPositions& exact_clip,
+                         std::uint32_t width, std::uint32_t height) {
   double worst = 0;
-  for (std::size_t d = 0; d < truth.size(); ++d) {
-    for (std::size_t v = 0; v < truth[d].size(); ++v) {
-      if (!InsideClipVolume(truth[d][v])) continue;
+  for (std::size_t d = 0; d < exact_clip.size(); ++d) {
+    for (std::size_t v = 0; v < exact_clip[d].size(); ++v) {
+      if (!InsideClipVolume(exact_clip[d][v])) continue;
       // The method's float position, carried through the viewport transform in double so that
       // only the method's own error is measured.
-      const glm::dvec3 exact = truth::ExactFramebuffer(truth[d][v], width, height);
+      const glm::dvec3 exact = truth::ExactFramebuffer(exact_clip[d][v], width, height);
       const glm::dvec3 approx = truth::ExactFramebuffer(glm::dvec4(clip[d][v]), width, height);
       worst = std::max(worst, glm::length(glm::dvec2(approx) - glm::dvec2(exact)));
     }
@@ -24,19 +24,19 @@ double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipP
   return worst;
 }
 
-ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const truth::TruthImage& truth) {
+ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const truth::TruthImage& exact) {
   ColourError error;
-  if (image.width != truth.image.width || image.height != truth.image.height || surfaces.width != image.width ||
-      surfaces.height != image.height || truth.surfaces.size() != std::size_t{image.width} * image.height) {
+  if (image.width != exact.image.width || image.height != exact.image.height || surfaces.width != image.width ||
+      surfaces.height != image.height || exact.surfaces.size() != std::size_t{image.width} * image.height) {
     return error;
   }
-  for (std::size_t p = 0; p < truth.surfaces.size(); ++p) {
+  for (std::size_t p = 0; p < exact.surfaces.size(); ++p) {
     const std::size_t i = 4 * p;
     const std::uint64_t shown = std::uint64_t{surfaces.rgba[i]} | std::uint64_t{surfaces.rgba[i + 1]} << 8 |
                                 std::uint64_t{surfaces.rgba[i + 2]} << 16;
-    if (truth.surfaces[p] == 0 || shown != truth.surfaces[p]) continue;
+    if (exact.surfaces[p] == 0 || shown != exact.surfaces[p]) continue;
     for (std::size_t c = 0; c < 3; ++c) {
-      error.max_channel = std::max(error.max_channel, std::abs(int{image.rgba[i + c]} - int{truth.image.rgba[i + c]}));
+      error.max_channel = std::max(error.max_channel, std::abs(int{image.rgba[i + c]} - int{exact.image.rgba[i + c]}));
     }
     ++error.pixels;
   }

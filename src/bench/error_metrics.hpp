@@ -15,8 +15,8 @@ namespace twinraster::bench {
 // Max over every vertex the truth has inside the clip volume (only those reach the framebuffer as
 // themselves) of the distance in pixels between its framebuffer position from `clip` and the
 // truth's. Returns 0 when no vertex is inside.
-double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipPositions& truth, std::uint32_t width,
-                         std::uint32_t height);
+double VertexErrorPixels(const cpu::ClipPositions& clip, const truth::ExactClipPositions& exact_clip,
+                         std::uint32_t width, std::uint32_t height);
 
 // A lit image's colours against the truth's, triangle by triangle: over the pixels where the
 // image shows the same triangle as the truth, the largest channel difference, 0..255. Which
@@ -27,7 +27,7 @@ struct ColourError {
   int max_channel = 0;
   std::uint64_t pixels = 0;  // pixels compared
 };
-ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const truth::TruthImage& truth);
+ColourError SameSurfaceColourError(const Image& image, const Image& surfaces, const truth::TruthImage& exact);
 
 // The list unlit, each draw with its own copy of its mesh whose triangles are coloured by their
 // number (TruthImage::surfaces' numbering) as 24-bit RGB, red lowest. nullopt when the list has
