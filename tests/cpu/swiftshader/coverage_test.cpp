@@ -2,28 +2,15 @@
 // 4 subpixel bits, left ends inclusive and right ends exclusive (the top-left rule).
 #include "cpu/swiftshader/coverage.hpp"
 
+#include "corner_triangle.hpp"
 #include "cpu/swiftshader/setup.hpp"
 #include "support/catch.hpp"
 
 #include <array>
 
 using namespace twinraster::cpu;
-
-namespace {
-
-// Pixel centres (0, 0), (4, 0) and (0, 4): the pixels px, py >= 0 with px + py < 4 are inside; the
-// hypotenuse, a right and bottom edge, passes through the centres with px + py = 4 exactly.
-constexpr std::array<SnappedPoint, 3> kCorner = {{{0, 0}, {64, 0}, {0, 64}}};
-
-SnappedVertex Vertex(std::int32_t x, std::int32_t y, float w = 1.0f) {
-  SnappedVertex v;
-  v.x = x;
-  v.y = y;
-  v.clip = glm::vec4(0, 0, 0, w);
-  return v;
-}
-
-}  // namespace
+using test::kCorner;
+using test::Vertex;
 
 TEST_CASE("SwiftShader coverage: a triangle's rows, top and left edges in, right and bottom edges out",
           "[cpu][swiftshader][coverage]") {

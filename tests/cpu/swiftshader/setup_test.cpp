@@ -2,26 +2,14 @@
 // framebuffer, and the winding from the float area of the snapped vertices.
 #include "cpu/swiftshader/setup.hpp"
 
+#include "corner_triangle.hpp"
 #include "support/catch.hpp"
 
 #include <array>
 
 using namespace twinraster::cpu;
-
-namespace {
-
-// Pixel centres (0, 0), (4, 0) and (0, 4).
-constexpr std::array<SnappedPoint, 3> kCorner = {{{0, 0}, {64, 0}, {0, 64}}};
-
-SnappedVertex Vertex(std::int32_t x, std::int32_t y, float w = 1.0f) {
-  SnappedVertex v;
-  v.x = x;
-  v.y = y;
-  v.clip = glm::vec4(0, 0, 0, w);
-  return v;
-}
-
-}  // namespace
+using test::kCorner;
+using test::Vertex;
 
 TEST_CASE("SwiftShader set-up: bounds are the rows and columns whose centres the box holds",
           "[cpu][swiftshader][setup]") {
