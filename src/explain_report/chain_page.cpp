@@ -376,8 +376,8 @@ Panel LightPanel(const Trace& t) {
   return p;
 }
 
-std::string PageHead(const Explanation& e, const Trace& t, const std::string& instance_name,
-                     const std::string& vertex_name) {
+// The page's head, its style sheet and title: what stays when the chain changes.
+std::string PageHead(const Explanation& e) {
   const std::string& scene_name = e.scene->name;
   std::ostringstream page;
   page << markup::PageStart("The chain of " + scene_name) << "<style>.axis{stroke:#ddd}.box{fill:none;stroke:#555}"
@@ -385,22 +385,30 @@ std::string PageHead(const Explanation& e, const Trace& t, const std::string& in
        << ".far{fill:none;stroke:#bbb;stroke-dasharray:2 4}.normal{stroke:#1a7f37;stroke-width:2}"
        << ".light{stroke:#b8860b;stroke-width:2}figure.chain-panel{width:402px}"
        << "figure.chain-panel pre{white-space:pre-wrap}</style>\n"
-       << "<h1>The chain of " << markup::Escape(scene_name) << "</h1>\n"
-       << "<p>F = M_Projection · M_Camera · M_Model, computed in double by the host, takes "
+       << "<h1>The chain of " << markup::Escape(scene_name) << "</h1>\n";
+  return page.str();
+}
+
+std::string Introduction(const Explanation& e, const Trace& t, const std::string& instance_name,
+                         const std::string& vertex_name) {
+  std::ostringstream text;
+  text << "<p>F = M_Projection · M_Camera · M_Model, computed in double by the host, takes "
        << markup::Escape(vertex_name) << " of " << markup::Escape(instance_name)
        << " from model space to the canvas. Each panel draws one space with the "
        << "matrix that leads into it and where the vertex (red) lands there. " << e.instances.size() << " of "
        << Counted(e.scene->instances.size(), "instance") << " shown"
        << (t.all_instances ? "" : " (edges of the traced instance only: the mesh is large)") << ".</p>\n";
-  return page.str();
+  return text.str();
 }
 
 }  // namespace
 
-std::string ChainPageHtml(const Explanation& e) {
+std::string ChainPageHead(const Explanation& e) { return PageHead(e); }
+
+std::string ChainPanelsHtml(const Explanation& e) {
   // A scene always has an instance and a model a vertex; an explanation without them is a caller's mistake.
   if (e.instances.empty() || e.instances.front().vertices.empty()) {
-    throw std::invalid_argument("ChainPageHtml: the explanation traces no vertex");
+    throw std::invalid_argument("ChainPanelsHtml: the explanation traces no vertex");
   }
   const InstanceExplanation& traced = e.instances.front();
   const TracedVertex& v = traced.vertices.at(traced.traced);
@@ -418,8 +426,14 @@ std::string ChainPageHtml(const Explanation& e) {
                                NdcPanel(t),
                                CanvasPanel(t)};
   if (v.light) panels.push_back(LightPanel(t));
-  std::string page = PageHead(e, t, instance_name, vertex_name);
-  for (const Panel& p : panels) page += Figure(p);
+  std::string html = Introduction(e, t, instance_name, vertex_name);
+  for (const Panel& p : panels) html += Figure(p);
+  return html;
+}
+
+std::string ChainPageHtml(const Explanation& e) {
+  std::string page = PageHead(e);
+  page += ChainPanelsHtml(e);
   page += markup::kPageEnd;
   return page;
 }

@@ -17,4 +17,11 @@ namespace twinraster::explain_report {
 // (ExplainVertices::kAll). Numbers have six significant digits; a negative zero shows as 0.
 std::string ChainPageHtml(const Explanation& explanation);
 
+// The page in its two parts, for a page that redraws the chain as it changes (page/): the head
+// (PageStart, the style sheet and the title, left open for the body to follow), and the panels
+// (the paragraph naming the traced vertex, then a figure per space), which are all that change.
+// ChainPageHtml is the head, the panels and markup::kPageEnd.
+std::string ChainPageHead(const Explanation& explanation);
+std::string ChainPanelsHtml(const Explanation& explanation);
+
 }  // namespace twinraster::explain_report

@@ -1,0 +1,38 @@
+// One state of the moving chain page, computed: a scene file's text in; the chain's panels, the
+// numbers `explain --json` prints and the twin's picture out. The browser's module runs exactly
+// this (module_exports.cpp), and the native build runs it too, so that tests can hold the two to
+// the same bits. It reads no file (a scene's meshes come as data: URIs), starts no thread, and
+// chooses no rules: the page carries the rules the native run chose.
+#pragma once
+
+#include "cpu/raster_rules.hpp"
+#include "image/image.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace twinraster::page_module {
+
+struct PageRequest {
+  std::string_view scene_json;          // a scene file, as `twinraster render` reads it
+  cpu::RasterRules rules;               // whose arithmetic the picture copies
+  std::optional<std::size_t> instance;  // the traced instance (explain --instance)
+  std::optional<std::size_t> vertex;    // the traced vertex (explain --vertex)
+};
+
+struct PageFrame {
+  std::string panels_html;   // explain_report::ChainPanelsHtml: the page's figures
+  std::string explain_json;  // explain --json's object, as the command prints it
+  Image picture;             // the twin's image on one thread, as render --backend cpu draws it
+};
+
+// The name a scene read from the page takes in messages and in Scene::name.
+inline constexpr std::string_view kPageSceneName = "page";
+
+// Throws the loader's SceneError for a scene it refuses, and UsageError for an instance or vertex
+// the scene does not have, with explain's words.
+PageFrame ComputePageFrame(const PageRequest& request);
+
+}  // namespace twinraster::page_module
