@@ -65,12 +65,13 @@ test::Quad AboveTop(double c, int k) {
 TEST_CASE("sRGB bytes: every step is where quadruple precision puts it") {
   const std::vector<double> starts = ByteStarts();
   for (int k = 0; k < 255; ++k) {
-    INFO("byte " << k + 1 << " starts at " << starts[k]);
-    REQUIRE(SrgbByte(starts[k]) == k + 1);  // one step at a time: no byte skipped
-    REQUIRE(SrgbByte(std::nextafter(starts[k], 0.0)) == k);
+    const double start = starts[static_cast<std::size_t>(k)];
+    INFO("byte " << k + 1 << " starts at " << start);
+    REQUIRE(SrgbByte(start) == k + 1);  // one step at a time: no byte skipped
+    REQUIRE(SrgbByte(std::nextafter(start, 0.0)) == k);
 #ifdef TWINRASTER_QUAD_REFERENCE
-    REQUIRE(AboveTop(starts[k], k) >= 0);
-    REQUIRE(AboveTop(std::nextafter(starts[k], 0.0), k) < 0);
+    REQUIRE(AboveTop(start, k) >= 0);
+    REQUIRE(AboveTop(std::nextafter(start, 0.0), k) < 0);
 #endif
   }
   CHECK(SrgbByte(0.0) == 0);
