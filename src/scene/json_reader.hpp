@@ -33,6 +33,7 @@ class JsonReader {
   JsonReader(JsonValue value, const std::string& file) : value_(value), file_(&file) {}
 
   std::string path() const;  // e.g. "instances[1].transform.scale"; "" at the root
+  const std::string& file() const { return *file_; }
 
   [[noreturn]] void Fail(const std::string& problem) const;
 
