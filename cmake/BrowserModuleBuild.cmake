@@ -9,6 +9,8 @@ set(TWINRASTER_JSON_DOM nlohmann CACHE STRING "The scene loader's JSON DOM" FORC
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 
+# Optimised for size: the page carries the module (src/page_module/CMakeLists.txt gives the twin -O2).
+set(CMAKE_CXX_FLAGS_RELEASE "-Oz -DNDEBUG")
 # Exceptions are thrown (and trap: src/page_module/module_runtime.cpp), never caught.
 add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-fexceptions>)
 # wasm32-wasi's libc++ (14) has no <filesystem> and no std::from_chars for double: this folder's

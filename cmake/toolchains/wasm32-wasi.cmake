@@ -10,7 +10,6 @@ set(CMAKE_C_COMPILER clang)
 set(CMAKE_CXX_COMPILER clang++)
 set(CMAKE_C_COMPILER_TARGET wasm32-wasi)
 set(CMAKE_CXX_COMPILER_TARGET wasm32-wasi)
-set(CMAKE_EXECUTABLE_SUFFIX .wasm)
 # The compiler checks compile only: a wasm32-wasi program needs no try-run, and the module is a
 # reactor (no main), linked by its own flags in src/page_module/CMakeLists.txt.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
