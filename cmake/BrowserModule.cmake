@@ -69,14 +69,13 @@ if(CMAKE_CXX_COMPILER_LAUNCHER)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER})
 endif()
 # Built at every build (the module's sources are most of the project's), which costs a make's
-# look at its files when nothing changed.
+# look at its files when nothing changed; by the same make as the native build (its jobs).
 ExternalProject_Add(twinraster_browser_module
   SOURCE_DIR ${PROJECT_SOURCE_DIR}
   BINARY_DIR ${TWINRASTER_BROWSER_MODULE_DIR}
   CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/toolchains/wasm32-wasi.cmake
              -DCMAKE_BUILD_TYPE=Release
              -DTWINRASTER_BROWSER_MODULE_BUILD=ON -DTWINRASTER_WERROR=${TWINRASTER_WERROR} ${launcher}
-  BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --target twinraster_page
   INSTALL_COMMAND ""
   BUILD_ALWAYS ON
   BUILD_BYPRODUCTS ${TWINRASTER_BROWSER_MODULE_WASM})
