@@ -206,7 +206,9 @@ def case_scenes(driver, a):
             if not check(got.get("status") == 0, "%s: tr_update failed: %s" % (what, str(got)[:300])):
                 continue
             native_json = native.stdout.decode()
-            check(got["json"] + "\n" == native_json, "%s: the module's explain JSON differs from explain --json" % what)
+            # The page's scene is named "page" (page_module::kPageSceneName), the file's by its stem.
+            named = got["json"].replace('"scene": "page"', '"scene": "%s"' % name[:-len(".json")], 1)
+            check(named + "\n" == native_json, "%s: the module's explain JSON differs from explain --json" % what)
             native_page = run([a.exe, "explain", path, "--html", "-"] + extra).decode()
             check(len(got["panels"]) > 1000 and got["panels"] in native_page,
                   "%s: the module's panels are not those of explain --html" % what)
