@@ -115,7 +115,8 @@ class Checker {
       result_.first_bad[1] = b;
       result_.first_bad[2] = c;
     }
-    for (int byte = 0; byte < 4; ++byte) result_.digest = (result_.digest ^ ((bits >> (8 * byte)) & 0xff)) * 0x100000001b3u;
+    for (int byte = 0; byte < 4; ++byte)
+      result_.digest = (result_.digest ^ ((bits >> (8 * byte)) & 0xff)) * 0x100000001b3u;
     ++result_.cases;
   }
   const FmafCheck& result() const { return result_; }
@@ -153,9 +154,26 @@ void MidpointCases(Checker& check, Random& random) {
 void EdgeCases(Checker& check, Random& random) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   const float max = std::numeric_limits<float>::max(), tiny = std::numeric_limits<float>::denorm_min();
-  const float values[] = {0.0f, -0.0f, 1.0f, -1.0f, 3.0f, -15.0f, 15.0f, max, -max, tiny, -tiny,
-                          std::ldexp(1.0f, -75), std::ldexp(1.5f, -75), std::ldexp(1.0f, 103),
-                          std::ldexp(1.0f, -126), 2.0f, 5.0f, inf, -inf, nan};
+  const float values[] = {0.0f,
+                          -0.0f,
+                          1.0f,
+                          -1.0f,
+                          3.0f,
+                          -15.0f,
+                          15.0f,
+                          max,
+                          -max,
+                          tiny,
+                          -tiny,
+                          std::ldexp(1.0f, -75),
+                          std::ldexp(1.5f, -75),
+                          std::ldexp(1.0f, 103),
+                          std::ldexp(1.0f, -126),
+                          2.0f,
+                          5.0f,
+                          inf,
+                          -inf,
+                          nan};
   for (float a : values) {
     for (float b : values) {
       for (float c : values) check.Check(a, b, c);

@@ -10,9 +10,9 @@
 namespace twinraster::page_module {
 
 struct FmafCheck {
-  std::uint32_t cases = 0;       // triples tried
-  std::uint32_t mismatches = 0;  // results whose bits differ from the exact reference
-  std::uint64_t digest = 0;      // FNV-1a over every result's bits, in order: equal across builds
+  std::uint32_t cases = 0;         // triples tried
+  std::uint32_t mismatches = 0;    // results whose bits differ from the exact reference
+  std::uint64_t digest = 0;        // FNV-1a over every result's bits, in order: equal across builds
   float first_bad[3] = {0, 0, 0};  // the first mismatching triple (a, b, c), if any
 };
 

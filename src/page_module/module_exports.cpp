@@ -3,18 +3,21 @@
 // one state: the rules set, the last frame (panels, explain's JSON, picture, draw list). It does
 // not parse controls or draw on a canvas (the page's JavaScript does) and reads no file.
 //
-// Imports: wasi_snapshot_preview1's fd_close, fd_seek, fd_write and proc_exit, which wasi-libc's
-// start-up and abort() name; the module's own code calls none of them in a state that succeeds
-// (nothing is printed or read). A throw inside any export traps after its message is copied into
-// tr_message() (module_runtime.hpp); the page then instantiates the module afresh.
+// Imports, all wasi_snapshot_preview1's: clock_time_get, which must succeed (the twin times its
+// draw with libc++'s steady_clock, which aborts when the clock fails: the page gives
+// performance.now() in nanoseconds); and environ_get, environ_sizes_get, fd_close, fd_seek,
+// fd_write and proc_exit, which wasi-libc's environment, stdio and exit name but no export calls
+// (the page answers 52, ENOSYS; proc_exit throws). A throw inside any export traps after its
+// message is copied into tr_message() (module_runtime.hpp); the page then instantiates the module
+// afresh.
 #include "cpu/platform.hpp"
 #include "page_module/fmaf_check.hpp"
 #include "page_module/module_runtime.hpp"
 #include "page_module/page_frame.hpp"
 
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string_view>
 
@@ -118,8 +121,8 @@ TR_EXPORT(tr_message_size) std::uint32_t tr_message_size() { return twinraster::
 TR_EXPORT(tr_fmaf_check) std::int32_t tr_fmaf_check(std::uint32_t seed, std::uint32_t random_cases) {
   const twinraster::page_module::FmafCheck check = twinraster::page_module::CheckFmaf(seed, random_cases);
   char line[160];
-  const int n = std::snprintf(line, sizeof line, "%u cases, %u mismatches, digest %016llx, first %a %a %a",
-                              check.cases, check.mismatches, static_cast<unsigned long long>(check.digest),
+  const int n = std::snprintf(line, sizeof line, "%u cases, %u mismatches, digest %016llx, first %a %a %a", check.cases,
+                              check.mismatches, static_cast<unsigned long long>(check.digest),
                               static_cast<double>(check.first_bad[0]), static_cast<double>(check.first_bad[1]),
                               static_cast<double>(check.first_bad[2]));
   twinraster::page_module::SetMessage(std::string_view(line, static_cast<std::size_t>(std::max(n, 0))));

@@ -28,14 +28,19 @@ std::uint32_t g_message_size = 0;
 // errors. Each derives from std::exception alone, one class after another, so the object thrown
 // starts with its std::exception and its what() can be read; any other type is only named.
 bool IsKnownException(const std::type_info& type) {
-  static const std::type_info* const known[] = {
-      &typeid(SceneError),           &typeid(UsageError),
-      &typeid(std::runtime_error),   &typeid(std::logic_error),
-      &typeid(std::invalid_argument), &typeid(std::out_of_range),
-      &typeid(std::length_error),    &typeid(std::bad_alloc),
-      &typeid(nlohmann::json::parse_error), &typeid(nlohmann::json::type_error),
-      &typeid(nlohmann::json::out_of_range), &typeid(nlohmann::json::invalid_iterator),
-      &typeid(nlohmann::json::other_error)};
+  static const std::type_info* const known[] = {&typeid(SceneError),
+                                                &typeid(UsageError),
+                                                &typeid(std::runtime_error),
+                                                &typeid(std::logic_error),
+                                                &typeid(std::invalid_argument),
+                                                &typeid(std::out_of_range),
+                                                &typeid(std::length_error),
+                                                &typeid(std::bad_alloc),
+                                                &typeid(nlohmann::json::parse_error),
+                                                &typeid(nlohmann::json::type_error),
+                                                &typeid(nlohmann::json::out_of_range),
+                                                &typeid(nlohmann::json::invalid_iterator),
+                                                &typeid(nlohmann::json::other_error)};
   return std::any_of(std::begin(known), std::end(known), [&](const std::type_info* k) { return *k == type; });
 }
 

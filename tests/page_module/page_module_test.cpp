@@ -30,21 +30,21 @@ std::string Summary(const page_module::FmafCheck& check) {
 
 }  // namespace
 
-TEST_CASE("ExactFmaf rounds once: midpoints nudged by a tiny c, signed zeros, overflow and subnormals") {
+TEST_CASE("ExactFmaf rounds once: midpoints nudged by a tiny c and signed zeros and overflow and subnormals") {
   using page_module::ExactFmaf;
   // 8388609 * 3 = 25165827: an odd 25-bit product, halfway between the floats 25165826 and 25165828.
   const float a = 8388609.0f, b = 3.0f;
-  CHECK(Bits(ExactFmaf(a, b, 0.0f)) == Bits(25165828.0f));                // the tie goes to even
-  CHECK(Bits(ExactFmaf(a, b, std::ldexp(1.0f, -60))) == Bits(25165828.0f));  // just above: up
+  CHECK(Bits(ExactFmaf(a, b, 0.0f)) == Bits(25165828.0f));                    // the tie goes to even
+  CHECK(Bits(ExactFmaf(a, b, std::ldexp(1.0f, -60))) == Bits(25165828.0f));   // just above: up
   CHECK(Bits(ExactFmaf(a, b, -std::ldexp(1.0f, -60))) == Bits(25165826.0f));  // just below: down
   CHECK(Bits(ExactFmaf(-a, b, std::ldexp(1.0f, -60))) == Bits(-25165826.0f));
-  CHECK(Bits(ExactFmaf(3.0f, 5.0f, -15.0f)) == Bits(0.0f));    // exact cancellation: +0
-  CHECK(Bits(ExactFmaf(-0.0f, 1.0f, -0.0f)) == Bits(-0.0f));   // -0 + -0
+  CHECK(Bits(ExactFmaf(3.0f, 5.0f, -15.0f)) == Bits(0.0f));   // exact cancellation: +0
+  CHECK(Bits(ExactFmaf(-0.0f, 1.0f, -0.0f)) == Bits(-0.0f));  // -0 + -0
   CHECK(Bits(ExactFmaf(-0.0f, 1.0f, 0.0f)) == Bits(0.0f));
   const float max = std::numeric_limits<float>::max();
-  CHECK(std::isinf(ExactFmaf(max, 1.0f, std::ldexp(1.0f, 103))));     // half an ulp over: the tie rounds up
+  CHECK(std::isinf(ExactFmaf(max, 1.0f, std::ldexp(1.0f, 103))));  // half an ulp over: the tie rounds up
   CHECK(Bits(ExactFmaf(max, 1.0f, std::ldexp(1.0f, 102))) == Bits(max));
-  CHECK(Bits(ExactFmaf(max, 2.0f, -max)) == Bits(max));               // the product alone would overflow
+  CHECK(Bits(ExactFmaf(max, 2.0f, -max)) == Bits(max));  // the product alone would overflow
   CHECK(Bits(ExactFmaf(std::ldexp(1.0f, -75), std::ldexp(1.0f, -75), 0.0f)) == Bits(0.0f));  // half the least: even
   CHECK(Bits(ExactFmaf(std::ldexp(1.5f, -75), std::ldexp(1.0f, -75), 0.0f)) == 1u);          // 3/4 of it: up
   CHECK(std::isnan(ExactFmaf(std::numeric_limits<float>::infinity(), 0.0f, 1.0f)));
@@ -65,7 +65,8 @@ TEST_CASE("ExactFmaf tells a correctly rounded fmaf from one that rounds to doub
   CHECK(naive_wrong > 10);
 }
 
-TEST_CASE("The native fmaf equals ExactFmaf on 1.2 million random and the constructed triples, with the module's digest") {
+TEST_CASE(
+    "The native fmaf equals ExactFmaf on 1.2 million random and the constructed triples with the module's digest") {
   const page_module::FmafCheck check = page_module::CheckFmaf(1, 1200000);
   CHECK(check.mismatches == 0);
   CHECK(check.cases > 1400000);
