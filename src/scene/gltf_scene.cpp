@@ -190,9 +190,8 @@ bool LitChainDrawn(const GltfDocument& doc, std::size_t node, const std::vector<
   if (glm::cross(m[0], m[1]) == zero && glm::cross(m[1], m[2]) == zero && glm::cross(m[2], m[0]) == zero) return false;
   throw SceneError(doc.file, "nodes[" + std::to_string(node) + "]",
                    "a lit mesh whose node chain has no inverse (a scale of 0 on one axis, or a matrix "
-                   "without an inverse or out of double's range), or one that shrinks below 1e-30 (kLitScaleLimit), so "
-                   "its normals have no inverse transpose, "
-                   "or none within float's range, where the renderers take it");
+                   "without an inverse or out of double's range) or shrinks it below 1e-30, so its normals have "
+                   "no inverse transpose within float's range, where the renderers take it");
 }
 
 // Refuses an instance past the limits on what the instances keep, naming the limit passed.
