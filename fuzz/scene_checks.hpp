@@ -3,6 +3,8 @@
 // libFuzzer reports as a finding. It loads nothing itself.
 #pragma once
 
+#include "chain/matrices.hpp"
+#include "chain/normals.hpp"
 #include "scene/scene.hpp"
 
 #include <cmath>
@@ -38,6 +40,11 @@ inline void CheckScene(const twinraster::Scene& scene) {
   for (const twinraster::Instance& instance : scene.instances) {
     Check(instance.model < scene.models.size());
     Check(!instance.transform.steps || !instance.transform.steps->empty());
+    // A lit instance's normal matrix exists and is finite in float, or the draw list could not be
+    // built (an internal error, exit 4, where the loader should have named the place).
+    if (scene.lighting && scene.models[instance.model].shading != twinraster::Shading::kUnlit) {
+      Check(twinraster::NormalMatrix(twinraster::ModelMatrix(instance.transform)).has_value());
+    }
   }
   for (const twinraster::InstanceGrid& grid : scene.grids) {
     Check(grid.first <= scene.instances.size() && grid.copies() <= scene.instances.size() - grid.first);

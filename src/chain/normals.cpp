@@ -19,7 +19,14 @@ std::optional<glm::dmat3> NormalMatrix(const glm::dmat4& model_matrix) {
   const glm::dmat3 m(model_matrix);
   const double det = glm::determinant(m);
   if (det == 0 || !std::isfinite(det)) return std::nullopt;
-  return glm::transpose(glm::inverse(m));
+  const glm::dmat3 n = glm::transpose(glm::inverse(m));
+  // The renderers take it in float: an entry beyond float's range would light with infinities.
+  for (glm::length_t c = 0; c < 3; ++c) {
+    for (glm::length_t r = 0; r < 3; ++r) {
+      if (!std::isfinite(static_cast<float>(n[c][r]))) return std::nullopt;
+    }
+  }
+  return n;
 }
 
 glm::dvec3 FaceNormal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {

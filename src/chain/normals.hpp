@@ -20,7 +20,9 @@
 
 namespace twinraster {
 
-// The inverse transpose of M_Model's upper 3x3; nullopt when that is singular (a zero scale).
+// The inverse transpose of M_Model's upper 3x3; nullopt when that is singular (a zero scale), or
+// when its determinant or its entries leave the range of double, or its entries that of float (the
+// renderers' type for it): the scene loader refuses the scales that would.
 std::optional<glm::dmat3> NormalMatrix(const glm::dmat4& model_matrix);
 
 // The normal of triangle (a, b, c), (b - a) × (c - a), unnormalised: its length is twice the area.

@@ -26,6 +26,7 @@ nlohmann::ordered_json PositionJson(const std::optional<verify::CoveragePosition
 
 std::string CoverageInconclusiveReason(const verify::CoverageVerification& c) {
   if (verify::JudgementOf(c) != verify::Judgement::kInconclusive) return "";
+  if (c.work.Exceeded()) return OverBudgetReason(c.work);
   // No primitive may reach any pixel: verify's own words for the same case (verify_report.cpp).
   if (c.certainly_covered == 0 && c.uncertain == 0) {
     return "nothing is in view (no triangle may cover any pixel), so an image with nothing covered is both the "

@@ -30,8 +30,14 @@ constexpr const char* kNothingInView =
 
 }  // namespace
 
+std::string OverBudgetReason(const verify::WorkBudget& work) {
+  return "too much overdraw to judge within the budget: at least " + std::to_string(work.pixel_tests) +
+         " pixel tests, budget " + std::to_string(work.budget);
+}
+
 std::string InconclusiveReason(const verify::Verification& v) {
   if (verify::JudgementOf(v) != verify::Judgement::kInconclusive) return "";
+  if (v.work.Exceeded()) return OverBudgetReason(v.work);
   if (v.covered == 0) return kNothingInView;
   if (v.background_excluded == 0) return "an empty image would pass too";
   const double share = v.covered ? 100.0 * double(v.UncertainOther()) / double(v.covered) : 0.0;
@@ -52,7 +58,9 @@ std::string VerificationText(const verify::Verification& v) {
   s << std::fixed;
   const double percent = 100.0 * v.UncertainFraction();
   const verify::Judgement judgement = verify::JudgementOf(v);
-  if (judgement == verify::Judgement::kInconclusive && v.covered == 0) {
+  if (v.work.Exceeded()) {
+    s << "inconclusive: " << OverBudgetReason(v.work) << "; no pixel was judged";
+  } else if (judgement == verify::Judgement::kInconclusive && v.covered == 0) {
     // No count says more than that: every pixel is the background, certainly.
     s << "inconclusive: " << kNothingInView << "; all " << v.certain << " px are the background, 0 violations";
   } else if (judgement != verify::Judgement::kFailed) {

@@ -24,6 +24,10 @@ std::string VerificationText(const verify::Verification& v);
 // Why a judgement is inconclusive: "an empty image would pass too", or "62 % of the covered pixels
 // are uncertain (shared edges apart)"; empty when it is not.
 std::string InconclusiveReason(const verify::Verification& v);
+// "too much overdraw to judge within the budget: at least N pixel tests, budget M" (the estimate
+// stops counting past the budget): the reason for a judgement over budget, in verify's words and
+// verify --coverage's.
+std::string OverBudgetReason(const verify::WorkBudget& work);
 // "(12, 40..42, 200)"
 std::string RangeText(const verify::ColourRange& range);
 

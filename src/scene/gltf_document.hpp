@@ -22,9 +22,15 @@ namespace twinraster {
 // Bounds on what one file may ask for, so that a hostile file costs memory in proportion to its
 // size and finite time. Far beyond the assets engines ship.
 struct GltfLimits {
-  std::uint64_t file_bytes = std::uint64_t{256} << 20;     // the .gltf or .glb itself
-  std::uint64_t buffer_bytes = std::uint64_t{1} << 30;     // all buffers together
-  std::size_t objects = std::size_t{1} << 20;              // entries of any one top-level array
+  std::uint64_t file_bytes = std::uint64_t{256} << 20;  // the .gltf or .glb itself
+  std::uint64_t buffer_bytes = std::uint64_t{1} << 30;  // all buffers together
+  std::size_t objects = std::size_t{1} << 20;           // entries of any one top-level array
+  // Nodes and primitives cost hundreds of bytes each once read, placed and walked, from as few as
+  // 3 bytes of JSON ("{},"), so they have their own limit, checked before any is read: 6.5x the
+  // 10,000 nodes and 10,000 primitives of Khronos's NodePerformanceTest, the sample asset made to
+  // stress loaders with them (docs/scene-format.md, "A file is untrusted").
+  std::size_t nodes = std::size_t{1} << 16;
+  std::size_t primitives = std::size_t{1} << 16;           // over all meshes
   std::size_t node_depth = 256;                            // root to deepest node
   std::uint64_t drawn_triangles = std::uint64_t{1} << 26;  // over every instance of every mesh
 };

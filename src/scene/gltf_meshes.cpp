@@ -163,13 +163,18 @@ void ReadMaterials(const JsonReader& root, const GltfLimits& limits, GltfDocumen
 void ReadMeshes(const JsonReader& root, const GltfLimits& limits, GltfDocument& doc) {
   const std::optional<JsonReader> array = ReadArray(root, "meshes", limits);
   if (!array) return;
+  std::size_t total = 0;
   array->ForEachElement([&](const JsonReader& r) {
     r.ExpectObject();
     GltfMesh mesh;
     mesh.name = NameOf(r);
     const JsonReader primitives = r.Required("primitives");
     if (primitives.ExpectArray() == 0) primitives.Fail("a mesh without primitives");
-    if (primitives.ExpectArray() > limits.objects) primitives.Fail("too many primitives");
+    total += primitives.ExpectArray();
+    if (total > limits.primitives) {
+      primitives.Fail("more than " + std::to_string(limits.primitives) +
+                      " primitives over all meshes: refused (each becomes a model of its own)");
+    }
     primitives.ForEachElement([&](const JsonReader& p) { mesh.primitives.push_back(ReadPrimitive(p, doc)); });
     doc.meshes.push_back(std::move(mesh));
   });

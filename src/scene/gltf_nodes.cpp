@@ -143,6 +143,7 @@ void ReadScenes(const JsonReader& root, const GltfLimits& limits, GltfDocument& 
 void ReadNodesAndScenes(const JsonReader& root, const GltfLimits& limits, GltfDocument& doc) {
   if (const std::optional<JsonReader> nodes = ReadArray(root, "nodes", limits)) {
     const std::size_t count = nodes->ExpectArray();
+    if (count > limits.nodes) nodes->Fail("more than " + std::to_string(limits.nodes) + " nodes: refused");
     doc.nodes.reserve(count);
     nodes->ForEachElement([&](const JsonReader& r) { doc.nodes.push_back(ReadNode(r, doc, count)); });
     LinkParents(*nodes, doc);

@@ -5,8 +5,10 @@
 #include "scene/gltf_build.hpp"
 #include "scene/scene_error.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -171,23 +173,49 @@ glm::dmat4 ChainMatrix(const std::vector<TransformStep>& steps) {
 // (chain/normals.hpp), which a chain with a scale of 0 lacks. A chain that collapses every
 // triangle to a line or a point (each 2x2 minor 0, as a node scaled to 0 to hide it is) covers no
 // pixel on any device, so it is left out (false). One that only flattens is drawn by engines as
-// a plane, but not lit by the chapter's rule: refused, as a scene file's zero scale is.
+// a plane, but not lit by the chapter's rule: refused, as a scene file's zero scale is, and so is
+// one whose inverse has an entry beyond kLitScaleLimit (a scale below 1e-30, or a determinant that
+// underflows in double).
 bool LitChainDrawn(const GltfDocument& doc, std::size_t node, const std::vector<TransformStep>& steps) {
   const glm::dmat3 m(ChainMatrix(steps));
   const double det = glm::determinant(m);
-  if (det != 0 && std::isfinite(det)) return true;
+  if (det != 0 && std::isfinite(det)) {
+    const glm::dmat3 inverse = glm::inverse(m);  // the normal matrix, transposed
+    bool in_range = true;
+    for (glm::length_t c = 0; c < 3; ++c)
+      in_range = in_range && glm::all(glm::lessThanEqual(glm::abs(inverse[c]), glm::dvec3(kLitScaleLimit)));
+    if (in_range) return true;
+  }
   const glm::dvec3 zero(0.0);
   if (glm::cross(m[0], m[1]) == zero && glm::cross(m[1], m[2]) == zero && glm::cross(m[2], m[0]) == zero) return false;
   throw SceneError(doc.file, "nodes[" + std::to_string(node) + "]",
                    "a lit mesh whose node chain has no inverse (a scale of 0 on one axis, or a matrix "
-                   "without an inverse or out of double's range), so its normals have no inverse transpose");
+                   "without an inverse or out of double's range) or shrinks it below 1e-30, so its normals have "
+                   "no inverse transpose within float's range, where the renderers take it");
+}
+
+// Refuses an instance past the limits on what the instances keep, naming the limit passed.
+void CheckInstanceCosts(const GltfDocument& doc, std::size_t node, std::size_t chain_steps, std::uint64_t drawn,
+                        std::size_t instances) {
+  const GltfLimits limits;
+  std::string problem;
+  if (drawn > limits.drawn_triangles) {
+    problem = "the scene draws more than " + std::to_string(limits.drawn_triangles) + " triangles";
+  } else if (chain_steps > kMaxChainSteps) {
+    problem = "the instances' node chains, each kept from its root, hold more than " + std::to_string(kMaxChainSteps) +
+              " node matrices together";
+  } else if (instances >= kMaxInstances) {
+    problem = "the scene has more than " + std::to_string(kMaxInstances) + " instances (primitives placed by nodes)";
+  } else {
+    return;
+  }
+  throw SceneError(doc.file, "nodes[" + std::to_string(node) + "]", problem + ": refused");
 }
 
 void AddInstances(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& walk, Scene& scene) {
   ModelTable models(doc, scene);
   std::size_t chain_steps = 0, collapsed = 0;
   std::uint64_t drawn = 0;
-  const GltfLimits limits;
   for (const gltf::PlacedNode& at : walk) {
     const std::optional<std::size_t> mesh = doc.nodes[at.node].mesh;
     if (!mesh) continue;
@@ -204,11 +232,7 @@ void AddInstances(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& 
         continue;
       }
       drawn += scene.models[*model].triangles.size();
-      if (chain_steps > kMaxChainSteps || drawn > limits.drawn_triangles || scene.instances.size() >= kMaxInstances) {
-        throw SceneError(doc.file, "nodes[" + std::to_string(at.node) + "]",
-                         "the scene draws more than " + std::to_string(limits.drawn_triangles) +
-                             " triangles, or its node chains are too long to keep: refused");
-      }
+      CheckInstanceCosts(doc, at.node, chain_steps, drawn, scene.instances.size());
       Instance instance;
       instance.model = *model;
       instance.transform.steps = steps;

@@ -139,6 +139,11 @@ struct InstanceGrid {
 // each) and the draw list's F another 1 GiB: large, but bounded.
 inline constexpr std::size_t kMaxInstances = std::size_t{1} << 24;
 
+// A lit instance's M_Model may stretch or shrink space by at most this factor (and its inverse),
+// since its normal matrix, the inverse transpose, grows as 1 / scale and the renderers take it in
+// float (3.4e38 at most): the loaders refuse what lies beyond, naming where it is written.
+inline constexpr double kLitScaleLimit = 1e30;
+
 // The camera's own transform in the world (C_T, C_R); M_Camera is its inverse.
 struct Camera {
   glm::dvec3 position{0, 0, 0};

@@ -7,6 +7,7 @@
 #include "scene/model_reader.hpp"
 #include "scene/rotation.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -163,14 +164,29 @@ using ModelIndex = std::map<std::string, std::size_t, std::less<>>;
 // A lit model's normals go to world space by the normal matrix, the inverse transpose of M_Model's
 // upper 3x3, which exists unless some scale factor is 0 (rotations and translations never make
 // M_Model singular). `scale` is where the factors were written.
-void ExpectNonZeroScale(const JsonReader& scale, const glm::dvec3& factors, const Model& model) {
+//
+// Its entries grow as 1 / scale, and the renderers take it in float: so the scales multiplied
+// along the transform (`range`: the products of each step's smallest and largest factor, which
+// bound M_Model's stretch) must stay within 1e-30..1e30. Then its determinant (1e-90 at least) is
+// far from double's underflow, and its entries (1e30 at most) from float's overflow (3.4e38).
+void ExpectLitScale(const JsonReader& scale, const glm::dvec3& factors, const Model& model,
+                    std::array<double, 2>& range) {
+  const std::string lit = "a lit model (\"" + model.name + "\", " + ShadingName(model.shading) + " shading) ";
   for (glm::length_t k = 0; k < 3; ++k) {
     if (factors[k] != 0) continue;
-    const std::string problem = "a lit model (\"" + model.name + "\", " + ShadingName(model.shading) +
-                                " shading) cannot be scaled by 0: the normal matrix, the inverse transpose of M_Model, "
+    const std::string problem = lit +
+                                "cannot be scaled by 0: the normal matrix, the inverse transpose of M_Model, "
                                 "does not exist for a zero scale (use a non-zero scale, or \"shading\": \"unlit\")";
     if (scale.IsArray()) scale[static_cast<std::size_t>(k)].Fail(problem);
     scale.Fail(problem);
+  }
+  const glm::dvec3 size = glm::abs(factors);
+  range = {range[0] * std::min({size.x, size.y, size.z}), range[1] * std::max({size.x, size.y, size.z})};
+  if (!(range[0] >= 1 / kLitScaleLimit && range[1] <= kLitScaleLimit)) {
+    scale.Fail(lit +
+               "is scaled beyond 1e-30..1e30 (its scales multiplied along the transform): the normal matrix, "
+               "the inverse transpose of M_Model, is then out of the range it is computed in (use \"shading\": "
+               "\"unlit\", or a scale nearer 1)");
   }
 }
 
@@ -179,6 +195,7 @@ void ExpectNonZeroScale(const JsonReader& scale, const glm::dvec3& factors, cons
 // model if it is lit, whose scales must not be 0.
 std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonReader& list, const Model* lit_model) {
   auto steps = std::make_shared<std::vector<TransformStep>>();
+  std::array<double, 2> range{1, 1};
   list.ForEachElement([&](const JsonReader& r) {
     r.ExpectObject({"scale", "rotation", "translation"});
     const std::vector<std::string_view> keys = r.Keys();
@@ -190,7 +207,7 @@ std::shared_ptr<const std::vector<TransformStep>> ReadTransformSteps(const JsonR
     if (auto scale = r.Find("scale")) {
       step.kind = TransformStep::Kind::kScale;
       step.vector = ReadScale(*scale);
-      if (lit_model) ExpectNonZeroScale(*scale, step.vector, *lit_model);
+      if (lit_model) ExpectLitScale(*scale, step.vector, *lit_model, range);
     } else if (auto rotation = r.Find("rotation")) {
       step.kind = TransformStep::Kind::kRotation;
       step.rotation = ReadRotation(*rotation);
@@ -232,7 +249,8 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
     transform->ExpectObject({"scale", "rotation", "translation"});
     if (auto scale = transform->Find("scale")) {
       instance.transform.scale = ReadScale(*scale);
-      if (lit_model) ExpectNonZeroScale(*scale, instance.transform.scale, *lit_model);
+      std::array<double, 2> range{1, 1};
+      if (lit_model) ExpectLitScale(*scale, instance.transform.scale, *lit_model, range);
     }
     if (auto rotation = transform->Find("rotation")) {
       instance.transform.rotation = ReadRotation(*rotation);

@@ -7,6 +7,7 @@
 namespace twinraster::verify {
 
 Judgement JudgementOf(const CoverageVerification& c) {
+  if (c.work.Exceeded()) return Judgement::kInconclusive;
   if (c.Violations() > 0) return Judgement::kFailed;
   if (c.certainly_covered <= c.holes_allowed || c.certainly_uncovered == 0) return Judgement::kInconclusive;
   if (2 * c.uncertain >= c.certainly_covered + c.uncertain) return Judgement::kInconclusive;
@@ -30,6 +31,7 @@ CoverageVerification JudgeCoverage(const Verification& v, const Image& image, Rg
   c.background = options.background.value_or(scene_background);
   c.background_given = options.background.has_value();
   c.hole_tolerance_percent = options.hole_tolerance_percent;
+  c.work = v.work;
   c.pixels.resize(v.reach.size());
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {

@@ -52,13 +52,15 @@ struct CoverageVerification {
   std::uint64_t spills = 0, holes = 0;
   std::uint64_t holes_allowed = 0;                          // floor(tolerance % of certainly_covered)
   std::optional<CoveragePosition> first_spill, first_hole;  // in row order
+  WorkBudget work;                                          // the verification's: exceeded, nothing was judged
 
   // Spills, and holes when there are more than holes_allowed.
   std::uint64_t Violations() const { return spills + (HolesWithin() ? 0 : holes); }
   bool HolesWithin() const { return holes <= holes_allowed; }
 };
 
-// The judgement of the image's coverage. Failed on any violation. Inconclusive when an image with
+// The judgement of the image's coverage. Inconclusive when the verifier's work was over budget.
+// Failed on any violation. Inconclusive when an image with
 // nothing covered would pass (no pixel is certainly covered beyond the holes allowed), when one
 // covered everywhere would (no pixel is certainly uncovered), or when the uncertain pixels are at
 // least half of those some primitive may cover: such a judgement cannot tell a transform bug from a

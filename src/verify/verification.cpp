@@ -12,6 +12,7 @@ const char* JudgementName(Judgement judgement) {
 }
 
 Judgement JudgementOf(const Verification& v) {
+  if (v.work.Exceeded()) return Judgement::kInconclusive;
   if (v.violations > 0) return Judgement::kFailed;
   if (v.background_excluded == 0 || 2 * v.UncertainOther() >= v.covered) return Judgement::kInconclusive;
   return Judgement::kPassed;

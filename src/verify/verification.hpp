@@ -52,6 +52,16 @@ struct VerifyOptions {
   bool fast_paths = true;
   // Not the device's either: whether Verification::reach is filled (verify --coverage reads it).
   bool reach = false;
+  // The most pixel tests (work_estimate.hpp) the verifier makes; a scene estimated above it is
+  // judged inconclusive without a pixel judged. 2^31 (2.1e9): 13x the most any shipped scene
+  // needs (one-million-cubes, 1.7e8, judged in 3 s), so well under a minute (docs/verify.md).
+  std::uint64_t pixel_test_budget = std::uint64_t{1} << 31;
+};
+
+// The verifier's work, estimated before it starts, against the budget it was held to.
+struct WorkBudget {
+  std::uint64_t pixel_tests = 0, budget = 0;
+  bool Exceeded() const { return pixel_tests > budget; }
 };
 
 struct Verification {
@@ -68,16 +78,17 @@ struct Verification {
   std::optional<Violation> worst;
   std::optional<Violation> first;  // in row order
   std::vector<Reach> reach;        // row by row, when VerifyOptions::reach asks; else empty
+  WorkBudget work;                 // exceeded: no pixel was judged (all uncertain, reach all maybe)
 
   bool NoViolations() const { return violations == 0; }
   std::uint64_t UncertainOther() const { return uncertain - uncertain_shared_edges; }
   double UncertainFraction() const { return covered ? double(uncertain) / double(covered) : 0.0; }
 };
 
-// The judgement of the whole image (a run's verdict is run/verdict.hpp's, made from it). Failed on
-// any violation. Inconclusive when an empty image would pass as well, or when the uncertain pixels,
-// less those of shared edges, are half the covered pixels or more (a broken image then mostly
-// passes too: docs/verify.md, "Passed, failed or inconclusive").
+// The judgement of the whole image (a run's verdict is run/verdict.hpp's, made from it).
+// Inconclusive when the work was over budget (nothing was judged). Failed on any violation. Inconclusive when an empty
+// image would pass as well, or when the uncertain pixels, less those of shared edges, are half the covered pixels or
+// more (a broken image then mostly passes too: docs/verify.md, "Passed, failed or inconclusive").
 Judgement JudgementOf(const Verification& verification);
 
 }  // namespace twinraster::verify

@@ -3,6 +3,7 @@
 #include "verify/band.hpp"
 #include "verify/pass1_ring.hpp"
 #include "verify/scan.hpp"
+#include "verify/work_estimate.hpp"
 
 #include <algorithm>
 #include <future>
@@ -146,6 +147,13 @@ Verification VerifyImage(const Scene& scene, const DrawList& list, const Image& 
   result.width = image.width, result.height = image.height, result.options = options;
   result.pixels.resize(std::size_t{image.width} * image.height);
   if (options.reach) result.reach.resize(result.pixels.size());
+  result.work = {EstimatePixelTests(list, options.pixel_test_budget), options.pixel_test_budget};
+  if (result.work.Exceeded()) {  // nothing is judged, so nothing is certain
+    std::fill(result.pixels.begin(), result.pixels.end(), PixelClass::kUncertain);
+    std::fill(result.reach.begin(), result.reach.end(), Reach::kMaybe);
+    result.uncertain = result.covered = result.pixels.size();
+    return result;
+  }
   // Bands of whole 16-row tiles, one per hardware thread: each sees every primitive and judges
   // its own pixels, so they share only the read-only inputs, what each draw's light and mesh make
   // once for all (FrameShared), the draws prepared for pass 1 (Pass1Ring) and the pixel classes.

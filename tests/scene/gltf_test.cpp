@@ -357,6 +357,15 @@ TEST_CASE("glTF: a lit mesh scaled to 0 is left out with a note, and one flatten
   CHECK_THAT(Refusal(under_parent), HasSubstring("nothing to draw"));
   CHECK_THAT(Refusal(TriangleDocument({{{"mesh", 0}, {"scale", {1, 1, 0}}}})),
              HasSubstring("nodes[0]: a lit mesh whose node chain has no inverse"));
+  // Invertible in exact arithmetic, but the determinant (1e-330) underflows in double, and at
+  // 1e-40 the inverse (1e40) overflows the float the renderers take the normal matrix in: before,
+  // the second was drawn with an infinite normal matrix.
+  for (const double tiny : {1e-110, 1e-40}) {
+    INFO(tiny);
+    CHECK_THAT(Refusal(TriangleDocument({{{"mesh", 0}, {"scale", {tiny, tiny, tiny}}}})),
+               HasSubstring("nodes[0]: a lit mesh whose node chain has no inverse"));
+  }
+  CHECK(SceneOf(TriangleDocument({{{"mesh", 0}, {"scale", {1e-20, 1e-20, 1e-20}}}})).instances.size() == 1);
   Json matrix = TriangleDocument({{{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}}}});
   CHECK_THAT(Refusal(matrix), HasSubstring("nodes[0]: a lit mesh whose node chain has no inverse"));
   Json unlit = TriangleDocument({{{"mesh", 0}, {"scale", {1, 1, 0}}}});
@@ -404,6 +413,44 @@ TEST_CASE(
   for (int i = 0; i < 8; ++i) primitives.push_back({{"attributes", {{"POSITION", 2}}}});
   doc["meshes"][0]["primitives"] = primitives;
   CHECK_THAT(Refusal(doc), HasSubstring("accessor elements from 44 bytes of buffers: out of proportion, refused"));
+}
+
+TEST_CASE("glTF: nodes and primitives have their own limits, checked before any is read") {
+  // 65,537 empty nodes are 200 KB of JSON but cost hundreds of bytes each once read and walked:
+  // a 4 MB file of 10^6 of them peaked at 369 MB before this limit.
+  const std::size_t limit = GltfLimits{}.nodes;
+  CHECK(limit == 65536);
+  Json many = TriangleDocument(Json::array());
+  many["nodes"] = Json::array();
+  for (std::size_t i = 0; i <= limit; ++i) many["nodes"].push_back(Json::object());
+  CHECK_THROWS_WITH(Parse(many), HasSubstring("nodes: more than 65536 nodes: refused"));
+  many["nodes"].erase(many["nodes"].begin());  // exactly the limit: read
+  many["nodes"][0] = {{"mesh", 0}};
+  CHECK(SceneOf(many).instances.size() == 1);
+  Json primitives = TriangleDocument({{{"mesh", 0}}});
+  const Json primitive = primitives["meshes"][0]["primitives"][0];
+  primitives["meshes"][0]["primitives"] = Json::array();
+  for (std::size_t i = 0; i < 4; ++i) primitives["meshes"][0]["primitives"].push_back(primitive);
+  primitives["meshes"].push_back({{"primitives", Json::array()}});
+  for (std::size_t i = 4; i <= GltfLimits{}.primitives; ++i) primitives["meshes"][1]["primitives"].push_back(primitive);
+  CHECK_THROWS_WITH(Parse(primitives),
+                    HasSubstring("meshes[1].primitives: more than 65536 primitives over all meshes: refused"));
+}
+
+TEST_CASE("glTF: a scene past the limits on what its instances keep is refused naming the limit passed") {
+  // 255 nodes in a chain, then 1,100 leaves under its last, each with a mesh: every leaf's chain
+  // keeps 257 matrices (its 256 nodes and the mirror), 282,700 in all, past 2^18. Before, the
+  // refusal named "more than 67108864 triangles" for this file of 1,100.
+  Json nodes = Json::array();
+  for (int i = 0; i < 255; ++i) nodes.push_back(i + 1 < 255 ? Json{{"children", {i + 1}}} : Json{{"children", {}}});
+  for (int i = 0; i < 1100; ++i) {
+    nodes[254]["children"].push_back(255 + i);
+    nodes.push_back({{"mesh", 0}});
+  }
+  const std::string refusal = Refusal(TriangleDocument(nodes));
+  CHECK_THAT(refusal, HasSubstring("the instances' node chains, each kept from its root, hold more than 262144 node "
+                                   "matrices together: refused"));
+  CHECK_THAT(refusal, !HasSubstring("triangles"));
 }
 
 TEST_CASE("glTF: a URI may be data: or a path inside the model's folder, nothing else") {

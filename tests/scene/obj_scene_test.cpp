@@ -378,6 +378,41 @@ TEST_CASE("A zero scale is an error only for an instance of a lit model", "[scen
   REQUIRE(ParseError(SceneText(models, grid, kHeadlight)).where() == "instances[1].transform.scale[0]");
 }
 
+TEST_CASE("A lit model's scales must keep its normal matrix within float's range", "[scene][lighting][bad-input]") {
+  // Invertible in exact arithmetic, but 1e-110 cubed underflows double's determinant, and past
+  // 1e-30 the inverse transpose outgrows float: before, the first ended as an internal error
+  // (exit 4) and the second was drawn with infinities in its normal matrix.
+  const nlohmann::json vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const nlohmann::json models = {{"lit", {{"vertices", vertices}, {"triangles", {{0, 1, 2, "red"}}}}}};
+  const auto instance = [](nlohmann::json transform) {
+    return nlohmann::json::array({{{"model", "lit"}, {"transform", std::move(transform)}}});
+  };
+  struct Case {
+    const char* what;
+    nlohmann::json transform;
+    std::string where;
+  };
+  const std::vector<Case> cases = {
+      {"a uniform scale of 1e-110", {{"scale", 1e-110}}, "instances[0].transform.scale"},
+      {"one factor of 1e-40", {{"scale", {1, 1e-40, 1}}}, "instances[0].transform.scale"},
+      {"five steps of 1e7 (a number is at most 1e12)",
+       {{{"scale", 1e7}}, {{"scale", 1e7}}, {{"scale", 1e7}}, {{"scale", 1e7}}, {{"scale", 1e7}}},
+       "instances[0].transform[4].scale"},
+      {"two steps of 1e-20 each",
+       {{{"scale", 1e-20}}, {{"translation", {0, 0, 5}}}, {{"scale", 1e-20}}},
+       "instances[0].transform[2].scale"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what);
+    const SceneError e = ParseError(SceneText(models, instance(c.transform), kHeadlight));
+    CHECK(e.where() == c.where);
+    CHECK_THAT(e.problem(), HasSubstring("a lit model (\"lit\", flat shading) is scaled beyond 1e-30..1e30"));
+    CHECK(ParseScene(SceneText(models, instance(c.transform)), "unlit.json").instances.size() == 1);
+  }
+  // Within the range, however small: loaded.
+  CHECK(ParseScene(SceneText(models, instance({{"scale", 1e-29}}), kHeadlight), "small.json").instances.size() == 1);
+}
+
 TEST_CASE("Scenes without lighting load as before: no lighting, every model unlit, no normals", "[scene][lighting]") {
   int unlit = 0;
   for (const auto& file : test::ShippedScenes()) {

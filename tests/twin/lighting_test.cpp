@@ -144,6 +144,16 @@ TEST_CASE("The normal matrix: inverse transpose of M_Model's upper 3x3", "[chain
   Transform flat;
   flat.scale = glm::dvec3(1, 0, 1);
   CHECK_FALSE(n(flat).has_value());
+  // Invertible in exact arithmetic, but the determinant (1e-330) underflows double, and at 1e-40
+  // the inverse (1e40) is past float's range, where the renderers take it: none, as for a zero.
+  Transform tiny;
+  tiny.scale = glm::dvec3(1e-110);
+  CHECK_FALSE(n(tiny).has_value());
+  tiny.scale = glm::dvec3(1, 1e-40, 1);
+  CHECK_FALSE(n(tiny).has_value());
+  tiny.scale = glm::dvec3(1e-30);  // the smallest the loaders accept: 1e30, within float's range
+  REQUIRE(n(tiny).has_value());
+  CHECK((*n(tiny))[1][1] == Approx(1e30).epsilon(1e-15));
 }
 
 TEST_CASE("A lit scene past one LitInstance range: lavapipe draws it range by range, still == the twin",

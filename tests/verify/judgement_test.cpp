@@ -1,13 +1,21 @@
 // The judgement of a whole image: passed, failed or inconclusive; an empty image never passes; lines judged
-// by strictLines where the device reports it; a line clipped at the canvas's border or beyond it.
+// by strictLines where the device reports it; a line clipped at the canvas's border or beyond it; a
+// scene whose overdraw is over the work budget found inconclusive before any pixel is judged.
 #include "chain/draw_list.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "run/verdict.hpp"
+#include "run_report/coverage_report.hpp"
 #include "run_report/verify_report.hpp"
+#include "scene/gltf_document.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/obj_scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
+#include "support/gltf_bytes.hpp"
 #include "support/test_support.hpp"
+#include "verify/coverage_judgement.hpp"
 #include "verify/verifier.hpp"
+#include "verify/work_estimate.hpp"
 #include "verify_scenes.hpp"
 
 using namespace twinraster;
@@ -144,4 +152,61 @@ TEST_CASE("verify: a line that grazes the canvas's edge may start anywhere beyon
     INFO(run_report::VerificationText(v));
     CHECK(v.NoViolations());
   }
+}
+
+namespace {
+
+// A glTF file of `primitives` primitives that all read one accessor: a triangle over most of the
+// canvas, so the verifier's work grows as primitives x canvas while the file grows by 30 bytes a
+// primitive (an overdraw attack's shape).
+std::string StackedTriangles(int primitives) {
+  std::vector<std::uint8_t> bytes;
+  for (const float f : {-1.f, -1.f, 0.f, 1.f, -1.f, 0.f, 0.f, 1.f, 0.f}) test::AppendBytes(bytes, f);
+  std::string text = R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+    "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" +
+                     test::Base64(bytes) + R"("}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [)";
+  for (int i = 0; i < primitives; ++i) text += std::string(i ? "," : "") + R"({"attributes": {"POSITION": 0}})";
+  return text + "]}]}";
+}
+
+}  // namespace
+
+TEST_CASE("verify: a scene whose overdraw is over the work budget is inconclusive, saying so, not judged for hours",
+          "[verify]") {
+  const std::string text = StackedTriangles(40);
+  SceneChoice small;
+  small.size = CanvasSize{64, 48};
+  const Scene scene =
+      GltfScene(ParseGltf(std::vector<std::uint8_t>(text.begin(), text.end()), "stack.gltf", {}), small, "stack");
+  const DrawList list = BuildDrawList(scene);
+  const Image twin = cpu::RenderOnCpu(list);
+  // The estimate: 40 equal boxes, each within the canvas, the framed triangle's (an eighth or more).
+  const std::uint64_t estimate = verify::EstimatePixelTests(list, std::uint64_t(-1));
+  CHECK(estimate % 40 == 0);
+  CHECK(estimate / 40 <= 64u * 48);
+  CHECK(estimate / 40 >= 64u * 48 / 8);
+  CHECK(verify::EstimatePixelTests(list, 1000) <= 1000 + estimate / 40);  // stops counting past the bound
+  const verify::Verification judged = verify::VerifyImage(scene, list, twin, {8, true});
+  INFO(run_report::VerificationText(judged));
+  CHECK(verify::JudgementOf(judged) == verify::Judgement::kPassed);  // the default budget is far above
+  CHECK(judged.work.pixel_tests == estimate);
+  verify::VerifyOptions tight{8, true};
+  tight.pixel_test_budget = estimate - 1;
+  const verify::Verification over = verify::VerifyImage(scene, list, twin, tight);
+  CHECK(verify::JudgementOf(over) == verify::Judgement::kInconclusive);
+  CHECK(run::ExitCodeOf(run::VerdictOf(verify::JudgementOf(over))) == run::ExitCodeOf(run::Verdict::kInconclusive));
+  CHECK(run_report::InconclusiveReason(over) == "too much overdraw to judge within the budget: at least " +
+                                                    std::to_string(estimate) + " pixel tests, budget " +
+                                                    std::to_string(estimate - 1));
+  CHECK(run_report::VerificationText(over).rfind("inconclusive: too much overdraw", 0) == 0);
+  // An image that is plainly wrong is not judged either: nothing was, so nothing can fail.
+  CHECK(verify::JudgementOf(verify::VerifyImage(scene, list, Blank(list), tight)) == verify::Judgement::kInconclusive);
+  // --coverage reads the same verification, and says the same.
+  tight.reach = true;
+  const verify::CoverageVerification coverage =
+      verify::JudgeCoverage(verify::VerifyImage(scene, list, twin, tight), twin, list.background, {});
+  CHECK(verify::JudgementOf(coverage) == verify::Judgement::kInconclusive);
+  CHECK_THAT(run_report::CoverageText(coverage), HasSubstring("too much overdraw to judge within the budget"));
 }
