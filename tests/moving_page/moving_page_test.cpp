@@ -226,3 +226,22 @@ TEST_CASE("explain --html writes the moving page when the build has the module, 
     CHECK(page.size() <= 1'000'000);  // the chapter scene's page: aim at 1 MB or less
   }
 }
+
+TEST_CASE("explain --device chooses the page's rules as render does and is refused without --html",
+          "[moving_page][cli]") {
+  const test::TempDir dir;
+  const std::string file = Shipped("cgfs-transforms.json");
+  const std::string out = (dir / "page.html").string();
+  const test::CliResult alone = test::RunCli({"explain", file, "--device", "swiftshader"});
+  CHECK(alone.exit_code == 2);
+  CHECK_THAT(alone.err, HasSubstring("--device chooses the page's picture rules: give it with --html"));
+  const test::CliResult unknown = test::RunCli({"explain", file, "--html", out, "--device", "no-such-gpu"});
+  CHECK(unknown.exit_code == 2);
+  CHECK_FALSE(std::filesystem::exists(out));
+  const test::CliResult swiftshader = test::RunCli({"explain", file, "--html", out, "--device", "swiftshader"});
+  CHECK(swiftshader.exit_code == 0);
+  if (!page_module::ModuleBytes().empty()) {
+    const nlohmann::json rules = nlohmann::json::parse(ScriptText(ReadText(out), "twinraster-page"))["rules"];
+    CHECK(rules["arguments"][1] == 1);  // flush_denormals: the page says it cannot draw them
+  }
+}
