@@ -117,6 +117,13 @@
     module = { exports: instance.exports, memory, messageAddress: instance.exports.tr_message() };
     const refused = module.exports.tr_set_rules(...page.rules.arguments);
     rulesRefused = refused === 0 ? "" : moduleMessage() || "the module cannot follow these rules";
+    if (rulesRefused) {
+      // Never another device's picture under these rules' name: no picture, and why.
+      byId("twinraster-twin").querySelector("figcaption").textContent =
+        "No picture: the browser cannot draw by " + page.rules.text + " (" + rulesRefused + "). " +
+        "It draws by lavapipe's rules, which need no flushing of denormals: " +
+        "write the page with explain --html FILE --device lavapipe.";
+    }
   }
 
   // One state through the module. Returns null when it was refused (the module then throws
