@@ -190,14 +190,33 @@
   // ---- updates, one at a time, the last value winning ---------------------------------------
 
   let frameAsked = false;
-  let waiting = [];  // promises' resolvers of setControl calls, settled by the next update
+  let running = false;  // an update is under way (a refusal re-instantiates the module: it awaits)
+  let again = false;  // the state changed while it ran: one more update, with the last values
+  let waiting = [];  // setControl's promises, settled once the state they set is drawn
 
   function scheduleUpdate() {
+    if (running) {
+      again = true;
+      return;
+    }
     if (frameAsked) return;
     frameAsked = true;
-    requestAnimationFrame(() => {
+    requestAnimationFrame(async () => {
       frameAsked = false;
-      update().then(settle, settle);
+      running = true;
+      try {
+        await update();
+      } catch (error) {
+        setStatus("The page failed: " + error);
+      } finally {
+        running = false;
+      }
+      if (again) {
+        again = false;
+        scheduleUpdate();
+      } else {
+        settle();
+      }
     });
   }
 
@@ -277,11 +296,13 @@
     field.id = id;
     field.step = "any";
     field.value = String(value);
+    // `set` may answer the value it used instead (a bound applied): both then show that.
     const moved = (source, other) => () => {
       const number = Number(source.value);
       if (source.value === "" || !Number.isFinite(number)) return;
-      other.value = source.value;
-      set(number);
+      const used = set(number);
+      other.value = String(used === undefined ? number : used);
+      if (used !== undefined && used !== number) source.value = String(used);
       scheduleUpdate();
     };
     slider.addEventListener("input", moved(slider, field));
@@ -289,6 +310,7 @@
     slider.id = id + "-slider";
     row.append(name, slider, field);
     parent.append(row);
+    return { slider, field };
   }
 
   function choiceControl(parent, label, options, value, set) {
@@ -458,12 +480,18 @@
       const model = modelOfSceneInstance(Math.max(trace.instance, 0));
       return (page.vertex_counts[model] || 1) - 1;
     };
+    let vertex = null;
     numberControl(fieldset, "traced instance", trace.instance, { min: -1, max: sceneInstances() - 1 }, 1, (x) => {
-      trace.instance = Math.round(x);
+      trace.instance = Math.min(Math.max(Math.round(x), -1), sceneInstances() - 1);
+      // Another instance may have another model: the vertex's bound follows it.
+      vertex.slider.max = String(vertexBound());
       trace.vertex = Math.min(trace.vertex, vertexBound());
+      vertex.field.value = vertex.slider.value = String(trace.vertex);
+      return trace.instance;
     });
-    numberControl(fieldset, "traced vertex", trace.vertex, { min: -1, max: vertexBound() }, 1, (x) => {
-      trace.vertex = Math.min(Math.round(x), vertexBound());
+    vertex = numberControl(fieldset, "traced vertex", trace.vertex, { min: -1, max: vertexBound() }, 1, (x) => {
+      trace.vertex = Math.min(Math.max(Math.round(x), -1), vertexBound());
+      return trace.vertex;
     });
   }
 
@@ -473,6 +501,7 @@
       const range = { min: page.canvas_min, max: page.canvas_max };
       numberControl(fieldset, "canvas " + key, state.canvas[key], range, 1, (x) => {
         state.canvas[key] = Math.min(page.canvas_max, Math.max(page.canvas_min, Math.round(x)));
+        return state.canvas[key];
       });
     }
   }
