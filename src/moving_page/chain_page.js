@@ -115,6 +115,8 @@
     memory = instance.exports.memory;
     if (instance.exports._initialize) instance.exports._initialize();
     module = { exports: instance.exports, memory, messageAddress: instance.exports.tr_message() };
+    // The page's bound on a canvas side, and the module's own where it states one.
+    if (module.exports.tr_max_canvas) page.canvas_max = Math.min(page.canvas_max, module.exports.tr_max_canvas());
     const refused = module.exports.tr_set_rules(...page.rules.arguments);
     rulesRefused = refused === 0 ? "" : moduleMessage() || "the module cannot follow these rules";
     if (rulesRefused) {
