@@ -24,6 +24,9 @@
   const decoder = new TextDecoder();
 
   let state = JSON.parse(originalText);  // the scene file, as the controls have edited it
+  // The scene's own state goes to the module as the page carries it, byte for byte: JSON.stringify
+  // would write a -0 as 0, and the own state must be the file's to the last bit.
+  const ownText = JSON.stringify(state, null, 2);
   let trace = { instance: page.instance, vertex: page.vertex };  // -1: explain's default
   let sentText = "";  // what the module last received
   let lastExplain = "";
@@ -230,7 +233,8 @@
 
   async function update() {
     const start = performance.now();
-    const text = JSON.stringify(state, null, 2);
+    const edited = JSON.stringify(state, null, 2);
+    const text = edited === ownText ? originalText : edited;
     const result = compute(text);
     sentText = text;
     if (result.refusal !== undefined) {
