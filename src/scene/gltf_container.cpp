@@ -174,18 +174,53 @@ std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path, std::
   return bytes;
 }
 
+bool IsDataUri(std::string_view uri) { return uri.starts_with("data:"); }
+
+DataUri DecodeDataUri(std::string_view uri, std::uint64_t max_bytes, const std::string& file,
+                      const std::string& where) {
+  const std::size_t comma = uri.find(',');
+  if (comma == std::string_view::npos) throw SceneError(file, where, "a data: URI without a comma");
+  std::string_view header = uri.substr(0, comma).substr(std::string_view("data:").size());
+  DataUri out;
+  constexpr std::string_view kBase64 = ";base64";
+  out.base64 = header.ends_with(kBase64);
+  if (out.base64) header.remove_suffix(kBase64.size());
+  out.media_type = std::string(header.substr(0, header.find(';')));  // parameters (charset) aside
+  const std::string_view data = uri.substr(comma + 1);
+  if (out.base64) {
+    out.bytes = DecodeBase64(data, max_bytes, file, where);
+    return out;
+  }
+  // Percent-encoded (RFC 3986): every other byte stands for itself.
+  if (data.size() > max_bytes) {
+    throw SceneError(file, where, "the data: URI holds more than " + std::to_string(max_bytes) + " bytes");
+  }
+  out.bytes.reserve(data.size());
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if (data[i] != '%') {
+      out.bytes.push_back(static_cast<std::uint8_t>(data[i]));
+      continue;
+    }
+    const int high = i + 2 < data.size() ? HexValue(data[i + 1]) : -1,
+              low = i + 2 < data.size() ? HexValue(data[i + 2]) : -1;
+    if (high < 0 || low < 0) {
+      throw SceneError(file, where,
+                       "the data: URI's '%' at character " + std::to_string(comma + 2 + i) +
+                           " is not followed by two hexadecimal digits");
+    }
+    out.bytes.push_back(static_cast<std::uint8_t>(high * 16 + low));
+    i += 2;
+  }
+  return out;
+}
+
 std::vector<std::uint8_t> ReadGltfUri(std::string_view uri, const std::filesystem::path& directory,
                                       std::uint64_t max_bytes, const std::string& file, const std::string& where) {
-  constexpr std::string_view kData = "data:";
-  if (uri.substr(0, kData.size()) == kData) {
+  if (IsDataUri(uri)) {
     const std::size_t comma = uri.find(',');
     if (comma == std::string_view::npos) throw SceneError(file, where, "a data: URI without a comma");
-    const std::string_view header = uri.substr(0, comma);
-    constexpr std::string_view kBase64 = ";base64";
-    if (header.size() < kBase64.size() || header.substr(header.size() - kBase64.size()) != kBase64) {
-      throw SceneError(file, where, "a data: URI that is not base64");
-    }
-    return DecodeBase64(uri.substr(comma + 1), max_bytes, file, where);
+    if (!uri.substr(0, comma).ends_with(";base64")) throw SceneError(file, where, "a data: URI that is not base64");
+    return DecodeDataUri(uri, max_bytes, file, where).bytes;
   }
   const std::filesystem::path relative = RelativeUriPath(uri, file, where);
   if (directory.empty()) {

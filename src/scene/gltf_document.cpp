@@ -4,9 +4,8 @@
 #include "scene/gltf_container.hpp"
 #include "scene/gltf_parse.hpp"
 #include "scene/json_document.hpp"
+#include "scene/json_value.hpp"
 #include "scene/scene_error.hpp"
-
-#include <simdjson.h>
 
 #include <algorithm>
 #include <array>
@@ -237,9 +236,8 @@ void NoteUndrawn(const JsonReader& root, GltfDocument& doc) {
   }
 }
 
-GltfDocument ReadDocument(const simdjson::dom::element& json, std::optional<std::vector<std::uint8_t>> bin,
-                          const std::string& file_name, const std::filesystem::path& directory,
-                          const GltfLimits& limits) {
+GltfDocument ReadDocument(JsonValue json, std::optional<std::vector<std::uint8_t>> bin, const std::string& file_name,
+                          const std::filesystem::path& directory, const GltfLimits& limits) {
   GltfDocument doc;
   doc.file = file_name;
   const JsonReader root(json, doc.file);
@@ -265,14 +263,9 @@ GltfDocument ParseGltf(const std::vector<std::uint8_t>& bytes, const std::string
   GltfContainer container = SplitGltfContainer(bytes, file_name);
   // The JSON chunk of a .glb is located in the chunk: line and column count from its start.
   RejectBinaryText(container.json, file_name);
-  const simdjson::padded_string text(container.json);
-  simdjson::dom::parser parser;
-  simdjson::dom::element json;
-  if (const simdjson::error_code error = parser.parse(text).get(json); error != simdjson::SUCCESS) {
-    LocateJsonProblem(container.json, file_name);  // throws for every problem it can place
-    throw SceneError(file_name, "(file)", std::string("not JSON: ") + simdjson::error_message(error));
-  }
-  return ReadDocument(json, std::move(container.bin), file_name, directory, limits);
+  const JsonText text(container.json);
+  const ParsedJson json = ParseJson(text.view(), file_name, JsonStrictness::kGltf);
+  return ReadDocument(json.root(), std::move(container.bin), file_name, directory, limits);
 }
 
 GltfDocument ReadGltf(const std::filesystem::path& file, const GltfLimits& limits) {

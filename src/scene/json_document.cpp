@@ -82,26 +82,36 @@ std::string ProblemOf(const std::string& what) {
   return bracket == std::string::npos ? what : what.substr(bracket + 2);
 }
 
-// Builds the document as nlohmann's own DOM parser would, and also knows the JSON path of the
-// value being read and the line of every key of the objects still open.
+using Json = nlohmann::ordered_json;
+
+// Builds the document as nlohmann's own DOM parser would, fields in document order, and also
+// knows the JSON path of the value being read and the line of every key of the objects still open.
 class LocatingBuilder {
  public:
-  LocatingBuilder(const std::string& file_name, const ReadPosition& position)
-      : file_name_(file_name), position_(position) {}
+  LocatingBuilder(const std::string& file_name, const ReadPosition& position, JsonStrictness strictness)
+      : file_name_(file_name), position_(position), strictness_(strictness) {}
 
-  nlohmann::json& result() { return root_; }
-  const std::optional<SceneError>& error() const { return error_; }
+  Json& result() { return root_; }
+  // The problem to report when the parse fails: one kScene would have stopped at, if any came
+  // first, else the one that ended the parse.
+  const std::optional<SceneError>& error() const { return deferred_ ? deferred_ : error_; }
 
   bool null() { return Value(nullptr); }
   bool boolean(bool b) { return Value(b); }
-  bool number_integer(nlohmann::json::number_integer_t n) { return Value(n); }
-  bool number_unsigned(nlohmann::json::number_unsigned_t n) { return Value(n); }
-  bool number_float(nlohmann::json::number_float_t x, const std::string&) { return Value(x); }
+  bool number_integer(Json::number_integer_t n) { return Value(n); }
+  bool number_unsigned(Json::number_unsigned_t n) { return Value(n); }
+  bool number_float(Json::number_float_t x, const std::string& literal) {
+    // nlohmann reads an integer beyond 64 bits as a double; simdjson refuses it, and so does this.
+    if (literal.find_first_of(".eE") == std::string::npos) {
+      return Fail(PathOfNext(), "integer " + literal + " does not fit in 64 bits (" + LiteralPlace(literal) + ")");
+    }
+    return Value(x);
+  }
   bool string(std::string& s) { return Value(std::move(s)); }
-  bool binary(nlohmann::json::binary_t&) { return Fail(PathOfNext(), "binary values are not JSON text"); }
+  bool binary(Json::binary_t&) { return Fail(PathOfNext(), "binary values are not JSON text"); }
 
-  bool start_object(std::size_t) { return Open(nlohmann::json::object()); }
-  bool start_array(std::size_t) { return Open(nlohmann::json::array()); }
+  bool start_object(std::size_t) { return Open(Json::object()); }
+  bool start_array(std::size_t) { return Open(Json::array()); }
   bool end_object() { return Close(); }
   bool end_array() { return Close(); }
 
@@ -110,14 +120,16 @@ class LocatingBuilder {
     const std::size_t line = position_.line;
     const auto [it, inserted] = frame.key_lines.try_emplace(k, line);
     if (!inserted) {
-      return Fail(JsonPathKey(frame.path, k), "duplicate key \"" + k + "\", on line " + std::to_string(it->second) +
-                                                  " and again on line " + std::to_string(line));
+      const bool go_on =
+          Strict(JsonPathKey(frame.path, k), "duplicate key \"" + k + "\", on line " + std::to_string(it->second) +
+                                                 " and again on line " + std::to_string(line));
+      if (!go_on) return false;
     }
     frame.key = k;
     return true;
   }
 
-  bool parse_error(std::size_t byte, const std::string&, const nlohmann::json::exception& e) {
+  bool parse_error(std::size_t byte, const std::string&, const Json::exception& e) {
     const std::string problem = ProblemOf(e.what());
     if (e.id == 406) return NumberOutOfRange(e.what());
     syntax_error_byte_ = byte;
@@ -131,7 +143,7 @@ class LocatingBuilder {
 
  private:
   struct Frame {
-    nlohmann::json* container;
+    Json* container;
     std::string path;
     std::string key;  // the key whose value comes next (objects)
     std::unordered_map<std::string, std::size_t> key_lines;
@@ -142,10 +154,14 @@ class LocatingBuilder {
   bool NumberOutOfRange(const std::string& what) {
     const std::size_t open = what.find('\''), close = what.rfind('\'');
     const std::string literal = open < close ? what.substr(open + 1, close - open - 1) : std::string("number");
+    return Fail(PathOfNext(), "number " + literal + " is out of range for a double (" + LiteralPlace(literal) + ")");
+  }
+
+  // Where the number just read starts: the lexer has read the literal and one character past it.
+  std::string LiteralPlace(const std::string& literal) const {
     const std::size_t read = position_.offset - position_.line_start;
     const std::size_t column = read > literal.size() ? read - literal.size() : 1;
-    return Fail(PathOfNext(),
-                "number " + literal + " is out of range for a double (" + LineAndColumn(position_.line, column) + ")");
+    return LineAndColumn(position_.line, column);
   }
 
   std::string PathOfNext() const {
@@ -155,29 +171,36 @@ class LocatingBuilder {
                                         : JsonPathIndex(frame.path, frame.container->size());
   }
 
-  nlohmann::json* Place(nlohmann::json&& value) {
+  Json* Place(Json&& value) {
     if (frames_.empty()) {
       root_ = std::move(value);
       return &root_;
     }
     Frame& frame = frames_.back();
-    if (frame.container->is_object()) return &((*frame.container)[frame.key] = std::move(value));
+    if (frame.container->is_object()) {
+      // Appended, not looked up: key() has seen any repeat, and ordered_map's lookup is linear.
+      Json::object_t::Container& fields = *frame.container->get_ptr<Json::object_t*>();
+      fields.emplace_back(frame.key, std::move(value));
+      return &fields.back().second;
+    }
     frame.container->push_back(std::move(value));
     return &frame.container->back();
   }
 
   template <typename T>
   bool Value(T&& v) {
-    Place(nlohmann::json(std::forward<T>(v)));
+    Place(Json(std::forward<T>(v)));
     return true;
   }
 
-  bool Open(nlohmann::json&& empty) {
+  bool Open(Json&& empty) {
     if (frames_.size() >= kMaxJsonDepth) {
-      return Fail(PathOfNext(), "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      const std::string problem = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+      if (!Strict(PathOfNext(), problem)) return false;
+      if (frames_.size() >= kMaxSimdjsonDepth) return Fail(PathOfNext(), problem);
     }
     std::string path = PathOfNext();
-    nlohmann::json* container = Place(std::move(empty));
+    Json* container = Place(std::move(empty));
     frames_.push_back(Frame{container, std::move(path), {}, {}});
     return true;
   }
@@ -191,11 +214,21 @@ class LocatingBuilder {
     error_.emplace(file_name_, path.empty() ? "(top level)" : path, problem);
     return false;
   }
+
+  // A problem only kScene refuses: kScene stops; kGltf keeps the first and reads on.
+  bool Strict(const std::string& path, const std::string& problem) {
+    if (strictness_ == JsonStrictness::kScene) return Fail(path, problem);
+    if (!deferred_) deferred_.emplace(file_name_, path.empty() ? "(top level)" : path, problem);
+    return true;
+  }
+
   const std::string& file_name_;
   const ReadPosition& position_;
-  nlohmann::json root_;
+  JsonStrictness strictness_;
+  Json root_;
   std::vector<Frame> frames_;
   std::optional<SceneError> error_;
+  std::optional<SceneError> deferred_;
   std::size_t syntax_error_byte_ = 0;
   std::string syntax_problem_;
 };
@@ -240,17 +273,21 @@ std::string JsonPathIndex(const std::string& path, std::size_t index) {
   return path + "[" + std::to_string(index) + "]";
 }
 
-nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name) {
+Json ParseJsonDocument(std::string_view text, const std::string& file_name, JsonStrictness strictness) {
   RejectBinaryText(text, file_name);
+  // nlohmann would skip it, simdjson refuses it. A scene file's is skipped before this.
+  if (text.starts_with("\xEF\xBB\xBF")) {
+    throw SceneError(file_name, LineAndColumn(1, 1), "a UTF-8 byte-order mark before the JSON text, where none may be");
+  }
   // Said here, not by nlohmann, whose wording for an empty input changed between releases.
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(file_name, LineAndColumnAt(text, text.empty() ? 0 : text.size() - 1),
                      "unexpected end of input: the file holds no JSON value");
   }
   ReadPosition position;
-  LocatingBuilder builder(file_name, position);
+  LocatingBuilder builder(file_name, position, strictness);
   const CountingIterator begin(text.data(), &position), end(text.data() + text.size(), nullptr);
-  const bool ok = nlohmann::json::sax_parse(begin, end, &builder);
+  const bool ok = Json::sax_parse(begin, end, &builder);
   if (ok) return std::move(builder.result());
   if (builder.error()) throw *builder.error();
   const std::size_t byte = builder.syntax_error_byte();

@@ -1,6 +1,7 @@
 // Parses JSON text into a document in one pass, locating every problem: a syntax error by line
 // and column, a number out of range or a duplicate key by its JSON path (and lines), and a file
-// that is not text at all as such. Any problem is a SceneError.
+// that is not text at all as such. Any problem is a SceneError. It does not check what the values
+// mean: JsonReader does.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -17,8 +18,16 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 // naming the first offending byte.
 void RejectBinaryText(std::string_view text, const std::string& file_name);
 
-// `file_name` is only used in error messages.
-nlohmann::json ParseJsonDocument(std::string_view text, const std::string& file_name);
+// How strictly a text is read. kScene refuses a repeated key and nesting deeper than
+// kMaxJsonDepth. kGltf takes both as simdjson does (nesting up to kMaxSimdjsonDepth, every field of
+// a repeated key kept in order), but where simdjson refuses the text, the problem named is the one
+// kScene would name first, as the native build's second parse names it.
+enum class JsonStrictness { kScene, kGltf };
+inline constexpr std::size_t kMaxSimdjsonDepth = 1024;  // simdjson's default
+
+// `file_name` is only used in error messages. Objects keep their fields in document order.
+nlohmann::ordered_json ParseJsonDocument(std::string_view text, const std::string& file_name,
+                                         JsonStrictness strictness = JsonStrictness::kScene);
 
 // The same, for text another parser found fault with: throws the located SceneError for any
 // problem this parser knows, and returns if it finds none.

@@ -31,31 +31,31 @@ void JsonReader::Fail(const std::string& problem) const {
   throw SceneError(*file_, where.empty() ? "(top level)" : where, problem);
 }
 
-bool JsonReader::IsObject() const { return value_.is_object(); }
-bool JsonReader::IsArray() const { return value_.is_array(); }
-bool JsonReader::IsString() const { return value_.is_string(); }
-bool JsonReader::IsNumber() const { return value_.is_number(); }
+bool JsonReader::IsObject() const { return value_.kind() == JsonKind::kObject; }
+bool JsonReader::IsArray() const { return value_.kind() == JsonKind::kArray; }
+bool JsonReader::IsString() const { return value_.kind() == JsonKind::kString; }
+bool JsonReader::IsNumber() const { return value_.kind() == JsonKind::kNumber; }
 
 std::string JsonReader::TypeName() const {
-  switch (value_.type()) {
-    case simdjson::dom::element_type::OBJECT: return "an object";
-    case simdjson::dom::element_type::ARRAY: return "an array";
-    case simdjson::dom::element_type::STRING: return "a string";
-    case simdjson::dom::element_type::BOOL: return "a boolean";
-    case simdjson::dom::element_type::NULL_VALUE: return "null";
-    default: return "a number";
+  switch (value_.kind()) {
+    case JsonKind::kObject: return "an object";
+    case JsonKind::kArray: return "an array";
+    case JsonKind::kString: return "a string";
+    case JsonKind::kBoolean: return "a boolean";
+    case JsonKind::kNull: return "null";
+    case JsonKind::kNumber: break;
   }
+  return "a number";
 }
 
 void JsonReader::ExpectObject() const {
-  if (!value_.is_object()) Fail("expected an object, found " + TypeName());
+  if (!IsObject()) Fail("expected an object, found " + TypeName());
 }
 
 void JsonReader::ExpectObject(std::initializer_list<std::string_view> allowed) const {
   ExpectObject();
-  for (const auto field : Object()) {
-    const std::string_view key = field.key;
-    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+  value_.AnyField([&](std::string_view key, JsonValue) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) return false;
     std::string problem = "unknown key " + Quoted(key);
     const std::string suggestion = ClosestMatch(key, allowed);
     if (!suggestion.empty()) problem += " (did you mean " + Quoted(suggestion) + "?)";
@@ -63,13 +63,16 @@ void JsonReader::ExpectObject(std::initializer_list<std::string_view> allowed) c
     for (std::string_view k : allowed) valid += (valid.empty() ? "" : ", ") + std::string(k);
     problem += "; valid keys here: " + valid;
     Fail(problem);
-  }
+  });
 }
 
 std::vector<std::string_view> JsonReader::Keys() const {
   ExpectObject();
   std::vector<std::string_view> keys;
-  for (const auto field : Object()) keys.push_back(field.key);
+  value_.AnyField([&](std::string_view key, JsonValue) {
+    keys.push_back(key);
+    return false;
+  });
   std::sort(keys.begin(), keys.end());
   return keys;
 }
@@ -77,10 +80,12 @@ std::vector<std::string_view> JsonReader::Keys() const {
 std::optional<JsonReader> JsonReader::Find(std::string_view key) const& {
   ExpectObject();
   // The key as stored in the document, so that it outlives this call.
-  for (const auto field : Object()) {
-    if (field.key == key) return JsonReader(field.value, *this, field.key);
-  }
-  return std::nullopt;
+  std::optional<JsonReader> found;
+  value_.AnyField([&](std::string_view field_key, JsonValue value) {
+    if (field_key == key) found.emplace(JsonReader(value, *this, field_key));
+    return found.has_value();
+  });
+  return found;
 }
 
 JsonReader JsonReader::Required(std::string_view key) const& {
@@ -90,8 +95,8 @@ JsonReader JsonReader::Required(std::string_view key) const& {
 }
 
 std::size_t JsonReader::ExpectArray() const {
-  if (!value_.is_array()) Fail(std::string("expected an array, found ") + TypeName());
-  return Array().size();
+  if (!IsArray()) Fail(std::string("expected an array, found ") + TypeName());
+  return value_.size();
 }
 
 std::size_t JsonReader::ExpectArray(std::size_t size) const {
@@ -102,13 +107,11 @@ std::size_t JsonReader::ExpectArray(std::size_t size) const {
   return n;
 }
 
-JsonReader JsonReader::operator[](std::size_t index) const& {
-  return JsonReader(Array().at(index).value_unsafe(), *this, index);
-}
+JsonReader JsonReader::operator[](std::size_t index) const& { return JsonReader(value_.element(index), *this, index); }
 
 std::string JsonReader::String() const {
-  if (!value_.is_string()) Fail(std::string("expected a string, found ") + TypeName());
-  return std::string(value_.get_string().value_unsafe());
+  if (!IsString()) Fail(std::string("expected a string, found ") + TypeName());
+  return std::string(value_.string());
 }
 
 std::string JsonReader::LowercaseString() const {
@@ -119,13 +122,13 @@ std::string JsonReader::LowercaseString() const {
 }
 
 bool JsonReader::Boolean() const {
-  if (!value_.is_bool()) Fail(std::string("expected true or false, found ") + TypeName());
-  return value_.get_bool().value_unsafe();
+  if (value_.kind() != JsonKind::kBoolean) Fail(std::string("expected true or false, found ") + TypeName());
+  return value_.boolean();
 }
 
 double JsonReader::Number() const {
-  if (!value_.is_number()) Fail(std::string("expected a number, found ") + TypeName());
-  const double x = value_.get_double().value_unsafe();
+  if (!IsNumber()) Fail(std::string("expected a number, found ") + TypeName());
+  const double x = value_.number();
   if (!std::isfinite(x)) Fail("number is not finite");
   if (std::abs(x) > kMaxMagnitude) {
     std::ostringstream s;
@@ -152,8 +155,8 @@ double JsonReader::Positive() const {
 
 std::int64_t JsonReader::Integer(std::int64_t min, std::int64_t max) const {
   const auto range = [&] { return " in " + std::to_string(min) + ".." + std::to_string(max); };
-  if (!value_.is_number()) Fail("expected an integer" + range() + ", found " + TypeName());
-  const double x = value_.get_double().value_unsafe();
+  if (!IsNumber()) Fail("expected an integer" + range() + ", found " + TypeName());
+  const double x = value_.number();
   const bool integral = std::isfinite(x) && x == std::floor(x);
   if (!integral || x < static_cast<double>(min) || x > static_cast<double>(max)) {
     std::ostringstream s;
@@ -164,7 +167,7 @@ std::int64_t JsonReader::Integer(std::int64_t min, std::int64_t max) const {
 }
 
 glm::dvec3 JsonReader::Vec3() const {
-  if (!value_.is_array()) Fail(std::string("expected [x, y, z], found ") + TypeName());
+  if (!IsArray()) Fail(std::string("expected [x, y, z], found ") + TypeName());
   ExpectArray(3);
   return glm::dvec3((*this)[0].Number(), (*this)[1].Number(), (*this)[2].Number());
 }

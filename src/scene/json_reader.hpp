@@ -1,13 +1,14 @@
-// Checked reading of a parsed JSON document (simdjson's DOM): every accessor knows its JSON path,
-// so any problem becomes a SceneError naming the file, the path and what was expected. Paths are
-// built only when something fails: a reader refers to the reader it came from.
+// Checked reading of a parsed JSON document (through json_value's seam, on either DOM): every
+// accessor knows its JSON path, so any problem becomes a SceneError naming the file, the path and
+// what was expected. Paths are built only when something fails: a reader refers to the reader it
+// came from. It does not parse: ParseJson does.
 #pragma once
 
 #include "base/closest_match.hpp"
+#include "scene/json_value.hpp"
 #include "scene/scene_error.hpp"
 
 #include <glm/vec3.hpp>
-#include <simdjson.h>
 
 #include <cstdint>
 #include <initializer_list>
@@ -29,9 +30,10 @@ inline constexpr double kMinPositive = 1e-9;
 class JsonReader {
  public:
   // The document's root; `file` must outlive every reader made from this one.
-  JsonReader(simdjson::dom::element value, const std::string& file) : value_(value), file_(&file) {}
+  JsonReader(JsonValue value, const std::string& file) : value_(value), file_(&file) {}
 
   std::string path() const;  // e.g. "instances[1].transform.scale"; "" at the root
+  const std::string& file() const { return *file_; }
 
   [[noreturn]] void Fail(const std::string& problem) const;
 
@@ -62,10 +64,10 @@ class JsonReader {
   void ForEachElement(Fn&& fn) const {
     ExpectArray();
     std::size_t index = 0;
-    for (const simdjson::dom::element element : Array()) {
+    value_.ForEachElement([&](JsonValue element) {
       const JsonReader child(element, *this, index++);
       fn(child);
-    }
+    });
   }
 
   std::string String() const;
@@ -78,16 +80,12 @@ class JsonReader {
   glm::dvec3 Vec3() const;
 
  private:
-  // Copies: iterating a temporary simdjson_result's value would dangle. Callers checked the type.
-  simdjson::dom::object Object() const { return value_.get_object().value_unsafe(); }
-  simdjson::dom::array Array() const { return value_.get_array().value_unsafe(); }
-
-  JsonReader(simdjson::dom::element value, const JsonReader& parent, std::string_view key)
+  JsonReader(JsonValue value, const JsonReader& parent, std::string_view key)
       : value_(value), file_(parent.file_), parent_(&parent), key_(key) {}
-  JsonReader(simdjson::dom::element value, const JsonReader& parent, std::size_t index)
+  JsonReader(JsonValue value, const JsonReader& parent, std::size_t index)
       : value_(value), file_(parent.file_), parent_(&parent), index_(index) {}
 
-  simdjson::dom::element value_;
+  JsonValue value_;
   const std::string* file_;
   const JsonReader* parent_ = nullptr;
   std::string_view key_;               // this value's key in its parent object, or

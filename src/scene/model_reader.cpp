@@ -1,6 +1,7 @@
 #include "scene/model_reader.hpp"
 
 #include "base/counted.hpp"
+#include "scene/gltf_container.hpp"
 #include "scene/gltf_document.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/obj_file.hpp"
@@ -124,17 +125,48 @@ std::map<std::string, Rgb8, std::less<>> ReadMaterials(const JsonReader& r, cons
   return colours;
 }
 
-Model ReadObjModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory) {
-  const JsonReader obj = r.Required("obj");
-  const std::string written = obj.String();
-  if (written.empty()) obj.Fail("expected the path of an OBJ file, found \"\"");
+// A model's "obj" or "gltf" written as a data: URI: its bytes, refused unless its media type is
+// one of `media_types`. Problems in the bytes are then named as "FILE (PATH, a data: URI)".
+std::vector<std::uint8_t> ReadDataUri(const JsonReader& r, const std::string& written, std::uint64_t max_bytes,
+                                      std::initializer_list<std::string_view> media_types) {
+  DataUri uri = DecodeDataUri(written, max_bytes, r.file(), r.path());
+  if (std::find(media_types.begin(), media_types.end(), uri.media_type) == media_types.end()) {
+    std::string valid;
+    for (const std::string_view type : media_types) {
+      if (!type.empty()) valid += std::string(valid.empty() ? "" : ", ") + std::string(type);
+    }
+    r.Fail("a data: URI of media type \"" + uri.media_type + "\"; use one of " + valid + " (or none)");
+  }
+  return std::move(uri.bytes);
+}
+
+std::string DataUriName(const JsonReader& r) { return r.file() + " (" + r.path() + ", a data: URI)"; }
+
+// What a model's source says of a data: URI: not the whole of it.
+std::string DataUriSource(const std::string& written) {
+  return written.substr(0, written.find(',')) + " (" + Counted(written.size(), "character") + ")";
+}
+
+ObjMesh ReadObjMesh(const JsonReader& obj, const std::string& written, const std::filesystem::path& directory) {
+  if (IsDataUri(written)) {
+    const std::vector<std::uint8_t> bytes =
+        ReadDataUri(obj, written, kMaxObjBytes, {"", "text/plain", "model/obj", "application/octet-stream"});
+    return ParseObj(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), DataUriName(obj));
+  }
   const std::filesystem::path file = directory / std::filesystem::path(written);
   // Named as the scene wrote it, and where that led from the scene's directory.
   if (const std::optional<std::string> problem = ObjFileProblem(file)) {
     const std::string looked = file.string() == written ? "" : " (looked for " + file.string() + ")";
     obj.Fail("OBJ file \"" + written + "\"" + looked + ": " + *problem);
   }
-  ObjMesh mesh = ReadObjFile(file);  // its errors name the file as opened, and the line
+  return ReadObjFile(file);  // its errors name the file as opened, and the line
+}
+
+Model ReadObjModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory) {
+  const JsonReader obj = r.Required("obj");
+  const std::string written = obj.String();
+  if (written.empty()) obj.Fail("expected the path of an OBJ file or a data: URI, found \"\"");
+  ObjMesh mesh = ReadObjMesh(obj, written, directory);
   const std::optional<JsonReader> colour_reader = r.Find("colour");
   const Rgb8 colour = colour_reader ? ReadColour(*colour_reader) : kDefaultObjColour;
   std::map<std::string, Rgb8, std::less<>> material_colours;
@@ -142,7 +174,7 @@ Model ReadObjModel(const JsonReader& r, const std::string& name, const std::file
     material_colours = ReadMaterials(*materials, mesh.materials);
   Model model = ObjModel(std::move(mesh), name, colour, material_colours);
   model.vertex_colours = ReadVertexColours(r, model.vertices.size());
-  model.source = written;
+  model.source = IsDataUri(written) ? DataUriSource(written) : written;
   return model;
 }
 
@@ -185,7 +217,17 @@ Model ReadGltfModel(const JsonReader& r, const std::string& name, const std::fil
   }
   const JsonReader gltf = r.Required("gltf");
   const std::string written = gltf.String();
-  if (written.empty()) gltf.Fail("expected the path of a .gltf or .glb file, found \"\"");
+  if (written.empty()) gltf.Fail("expected the path of a .gltf or .glb file or a data: URI, found \"\"");
+  if (IsDataUri(written)) {
+    const GltfLimits limits;
+    const std::vector<std::uint8_t> bytes =
+        ReadDataUri(gltf, written, limits.file_bytes,
+                    {"", "model/gltf+json", "model/gltf-binary", "application/json", "application/octet-stream"});
+    // No directory: a glTF file carried inline reads no file either (its buffers are data: URIs).
+    Model model = GltfModel(ParseGltf(bytes, DataUriName(gltf), {}, limits), name, lit);
+    model.source = DataUriSource(written);
+    return model;
+  }
   const std::filesystem::path file = directory / std::filesystem::path(written);
   Model model = GltfModel(ReadGltf(file), name, lit);  // its errors name the file as opened
   model.source = written;

@@ -2,12 +2,12 @@
 
 #include "scene/json_document.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/json_value.hpp"
 #include "scene/lighting_reader.hpp"
 #include "scene/model_reader.hpp"
 #include "scene/rotation.hpp"
 
 #include <glm/geometric.hpp>
-#include <simdjson.h>
 
 #include <algorithm>
 #include <array>
@@ -264,66 +264,16 @@ void AppendGridCopies(const Instance& instance, const InstanceGrid& grid, std::v
   }
 }
 
-// simdjson reads a well-formed scene fast but says little about where a problem is. Whatever it
-// rejects, and what it does not look for (duplicate keys, nesting deeper than kMaxJsonDepth), is
-// parsed again by json_document's locating parser, whose message names the line or the path.
-[[noreturn]] void ExplainBadJson(std::string_view text, const std::string& file_name, const std::string& problem) {
-  LocateJsonProblem(text, file_name);  // throws for every problem it knows
-  throw SceneError(file_name, "(file)", problem);
-}
-
-// True when some object repeats a key or the nesting is deep enough that the locating parser
-// should look (it refuses kMaxJsonDepth levels; this errs on the side of looking). Depth first,
-// one level of recursion per level of nesting (so at most kMaxJsonDepth), instead of a stack
-// that would hold all of a million instances at once; keys[depth] is reused for every object at
-// that depth.
-bool NeedsLocatingParser(simdjson::dom::element element, std::size_t depth,
-                         std::vector<std::vector<std::string_view>>& keys) {
-  const bool nested = element.is_object() || element.is_array();
-  if (!nested) return false;
-  if (depth + 2 >= kMaxJsonDepth) return true;
-  if (element.is_array()) {
-    const simdjson::dom::array array = element.get_array().value_unsafe();
-    for (const simdjson::dom::element child : array) {
-      if (NeedsLocatingParser(child, depth + 1, keys)) return true;
-    }
-    return false;
-  }
-  if (keys.size() <= depth) keys.resize(depth + 1);
-  const simdjson::dom::object object = element.get_object().value_unsafe();
-  keys[depth].clear();
-  for (const auto field : object) keys[depth].push_back(field.key);
-  std::sort(keys[depth].begin(), keys[depth].end());
-  if (std::adjacent_find(keys[depth].begin(), keys[depth].end()) != keys[depth].end()) return true;
-  for (const auto field : object) {
-    if (NeedsLocatingParser(field.value, depth + 1, keys)) return true;
-  }
-  return false;
-}
-
-bool NeedsLocatingParser(simdjson::dom::element root) {
-  std::vector<std::vector<std::string_view>> keys;
-  return NeedsLocatingParser(root, 1, keys);
-}
-
 // `directory`: where the paths of OBJ files start.
-Scene ReadScene(const simdjson::padded_string& text, const std::string& file_name,
-                const std::filesystem::path& directory) {
+Scene ReadScene(const JsonText& text, const std::string& file_name, const std::filesystem::path& directory) {
   // A UTF-8 byte-order mark, as Notepad saves it, is skipped: simdjson refuses it with a message
   // that names no place. Lines and columns are then counted as an editor shows them, without it.
-  const std::size_t bom = std::string_view(text.data(), text.size()).starts_with(kUtf8ByteOrderMark) ? 3 : 0;
-  const std::string_view view(text.data() + bom, text.size() - bom);
+  std::string_view view = text.view();
+  if (view.starts_with(kUtf8ByteOrderMark)) view.remove_prefix(kUtf8ByteOrderMark.size());
   RejectBinaryText(view, file_name);
-  simdjson::dom::parser parser;
-  simdjson::dom::element document;
-  // The padding past the text's end is still there, so simdjson need not copy it.
-  if (const simdjson::error_code error = parser.parse(view.data(), view.size(), false).get(document);
-      error != simdjson::SUCCESS) {
-    ExplainBadJson(view, file_name, simdjson::error_message(error));
-  }
-  if (NeedsLocatingParser(document)) LocateJsonProblem(view, file_name);  // throws if it was a real problem
+  const ParsedJson document = ParseJson(view, file_name, JsonStrictness::kScene);
 
-  const JsonReader root(document, file_name);
+  const JsonReader root(document.root(), file_name);
   root.ExpectObject(
       {"comment", "canvas", "viewport", "depth", "camera", "models", "instances", "wireframe", "lighting"});
   if (auto comment = root.Find("comment")) comment->String();
@@ -378,7 +328,7 @@ Scene ReadScene(const simdjson::padded_string& text, const std::string& file_nam
 }  // namespace
 
 Scene ParseScene(std::string_view json_text, const std::string& file_name, const std::filesystem::path& directory) {
-  return ReadScene(simdjson::padded_string(json_text), file_name, directory);
+  return ReadScene(JsonText(json_text), file_name, directory);
 }
 
 Scene LoadScene(const std::filesystem::path& file) {
@@ -392,10 +342,10 @@ Scene LoadScene(const std::filesystem::path& file) {
   if (std::filesystem::file_size(file, ec) > kMaxSceneBytes) {
     throw SceneError(file.string(), "(file)", "larger than 256 MiB: not a scene file");
   }
-  simdjson::padded_string text;
-  if (const simdjson::error_code error = simdjson::padded_string::load(file.string()).get(text);
-      error != simdjson::SUCCESS) {
-    throw SceneError(file.string(), "(file)", std::string("cannot read the file: ") + simdjson::error_message(error));
+  JsonText text(static_cast<std::size_t>(std::filesystem::file_size(file, ec)));
+  std::ifstream in(file, std::ios::binary);
+  if (ec || !in.read(text.data(), static_cast<std::streamsize>(text.view().size()))) {
+    throw SceneError(file.string(), "(file)", "cannot read the file");
   }
   return ReadScene(text, file.string(), file.parent_path());
 }
