@@ -482,9 +482,11 @@
 
   function traceControls(parent) {
     const fieldset = group(parent, "Traced vertex (-1: explain's choice, the first vertex in view)");
+    // Without a traced instance, explain traces vertex V of every instance it shows (the first
+    // page.explained_instances): V must be one each of their models has.
     const vertexBound = () => {
-      const model = modelOfSceneInstance(Math.max(trace.instance, 0));
-      return (page.vertex_counts[model] || 1) - 1;
+      const shown = trace.instance >= 0 ? [trace.instance] : [...Array(Math.min(page.explained_instances, sceneInstances())).keys()];
+      return Math.min(...shown.map((i) => page.vertex_counts[modelOfSceneInstance(i)] || 1)) - 1;
     };
     let vertex = null;
     numberControl(fieldset, "traced instance", trace.instance, { min: -1, max: sceneInstances() - 1 }, 1, (x) => {

@@ -23,13 +23,19 @@ nlohmann::ordered_json RulesJson(const twin_rules::TwinRules& twin) {
 }
 
 // What the script needs besides the scene: the trace asked for (-1: explain's default), each
-// model's vertex count (the bound of the traced vertex) and the canvas sizes offered.
+// model's vertex count and how many instances explain shows untold (the traced vertex's bounds)
+// and the canvas sizes offered.
 nlohmann::ordered_json PageJson(const Explanation& e, const MovingPageInput& in) {
   nlohmann::ordered_json vertex_counts = nlohmann::ordered_json::object();
   for (const Model& model : e.scene->models) vertex_counts[model.name] = model.vertices.size();
   const auto index = [](const std::optional<std::size_t>& i) { return i ? static_cast<long long>(*i) : -1LL; };
-  return {{"name", in.scene_name},          {"instance", index(in.instance)}, {"vertex", index(in.vertex)},
-          {"vertex_counts", vertex_counts}, {"canvas_min", kMinCanvasSide},   {"canvas_max", kMaxCanvasSide},
+  return {{"name", in.scene_name},
+          {"instance", index(in.instance)},
+          {"vertex", index(in.vertex)},
+          {"vertex_counts", vertex_counts},
+          {"canvas_min", kMinCanvasSide},
+          {"canvas_max", kMaxCanvasSide},
+          {"explained_instances", kExplainedInstances},
           {"rules", RulesJson(in.twin)}};
 }
 

@@ -158,7 +158,8 @@ def controls(driver):
     return driver.execute_script("""
       return Array.from(document.querySelectorAll('#twinraster-controls input, #twinraster-controls select')).map(c => {
         const label = document.querySelector('label[for="' + c.id + '"]');
-        return {id: c.id, type: c.tagName === 'SELECT' ? 'select' : c.type, min: c.min, max: c.max,
+        const range = document.getElementById(c.id + '-slider') || c;  // a number field's bounds are its slider's
+        return {id: c.id, type: c.tagName === 'SELECT' ? 'select' : c.type, min: range.min, max: range.max,
                 label: label ? label.textContent : c.getAttribute('aria-label'), tab: c.tabIndex,
                 group: c.closest('fieldset').querySelector('legend').textContent,
                 options: c.tagName === 'SELECT' ? Array.from(c.options, o => o.value) : null};
@@ -216,7 +217,9 @@ def pick_value(rng, control):
     if control["label"].startswith(("traced", "canvas")):
         high = min(high, 640) if control["label"].startswith("canvas") else high
         return rng.randint(int(low), int(high))
-    return round(rng.uniform(low, high), rng.choice([0, 2, 3, 6]))
+    # A value as typed (a few digits) or as dragged; within the slider's range, which stays
+    # inside the scene's domain (a positive d, near and far).
+    return min(high, max(low, round(rng.uniform(low, high), rng.choice([1, 2, 3, 6]))))
 
 
 CATEGORIES = ("Camera", "instance to move", "Instance", "viewport", "depth", "projection", "Traced", "Canvas")
@@ -257,7 +260,9 @@ def drive(a, driver, name, states):
             target += "-slider"  # as a drag would: the slider's own steps
         set_control(driver, target, pick_value(rng, control))
         seen.add(category)
-        if page_state(driver)["status"].startswith("Refused"):
+        status = page_state(driver)["status"]
+        if status.startswith("Refused"):
+            print("%s state %d (%s): %s" % (name, step, control["label"], status))
             refused += 1
             continue
         times.append(compare_natively(a, driver, "%s state %d (%s)" % (name, step, control["label"]),
