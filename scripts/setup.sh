@@ -22,11 +22,12 @@ packages=(
   libcli11-dev                   # the command line
   libstb-dev                     # bench: stb_image_write, a PNG encoder to compare against
   time                           # bench --loaders: /usr/bin/time, the peak memory of whole processes
+  clang lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32  # the browser module explain --html embeds (wasm32-wasi)
 )
 test_packages=(
   vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
   catch2                         # unit tests (Catch2 2 on Debian 12, 3 on Debian 13)
-  clang libclang-rt-dev          # the second compiler; ASan/UBSan/libFuzzer runtimes (sanitize preset)
+  libclang-rt-dev                # ASan/UBSan/libFuzzer runtimes for clang, the second compiler (sanitize preset)
   llvm                           # llvm-symbolizer: file:line in sanitizer and fuzzer reports
   python3 python3-jsonschema     # tests validate every --json output against its schema in docs/
   chromium chromium-driver python3-selenium  # tests open every kind of page in headless Chromium

@@ -7,14 +7,13 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <thread>
 
 namespace twinraster::cpu {
 
 // options.threads as the user gave it: 0 = one per hardware thread.
 inline unsigned ResolveThreadCount(unsigned requested) {
   if (requested != 0) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1u, HardwareThreads());
 }
 
 template <class Fn>

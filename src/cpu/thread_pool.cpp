@@ -127,6 +127,8 @@ class ThreadPool {
 KeepPoolSpinning::KeepPoolSpinning() { g_spinning_holds.fetch_add(1, std::memory_order_relaxed); }
 KeepPoolSpinning::~KeepPoolSpinning() { g_spinning_holds.fetch_sub(1, std::memory_order_relaxed); }
 
+unsigned HardwareThreads() { return std::thread::hardware_concurrency(); }
+
 void RunParts(unsigned parts, const std::function<void(unsigned)>& fn) {
   if (parts == 0) return;
   if (parts == 1 || t_inside_parts) {

@@ -7,6 +7,9 @@
 
 namespace twinraster::cpu {
 
+// The threads the hardware runs at once (0 if unknown); 1 in a build without threads.
+unsigned HardwareThreads();
+
 // Runs fn(part) once for every part in [0, parts) and returns when all have finished. The calling
 // thread takes parts too; the pool grows to parts - 1 workers if it has fewer. Each part must
 // write only its own outputs, so that results never depend on which thread ran which part. Calls

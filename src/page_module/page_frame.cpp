@@ -5,14 +5,32 @@
 #include "cpu/cpu_renderer.hpp"
 #include "explain_report/chain_page.hpp"
 #include "explain_report/explain_json.hpp"
+#include "scene/scene_error.hpp"
 #include "scene/scene_loader.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 namespace twinraster::page_module {
+
+namespace {
+
+// A canvas the caller cannot hold (the browser's module: its pictures must fit a 32-bit memory)
+// is refused before anything is drawn.
+void CheckCanvas(const Scene& scene, std::uint32_t max_canvas) {
+  if (max_canvas == 0 || (scene.canvas.width <= max_canvas && scene.canvas.height <= max_canvas)) return;
+  throw SceneError(std::string(kPageSceneName), "canvas",
+                   std::to_string(scene.canvas.width) + " x " + std::to_string(scene.canvas.height) +
+                       " is larger than this page draws (" + std::to_string(max_canvas) + " x " +
+                       std::to_string(max_canvas) + ")");
+}
+
+}  // namespace
 
 PageFrame ComputePageFrame(const PageRequest& request) {
   const Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
+  CheckCanvas(scene, request.max_canvas);
   PageFrame frame;
   // The panels draw every vertex's edges; the numbers trace every vertex unless one is asked for,
   // as explain --html and explain --json do.
@@ -21,11 +39,16 @@ PageFrame ComputePageFrame(const PageRequest& request) {
   const ExplainVertices json_vertices = request.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll;
   frame.explain_json =
       explain_report::ExplainJson(Explain(scene, {request.instance, request.vertex, json_vertices})).dump(2);
+  frame.draw_list = BuildDrawList(scene);
+  frame.picture = DrawPicture(frame.draw_list, request.rules);
+  return frame;
+}
+
+Image DrawPicture(const DrawList& list, const cpu::RasterRules& rules) {
   cpu::CpuOptions options;
   options.threads = 1;
-  options.rules = request.rules;
-  frame.picture = cpu::RenderOnCpu(BuildDrawList(scene), options);
-  return frame;
+  options.rules = rules;
+  return cpu::RenderOnCpu(list, options);
 }
 
 }  // namespace twinraster::page_module

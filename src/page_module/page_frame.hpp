@@ -5,10 +5,12 @@
 // chooses no rules: the page carries the rules the native run chose.
 #pragma once
 
+#include "chain/draw_list.hpp"
 #include "cpu/raster_rules.hpp"
 #include "image/image.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,19 +22,24 @@ struct PageRequest {
   cpu::RasterRules rules;               // whose arithmetic the picture copies
   std::optional<std::size_t> instance;  // the traced instance (explain --instance)
   std::optional<std::size_t> vertex;    // the traced vertex (explain --vertex)
+  std::uint32_t max_canvas = 0;         // the largest canvas side the caller draws (0: any)
 };
 
 struct PageFrame {
   std::string panels_html;   // explain_report::ChainPanelsHtml: the page's figures
   std::string explain_json;  // explain --json's object, as the command prints it
   Image picture;             // the twin's image on one thread, as render --backend cpu draws it
+  DrawList draw_list;        // what the picture was drawn from, for drawing it again (DrawPicture)
 };
 
 // The name a scene read from the page takes in messages and in Scene::name.
 inline constexpr std::string_view kPageSceneName = "page";
 
 // Throws the loader's SceneError for a scene it refuses, and UsageError for an instance or vertex
-// the scene does not have, with explain's words.
+// the scene does not have, with explain's words; SceneError for a canvas larger than max_canvas.
 PageFrame ComputePageFrame(const PageRequest& request);
+
+// The twin's picture of a draw list, on one thread: the page's picture, and nothing else.
+Image DrawPicture(const DrawList& list, const cpu::RasterRules& rules);
 
 }  // namespace twinraster::page_module

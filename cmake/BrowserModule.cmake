@@ -1,0 +1,87 @@
+# The browser module in the native build: whether clang can build it here (tried at configure
+# time), the module built from the same sources by a second CMake build with
+# cmake/toolchains/wasm32-wasi.cmake (an ExternalProject in build/browser_module/), and its bytes
+# embedded in twinraster_page_module_blob (src/page_module/module_blob.hpp). Without the toolchain,
+# the blob has no bytes and one line saying why. TWINRASTER_BROWSER_MODULE: AUTO, ON (fail the
+# configure without the toolchain), OFF. Included by src/page_module/CMakeLists.txt.
+set(module_packages "Debian's clang, lld, wasi-libc, libc++-dev-wasm32 and libclang-rt-dev-wasm32")
+set(module_blob_cpp ${CMAKE_CURRENT_BINARY_DIR}/generated/module_blob.cpp)
+
+# Links a small wasm32-wasi C++ reactor with what the module needs: libc++'s strings, wasi-libc,
+# and compiler-rt's builtins (a 128-bit multiply). Sets the variable named by `out` to "" on
+# success, else to the reason.
+function(twinraster_try_wasm_toolchain out)
+  if(NOT TWINRASTER_BROWSER_MODULE_CXX)
+    set(${out} "clang++ was not found" PARENT_SCOPE)
+    return()
+  endif()
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/wasm_toolchain_check)
+  file(WRITE ${dir}/check.cpp [=[
+#include <string>
+extern "C" __attribute__((export_name("check"))) unsigned check(unsigned long long a) {
+  const unsigned __int128 square = static_cast<unsigned __int128>(a) * a;
+  return static_cast<unsigned>(std::to_string(a).size() + static_cast<unsigned>(square >> 64));
+}
+]=])
+  execute_process(COMMAND ${TWINRASTER_BROWSER_MODULE_CXX} --target=wasm32-wasi -std=c++20 -O1 -mexec-model=reactor
+                          ${dir}/check.cpp -o ${dir}/check.wasm
+                  RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(result EQUAL 0)
+    set(${out} "" PARENT_SCOPE)
+  else()
+    string(REGEX MATCH "[^\n]*error[^\n]*" first_error "${output}")
+    set(${out} "${TWINRASTER_BROWSER_MODULE_CXX} could not link a wasm32-wasi C++ module (${first_error})" PARENT_SCOPE)
+  endif()
+endfunction()
+
+set(module_reason "")
+if(TWINRASTER_BROWSER_MODULE STREQUAL "OFF")
+  set(module_reason "this build has no browser module: it was configured with -DTWINRASTER_BROWSER_MODULE=OFF")
+else()
+  find_program(TWINRASTER_BROWSER_MODULE_CXX clang++)
+  twinraster_try_wasm_toolchain(problem)
+  if(problem)
+    set(module_reason "this build has no browser module: clang's wasm32-wasi target (${module_packages}) was not found when it was configured")
+    if(TWINRASTER_BROWSER_MODULE STREQUAL "ON")
+      message(FATAL_ERROR "TWINRASTER_BROWSER_MODULE=ON, but ${problem}: install ${module_packages}")
+    endif()
+    message(STATUS "Browser module: none (${problem}); install ${module_packages} to embed it")
+  endif()
+endif()
+
+add_library(twinraster_page_module_blob STATIC ${module_blob_cpp})
+twinraster_stage_library(twinraster_page_module_blob)
+
+if(module_reason)
+  unset(TWINRASTER_BROWSER_MODULE_WASM CACHE)  # tests/page_module/ runs the browser's cases only with a module
+  execute_process(COMMAND ${CMAKE_COMMAND} -DMODULE= "-DREASON=${module_reason}" -DOUTPUT=${module_blob_cpp}
+                          -P ${PROJECT_SOURCE_DIR}/cmake/module_blob.cmake COMMAND_ERROR_IS_FATAL ANY)
+  return()
+endif()
+
+message(STATUS "Browser module: built with ${TWINRASTER_BROWSER_MODULE_CXX} for wasm32-wasi and embedded")
+include(ExternalProject)
+set(TWINRASTER_BROWSER_MODULE_DIR ${PROJECT_BINARY_DIR}/browser_module CACHE INTERNAL "")
+set(TWINRASTER_BROWSER_MODULE_WASM ${TWINRASTER_BROWSER_MODULE_DIR}/src/page_module/twinraster_page.wasm
+    CACHE INTERNAL "The browser module the native build embeds")
+set(launcher "")
+if(CMAKE_CXX_COMPILER_LAUNCHER)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER})
+endif()
+# Built at every build (the module's sources are most of the project's), which costs a make's
+# look at its files when nothing changed; by the same make as the native build (its jobs).
+ExternalProject_Add(twinraster_browser_module
+  SOURCE_DIR ${PROJECT_SOURCE_DIR}
+  BINARY_DIR ${TWINRASTER_BROWSER_MODULE_DIR}
+  CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/toolchains/wasm32-wasi.cmake
+             -DCMAKE_BUILD_TYPE=Release
+             -DTWINRASTER_BROWSER_MODULE_BUILD=ON -DTWINRASTER_WERROR=${TWINRASTER_WERROR} ${launcher}
+  INSTALL_COMMAND ""
+  BUILD_ALWAYS ON
+  BUILD_BYPRODUCTS ${TWINRASTER_BROWSER_MODULE_WASM})
+add_custom_command(OUTPUT ${module_blob_cpp}
+  COMMAND ${CMAKE_COMMAND} -DMODULE=${TWINRASTER_BROWSER_MODULE_WASM} -DOUTPUT=${module_blob_cpp}
+          -P ${PROJECT_SOURCE_DIR}/cmake/module_blob.cmake
+  DEPENDS ${TWINRASTER_BROWSER_MODULE_WASM} twinraster_browser_module ${PROJECT_SOURCE_DIR}/cmake/module_blob.cmake
+  COMMENT "Embedding the browser module"
+  VERBATIM)
