@@ -25,7 +25,7 @@
 
   let state = JSON.parse(originalText);  // the scene file, as the controls have edited it
   // The scene's own state goes to the module as the page carries it, byte for byte: JSON.stringify
-  // would write a -0 as 0, and the own state must be the file's to the last bit.
+  // would write a negative zero without its sign, and the own state must be the file's to the bit.
   const ownText = JSON.stringify(state, null, 2);
   let trace = { instance: page.instance, vertex: page.vertex };  // -1: explain's default
   let sentText = "";  // what the module last received

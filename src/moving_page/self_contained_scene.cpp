@@ -30,7 +30,8 @@ std::vector<std::uint8_t> ReadBytes(const std::filesystem::path& file, const std
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Each model's "obj" path becomes the file's bytes; a model read from glTF is not carried yet.
+// Each model's "obj" path becomes the file's bytes (one already a data: URI stays as written); a
+// model read from glTF is not carried yet.
 std::string InlineModels(Json& models, const std::filesystem::path& directory, const std::string& scene) {
   if (!models.is_object()) return {};
   for (auto& [name, model] : models.items()) {
@@ -39,7 +40,7 @@ std::string InlineModels(Json& models, const std::filesystem::path& directory, c
       return "model \"" + name + "\" is read from a glTF file, which the page does not carry yet";
     }
     const auto obj = model.find("obj");
-    if (obj == model.end() || !obj->is_string()) continue;
+    if (obj == model.end() || !obj->is_string() || obj->get<std::string>().starts_with("data:")) continue;
     const std::vector<std::uint8_t> bytes = ReadBytes(directory / obj->get<std::string>(), scene);
     *obj = "data:model/obj;base64," + Base64(bytes);
   }

@@ -245,3 +245,12 @@ TEST_CASE("explain --device chooses the page's rules as render does and is refus
     CHECK(rules["arguments"][1] == 1);  // flush_denormals: the page says it cannot draw them
   }
 }
+
+TEST_CASE("A model already carried as a data: URI stays as the scene writes it", "[moving_page]") {
+  const test::TempDir dir;
+  const moving_page::SelfContainedScene first = Carried(Shipped("lit-gouraud.json"));
+  WriteText(dir / "carried.json", first.json);
+  const moving_page::SelfContainedScene again = Carried((dir / "carried.json").string());
+  REQUIRE(again.why_not.empty());
+  CHECK(again.json == first.json);
+}
