@@ -53,16 +53,17 @@ std::string ControlsSection(const MovingPageInput& in) {
       "chain, explain's writers and the CPU twin) compiled to WebAssembly and embedded in this page; "
       "the script only wires the controls and draws. Canvas sides: " +
       std::to_string(kMinCanvasSide) + " to " + std::to_string(kMaxCanvasSide) + " pixels.</p>\n";
-  html += "<div id=\"twinraster-controls\"></div>\n";
   html +=
       "<p class=\"twinraster-actions\"><button type=\"button\" id=\"twinraster-save\">Save scene</button> "
       "<button type=\"button\" id=\"twinraster-reset\">Reset</button></p>\n";
   html += "<p id=\"twinraster-status\" role=\"status\" aria-live=\"polite\"></p>\n";
   html += "<p id=\"twinraster-trace\"></p>\n";
+  // The controls beside the picture, so that the picture stays in view while a slider moves.
+  html += "<div class=\"twinraster-stage\"><div id=\"twinraster-controls\"></div>\n";
   html +=
       "<figure id=\"twinraster-twin\"><canvas id=\"twinraster-picture\" width=\"1\" height=\"1\"></canvas>"
       "<figcaption>The CPU twin's picture of this state, one thread. twin: " +
-      markup::Escape(in.twin.text) + "</figcaption></figure>\n</section>\n";
+      markup::Escape(in.twin.text) + "</figcaption></figure></div>\n</section>\n";
   return html;
 }
 
