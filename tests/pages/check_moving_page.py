@@ -7,7 +7,8 @@ a scene file and explained (explain --json) and drawn (render --backend cpu --th
 Every number of explain's JSON is compared as its float bits; the picture as RGBA bytes. Also: a
 refused state shows the module's message and keeps the last picture; Save downloads the state;
 Reset returns to the scene's own; every control is labelled and reachable by Tab, and a slider
-moves with the arrow keys; with JavaScript disabled the page shows exactly the static page.
+moves with the arrow keys; SwiftShader's rules, which the browser cannot follow, give no picture
+and say so; with JavaScript disabled the page shows exactly the static page.
 
 Usage: check_moving_page.py CASE --exe TWINRASTER --source REPO --work DIR [--states N] [--seed S]
 CASE: chapter (cgfs-transforms.json), lit (lit-gouraud.json), grid (a 10,000-instance grid
@@ -343,8 +344,33 @@ def check_scene(a, scene_path, name, states):
         driver.quit()
 
 
+def check_rules_refused(a, scene_path):
+    """SwiftShader's rules flush denormals, which WebAssembly cannot: the page says so and draws
+    no picture under their name, while the numbers still move."""
+    page = os.path.join(a.work, "swiftshader.html")
+    run([a.exe, "explain", scene_path, "--html", page, "--device", "swiftshader"])
+    driver = browser()
+    try:
+        pages.open_page(driver, page)
+        wait_ready(driver, "swiftshader")
+        shown = page_state(driver)
+        check(shown["picture"] == "", "swiftshader: the page shows a picture under SwiftShader's rules")
+        check(driver.execute_script("return document.getElementById('twinraster-picture').hidden"),
+              "swiftshader: the picture's canvas shows")
+        caption = driver.find_element(By.CSS_SELECTOR, "#twinraster-twin figcaption").text
+        check("No picture" in caption and "SwiftShader" in caption and "lavapipe" in caption,
+              "swiftshader: the caption says %r" % caption)
+        check(shown["status"].startswith("The picture is not drawn"), "swiftshader: the status says %r" % shown["status"])
+        check(json.loads(shown["explain"])["instances"], "swiftshader: no numbers")
+        pages.check_console(driver, "swiftshader")
+    finally:
+        driver.quit()
+
+
 def case_chapter(a):
-    check_scene(a, os.path.join(a.source, "scenes", "cgfs-transforms.json"), "cgfs-transforms", a.states or 60)
+    scene = os.path.join(a.source, "scenes", "cgfs-transforms.json")
+    check_scene(a, scene, "cgfs-transforms", a.states or 60)
+    check_rules_refused(a, scene)
 
 
 def case_lit(a):
