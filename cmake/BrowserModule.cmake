@@ -37,6 +37,10 @@ endfunction()
 set(module_reason "")
 if(TWINRASTER_BROWSER_MODULE STREQUAL "OFF")
   set(module_reason "this build has no browser module: it was configured with -DTWINRASTER_BROWSER_MODULE=OFF")
+elseif(TWINRASTER_BROWSER_MODULE STREQUAL "AUTO" AND NOT PROJECT_IS_TOP_LEVEL)
+  # A project that adds twinraster with add_subdirectory links its libraries; building a second
+  # copy of them for the browser would only cost it minutes.
+  set(module_reason "this build has no browser module: twinraster is part of another project's build")
 else()
   find_program(TWINRASTER_BROWSER_MODULE_CXX clang++)
   twinraster_try_wasm_toolchain(problem)

@@ -53,13 +53,16 @@ Mat4x4 MakeOrientationMatrix(const glm::dmat3& rotation) {
 }
 
 Mat4x4 MakeInstanceTransform(const Transform& transform) {
-  return MultiplyMM4(MakeTranslationMatrix(transform.translation),
-                     MultiplyMM4(MakeOrientationMatrix(transform.rotation), MakeScalingMatrix(transform.scale)));
+  return MultiplyMM4(
+      MakeTranslationMatrix(transform.translation),
+      MultiplyMM4(MakeOrientationMatrix(transform.book_rotation ? *transform.book_rotation : transform.rotation),
+                  MakeScalingMatrix(transform.scale)));
 }
 
 Mat4x4 MakeCameraMatrix(const Camera& camera) {
   // The demo negates the position as -1·p, which is exact: the same as glm's unary minus.
-  return MultiplyMM4(Transposed(MakeOrientationMatrix(camera.rotation)), MakeTranslationMatrix(-camera.position));
+  return MultiplyMM4(Transposed(MakeOrientationMatrix(camera.book_rotation ? *camera.book_rotation : camera.rotation)),
+                     MakeTranslationMatrix(-camera.position));
 }
 
 }  // namespace twinraster::book

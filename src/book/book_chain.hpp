@@ -33,7 +33,8 @@ Mat4x4 MakeScalingMatrix(glm::dvec3 scale);
 // cos θ + (1 - cos θ): for about one angle in nine (195° and -30° are not among them) that sum
 // rounds to 1 - 2⁻⁵³ where the demo writes 1. So an axis that the matrix leaves fixed (its row
 // and column zero off the diagonal, the diagonal within 2⁻⁵⁰ of 1) gets exactly 1; every other
-// entry is the scene's, which for an axis rotation are the demo's cos and sin of θ·π/180.
+// entry is the scene's; the callers pass the loader's book_rotation where it has one, whose
+// entries are the demo's cos and sin of θ·π/180.
 Mat4x4 MakeOrientationMatrix(const glm::dmat3& rotation);
 
 // The instance's transform as the demo's Instance builds it: T(position) · (orientation · S(scale)).

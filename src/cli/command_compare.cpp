@@ -67,6 +67,8 @@ Comparison CompareRows(files::PngRowReader& a, files::PngRowReader& b, Image* di
 }
 
 int Compare(const CompareArguments& args) {
+  ExpectImageFile("A.png", args.a);
+  ExpectImageFile("B.png", args.b);
   PrepareDiff(args);
   // Both headers before either file is decoded: a refusal, or sizes that differ, cost nothing.
   const files::PngSize size_a = files::ReadPngSize(args.a), size_b = files::ReadPngSize(args.b);

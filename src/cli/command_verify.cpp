@@ -111,6 +111,7 @@ int VerifyCoverage(const VerifyArguments& a, const Scene& scene, const Image& im
 }
 
 int Verify(const VerifyArguments& a) {
+  ExpectImageFile("IMAGE.png", a.image);
   if (a.map && a.no_map)
     throw UsageError("--map " + *a.map + " writes the map and --no-map writes none: give one of them");
   PrepareMap(a);

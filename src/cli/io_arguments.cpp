@@ -78,6 +78,14 @@ Scene LoadSceneArgument(const std::string& argument, const SceneChoice& choice) 
   }
 }
 
+void ExpectImageFile(const std::string& argument, const std::string& name) {
+  if (IsStandardStream(name)) {
+    throw UsageError(argument +
+                     " -: images are read from files, not from standard input; write it to a file first "
+                     "(render -o FILE.png)");
+  }
+}
+
 void ExpectPngName(const std::string& option, const std::string& name) {
   std::string extension = name.size() >= 4 ? name.substr(name.size() - 4) : "";
   std::transform(extension.begin(), extension.end(), extension.begin(),

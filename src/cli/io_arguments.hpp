@@ -1,6 +1,7 @@
 // Files and streams named on the command line: SCENE is a scene file, an OBJ file (framed by a
 // default scene) or - (a scene on standard input); an output PNG is a .png file (written whole,
-// then renamed into place) or - (standard output).
+// then renamed into place) or - (standard output); an image to read is a file, never -. It does
+// not check where outputs may go (output_paths.hpp).
 #pragma once
 
 #include "scene/scene.hpp"
@@ -22,6 +23,10 @@ Scene LoadSceneArgument(const std::string& argument, const SceneChoice& choice =
 
 // Throws UsageError unless `name` ends in .png (in any case): "<option> <name>: ...".
 void ExpectPngName(const std::string& option, const std::string& name);
+
+// Throws UsageError when an image to read is "-": verify and compare read PNG files only (verify
+// writes its map beside the file), so - is refused rather than opened as a file of that name.
+void ExpectImageFile(const std::string& argument, const std::string& name);
 
 // "out.png" -> "out-gpu.png": the name of a file written beside `out` (render's per-backend,
 // diff and map images, verify's map).

@@ -1,6 +1,7 @@
 #include "explain_report/chain_page.hpp"
 
 #include "base/counted.hpp"
+#include "base/trigonometry.hpp"
 #include "markup/markup.hpp"
 
 #include <algorithm>
@@ -327,7 +328,7 @@ std::string LightArrows(const Trace& t, Panel& p, P2 at, double extent, int u, i
   const std::vector<LightTerm>& all = t.light->trace.terms;
   for (std::size_t k = 0; k < all.size(); ++k) {
     const glm::dvec3& l = all[k].l;
-    const double length = std::hypot(l.x, l.y, l.z);
+    const double length = Hypotenuse(l.x, l.y, l.z);
     if (length > 0) {
       const P2 towards{at.x + l[u] / length * extent, at.y + l[w] / length * extent};
       p.segments.push_back({at, towards, "light"});
@@ -357,7 +358,7 @@ Panel LightPanel(const Trace& t) {
   double extent = 0;  // arrows half as long as the instance is wide
   for (const TracedVertex& x : t.traced.vertices) {
     const P2 q = Pick(x.trace.world, u, w);
-    extent = std::max(extent, std::hypot(q.x - at.x, q.y - at.y));
+    extent = std::max(extent, Hypotenuse(q.x - at.x, q.y - at.y));
   }
   extent = std::max(extent, 1e-6) * 0.5;
   TracedEdges(t, p, Space::kWorld, u, w);

@@ -1,4 +1,5 @@
 // A glTF camera node as the chapter's camera, viewport and depth (gltf_build.hpp).
+#include "base/trigonometry.hpp"
 #include "scene/framing.hpp"
 #include "scene/gltf_build.hpp"
 #include "scene/gltf_scene.hpp"
@@ -96,7 +97,7 @@ void PlaceCamera(const GltfDocument& doc, const PlacedNode& at, const std::optio
     v.height = 2 * c.ymag;
   } else {
     v.projection = Projection::kPerspective;
-    v.height = 2 * std::tan(c.yfov / 2);  // the viewport at d = 1 spans yfov
+    v.height = 2 * TangentOfRadians(c.yfov / 2);  // the viewport at d = 1 spans yfov
     const double canvas_aspect = size ? static_cast<double>(size->width) / size->height : 1.0;
     v.width = v.height * c.aspect_ratio.value_or(canvas_aspect);
   }

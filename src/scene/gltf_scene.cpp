@@ -5,10 +5,12 @@
 #include "scene/gltf_build.hpp"
 #include "scene/scene_error.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 
 namespace twinraster::gltf {
@@ -150,36 +152,6 @@ void NoteUndrawn(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& w
   scene.notes.insert(scene.notes.end(), doc.ignored.begin(), doc.ignored.end());
 }
 
-void AddInstances(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& walk, Scene& scene) {
-  ModelTable models(doc, scene);
-  std::size_t chain_steps = 0;
-  std::uint64_t drawn = 0;
-  const GltfLimits limits;
-  for (const gltf::PlacedNode& at : walk) {
-    const std::optional<std::size_t> mesh = doc.nodes[at.node].mesh;
-    if (!mesh) continue;
-    std::shared_ptr<const std::vector<TransformStep>> steps;
-    for (std::size_t p = 0; p < doc.meshes[*mesh].primitives.size(); ++p) {
-      const std::optional<std::size_t> model = models.Model(*mesh, p);
-      if (!model) continue;
-      if (!steps) {
-        steps = gltf::NodeSteps(doc, at.node);
-        chain_steps += steps->size();
-      }
-      drawn += scene.models[*model].triangles.size();
-      if (chain_steps > kMaxChainSteps || drawn > limits.drawn_triangles || scene.instances.size() >= kMaxInstances) {
-        throw SceneError(doc.file, "nodes[" + std::to_string(at.node) + "]",
-                         "the scene draws more than " + std::to_string(limits.drawn_triangles) +
-                             " triangles, or its node chains are too long to keep: refused");
-      }
-      Instance instance;
-      instance.model = *model;
-      instance.transform.steps = steps;
-      scene.instances.push_back(std::move(instance));
-    }
-  }
-}
-
 // The node chain and the mirror, as NodeSteps wrote them, composed in double as chain/ composes
 // a list (each step applied after the last).
 glm::dmat4 ChainMatrix(const std::vector<TransformStep>& steps) {
@@ -193,6 +165,60 @@ glm::dmat4 ChainMatrix(const std::vector<TransformStep>& steps) {
     m = s * m;
   }
   return m;
+}
+
+// Whether a lit instance can be drawn: its normals need the inverse transpose of M_Model's 3x3
+// (chain/normals.hpp), which a chain with a scale of 0 lacks. A chain that collapses every
+// triangle to a line or a point (each 2x2 minor 0, as a node scaled to 0 to hide it is) covers no
+// pixel on any device, so it is left out (false). One that only flattens is drawn by engines as
+// a plane, but not lit by the chapter's rule: refused, as a scene file's zero scale is.
+bool LitChainDrawn(const GltfDocument& doc, std::size_t node, const std::vector<TransformStep>& steps) {
+  const glm::dmat3 m(ChainMatrix(steps));
+  const double det = glm::determinant(m);
+  if (det != 0 && std::isfinite(det)) return true;
+  const glm::dvec3 zero(0.0);
+  if (glm::cross(m[0], m[1]) == zero && glm::cross(m[1], m[2]) == zero && glm::cross(m[2], m[0]) == zero) return false;
+  throw SceneError(doc.file, "nodes[" + std::to_string(node) + "]",
+                   "a lit mesh whose node chain has no inverse (a scale of 0 on one axis, or a matrix "
+                   "without an inverse or out of double's range), so its normals have no inverse transpose");
+}
+
+void AddInstances(const GltfDocument& doc, const std::vector<gltf::PlacedNode>& walk, Scene& scene) {
+  ModelTable models(doc, scene);
+  std::size_t chain_steps = 0, collapsed = 0;
+  std::uint64_t drawn = 0;
+  const GltfLimits limits;
+  for (const gltf::PlacedNode& at : walk) {
+    const std::optional<std::size_t> mesh = doc.nodes[at.node].mesh;
+    if (!mesh) continue;
+    std::shared_ptr<const std::vector<TransformStep>> steps;
+    for (std::size_t p = 0; p < doc.meshes[*mesh].primitives.size(); ++p) {
+      const std::optional<std::size_t> model = models.Model(*mesh, p);
+      if (!model) continue;
+      if (!steps) {
+        steps = gltf::NodeSteps(doc, at.node);
+        chain_steps += steps->size();
+      }
+      if (scene.models[*model].shading != Shading::kUnlit && !LitChainDrawn(doc, at.node, *steps)) {
+        ++collapsed;
+        continue;
+      }
+      drawn += scene.models[*model].triangles.size();
+      if (chain_steps > kMaxChainSteps || drawn > limits.drawn_triangles || scene.instances.size() >= kMaxInstances) {
+        throw SceneError(doc.file, "nodes[" + std::to_string(at.node) + "]",
+                         "the scene draws more than " + std::to_string(limits.drawn_triangles) +
+                             " triangles, or its node chains are too long to keep: refused");
+      }
+      Instance instance;
+      instance.model = *model;
+      instance.transform.steps = steps;
+      scene.instances.push_back(std::move(instance));
+    }
+  }
+  if (collapsed) {
+    scene.notes.push_back(Counted(collapsed, "lit primitive") +
+                          " under a node chain scaled to 0: not drawn, as no device would cover a pixel of them");
+  }
 }
 
 // Every point the instances draw, in glTF's world (the frame before the mirror).

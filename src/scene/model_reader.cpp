@@ -165,7 +165,7 @@ ObjMesh ReadObjMesh(const JsonReader& obj, const std::string& written, const std
 Model ReadObjModel(const JsonReader& r, const std::string& name, const std::filesystem::path& directory) {
   const JsonReader obj = r.Required("obj");
   const std::string written = obj.String();
-  if (written.empty()) obj.Fail("expected the path of an OBJ file or a data: URI, found \"\"");
+  if (written.empty()) obj.Fail("expected the path of an OBJ file, found \"\"");
   ObjMesh mesh = ReadObjMesh(obj, written, directory);
   const std::optional<JsonReader> colour_reader = r.Find("colour");
   const Rgb8 colour = colour_reader ? ReadColour(*colour_reader) : kDefaultObjColour;
@@ -217,7 +217,7 @@ Model ReadGltfModel(const JsonReader& r, const std::string& name, const std::fil
   }
   const JsonReader gltf = r.Required("gltf");
   const std::string written = gltf.String();
-  if (written.empty()) gltf.Fail("expected the path of a .gltf or .glb file or a data: URI, found \"\"");
+  if (written.empty()) gltf.Fail("expected the path of a .gltf or .glb file, found \"\"");
   if (IsDataUri(written)) {
     const GltfLimits limits;
     const std::vector<std::uint8_t> bytes =

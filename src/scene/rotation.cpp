@@ -1,17 +1,17 @@
 #include "scene/rotation.hpp"
 
-#include <glm/geometric.hpp>
+#include "base/trigonometry.hpp"
 
-#include <cmath>
-#include <numbers>
+#include <glm/geometric.hpp>
 
 namespace twinraster {
 
-glm::dmat3 Rotation(glm::dvec3 axis, double degrees) {
+namespace {
+
+glm::dmat3 RotationBy(glm::dvec3 axis, SineCosine angle) {
   // R = cos θ · I - sin θ · [a]× + (1 - cos θ) · a aᵀ, the transpose of Rodrigues' formula;
   // about Y this is exactly the chapter demo's matrix.
-  const double theta = degrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta), k = 1.0 - c;
+  const double c = angle.cosine, s = angle.sine, k = 1.0 - c;
   const double x = axis.x, y = axis.y, z = axis.z;
   const double rows[3][3] = {
       {c + k * x * x, k * x * y + s * z, k * x * z - s * y},
@@ -22,6 +22,16 @@ glm::dmat3 Rotation(glm::dvec3 axis, double degrees) {
   for (int r = 0; r < 3; ++r)
     for (int col = 0; col < 3; ++col) m[col][r] = rows[r][col];
   return m;
+}
+
+}  // namespace
+
+// In degrees, by the project's own sine and cosine: 90° gives exact 0 and 1, and every build
+// (glibc's, or the browser's musl) the same bits.
+glm::dmat3 Rotation(glm::dvec3 axis, double degrees) { return RotationBy(axis, SineCosineOfDegrees(degrees)); }
+
+glm::dmat3 BookRotation(glm::dvec3 axis, double degrees) {
+  return RotationBy(axis, SineCosineOfRoundedRadians(degrees));
 }
 
 glm::dmat3 AccumulatedRotation(glm::dvec3 axis, double degrees, int steps, bool reorthonormalize) {

@@ -20,6 +20,11 @@ namespace twinraster {
 // Rotation about a unit-length axis by `degrees`, chapter convention (see above).
 glm::dmat3 Rotation(glm::dvec3 axis, double degrees);
 
+// The same rotation with the entries the chapter's demos compute, cos and sin of the double
+// degrees·π/180 (base/trigonometry.hpp), for --rules book: where the demos round θ·π/180 first,
+// 180° has sin 1.2e-16, not 0.
+glm::dmat3 BookRotation(glm::dvec3 axis, double degrees);
+
 // The same rotation reached the way an animated camera reaches it: `steps` small rotations by
 // degrees/steps multiplied one after another, each product rounded, optionally re-orthonormalized
 // (Gram-Schmidt) after every step. Shows how rounding drifts a rotation away from orthonormal.

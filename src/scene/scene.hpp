@@ -107,6 +107,9 @@ struct Transform {
   // A 3x3 matrix in the chapter's convention (see matrices.hpp); the loader composes a list of
   // axis rotations into one matrix.
   glm::dmat3 rotation{1.0};
+  // For --rules book only: a rotation written as one {axis, degrees} with the chapter demos' own
+  // entries (BookRotation, scene/rotation.hpp); null for any other rotation. Shared by a grid's copies.
+  std::shared_ptr<const glm::dmat3> book_rotation;
   glm::dvec3 translation{0, 0, 0};
   // The list form's steps, or null; shared by the copies of a grid.
   std::shared_ptr<const std::vector<TransformStep>> steps;
@@ -140,6 +143,7 @@ inline constexpr std::size_t kMaxInstances = std::size_t{1} << 24;
 struct Camera {
   glm::dvec3 position{0, 0, 0};
   glm::dmat3 rotation{1.0};
+  std::shared_ptr<const glm::dmat3> book_rotation = nullptr;  // as Transform's
 };
 
 // Light in Computer Graphics from Scratch's diffuse model: at a surface point with normal n,

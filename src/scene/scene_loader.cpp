@@ -16,6 +16,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace twinraster {
@@ -61,6 +62,13 @@ glm::dmat3 ReadRotation(const JsonReader& r) {
   }
   return AccumulatedRotation(axis, degrees, static_cast<int>(steps->Integer(1, 10'000'000)),
                              reorthonormalize && reorthonormalize->Boolean());
+}
+
+// The demos' own entries for a rotation written as one {axis, degrees}, for --rules book; null for
+// a list or steps, which the demos have no counterpart for. After ReadRotation has checked it.
+std::shared_ptr<const glm::dmat3> ReadBookRotation(const JsonReader& r) {
+  if (!r.IsObject() || r.Find("steps")) return nullptr;
+  return std::make_shared<const glm::dmat3>(BookRotation(ReadAxis(r.Required("axis")), r.Required("degrees").Number()));
 }
 
 glm::dvec3 ReadScale(const JsonReader& r) {
@@ -121,7 +129,10 @@ Camera ReadCamera(const JsonReader& r) {
   if (!lookat_style) {
     Camera camera;
     camera.position = r.Required("position").Vec3();
-    if (auto rotation = r.Find("rotation")) camera.rotation = ReadRotation(*rotation);
+    if (auto rotation = r.Find("rotation")) {
+      camera.rotation = ReadRotation(*rotation);
+      camera.book_rotation = ReadBookRotation(*rotation);
+    }
     return camera;
   }
   const glm::dvec3 eye = r.Required("eye").Vec3();
@@ -223,7 +234,10 @@ Instance ReadInstance(const JsonReader& r, const std::vector<Model>& models, con
       instance.transform.scale = ReadScale(*scale);
       if (lit_model) ExpectNonZeroScale(*scale, instance.transform.scale, *lit_model);
     }
-    if (auto rotation = transform->Find("rotation")) instance.transform.rotation = ReadRotation(*rotation);
+    if (auto rotation = transform->Find("rotation")) {
+      instance.transform.rotation = ReadRotation(*rotation);
+      instance.transform.book_rotation = ReadBookRotation(*rotation);
+    }
     if (auto translation = transform->Find("translation")) instance.transform.translation = translation->Vec3();
   }
   return instance;

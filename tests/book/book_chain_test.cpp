@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 using namespace twinraster;
@@ -15,7 +16,8 @@ using namespace twinraster::book;
 
 namespace {
 
-// The demo's own expression for an angle's cosine and sine: Math.cos(degrees*Math.PI/180.0).
+// The demo's own expression for an angle's cosine and sine, Math.cos(degrees*Math.PI/180.0), by
+// glibc (BookRotation's are the project's own: these tests hold them to glibc's on these angles).
 double DemoCos(double degrees) { return std::cos(degrees * std::numbers::pi / 180.0); }
 double DemoSin(double degrees) { return std::sin(degrees * std::numbers::pi / 180.0); }
 
@@ -60,7 +62,7 @@ TEST_CASE("The orientation about Y has the demo's entries: its cos and sin of de
           "[book][chain]") {
   for (double degrees : {195.0, -30.0}) {
     INFO(degrees);
-    const Mat4x4 m = MakeOrientationMatrix(Rotation({0, 1, 0}, degrees));
+    const Mat4x4 m = MakeOrientationMatrix(BookRotation({0, 1, 0}, degrees));
     // MakeOYRotationMatrix's rows: [cos, 0, -sin, 0] [0, 1, 0, 0] [sin, 0, cos, 0] [0, 0, 0, 1].
     const double c = DemoCos(degrees), s = DemoSin(degrees);
     REQUIRE(m[0] == std::array<double, 4>{c, 0, -s, 0});
@@ -74,7 +76,7 @@ TEST_CASE("Where the loader's rotation rounds its axis entry below 1, the orient
           "[book][chain]") {
   // Rodrigues' form gives cos θ + (1 - cos θ) on the axis; at -269° (cos = -0.01745...) the
   // subtraction rounds and the sum is 1 - 2^-53.
-  const glm::dmat3 loaded = Rotation({0, 1, 0}, -269);
+  const glm::dmat3 loaded = BookRotation({0, 1, 0}, -269);
   REQUIRE(loaded[1][1] == 0x1.fffffffffffffp-1);
   const Mat4x4 m = MakeOrientationMatrix(loaded);
   REQUIRE(m[1][1] == 1.0);
@@ -91,7 +93,8 @@ TEST_CASE("Figure 10-10's camera matrix: Transposed(R(-30°)) · T(3, -1, -2), s
           "[book][chain]") {
   Camera camera;
   camera.position = {-3, 1, 2};
-  camera.rotation = Rotation({0, 1, 0}, -30);
+  camera.rotation = Rotation({0, 1, 0}, -30);  // sin -30° = -0.5 exactly: not the demo's
+  camera.book_rotation = std::make_shared<const glm::dmat3>(BookRotation({0, 1, 0}, -30));
   const Mat4x4 m = MakeCameraMatrix(camera);
   const double c = DemoCos(-30), s = DemoSin(-30);  // √3/2 and -1/2 (as 0.8660254037844387, -0.49999999999999994)
   // Transposed rows: [c, 0, s, 0] [0, 1, 0, 0] [-s, 0, c, 0]; T(-position) has column (3, -1, -2, 1).
@@ -116,6 +119,7 @@ TEST_CASE("Figure 10-10's instance transforms: T · (R · S)", "[book][chain]") 
 
   Transform turned;
   turned.rotation = Rotation({0, 1, 0}, 195);
+  turned.book_rotation = std::make_shared<const glm::dmat3>(BookRotation({0, 1, 0}, 195));
   turned.translation = {1.25, 2.5, 7.5};
   const Mat4x4 b = MakeInstanceTransform(turned);
   const double c = DemoCos(195), s = DemoSin(195);

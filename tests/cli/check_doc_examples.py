@@ -2,9 +2,12 @@
 """Runs every command example of the manual with the built executable and compares its output
 with the one documented, so that the manual cannot drift from what twinraster prints.
 
-An example is a fenced block whose first line is "$ twinraster ..." (variables may come first); each "$ "
-line is a command (run by sh, with `twinraster` the built executable) and the lines up to the
-next one are its output, standard output and standard error as a terminal shows them.
+An example is a fenced block whose first line is a "$ " command and one of whose commands is
+"$ twinraster ..." (variables, or a pipe, may come first); each "$ " line is a command (run by sh, with
+`twinraster` the built executable, the block's commands in order in one scratch folder, so that
+one may prepare a file for the next) and the lines up to the next one are its output, standard
+output and standard error as a terminal shows them. The fence closing an example must be
+backticks alone: a Markdown reader would keep the block open past one with text after it.
 
 What the documented output may leave out (docs/testing.md, "The manual's examples run"):
   - a line that is exactly "..." stands for any number of lines, none included;
@@ -43,8 +46,12 @@ SKIP = re.compile(r"<!--\s*example:\s*not run:\s*(.+?)\s*-->")
 TIMING = re.compile(r"\b\d+(\.\d+)? ms\b")
 THREADS = re.compile(r"\(CPU twin, \d+ threads?\)")
 VERSION_LINE = re.compile(r"^twinraster \d+\.\d+\.\d+( \([0-9a-zA-Z.-]+\))?$")
-RUNS_TWINRASTER = re.compile(r"^\$ (\w+=\S* )*twinraster\b")  # variables may come first
+# Variables may come first, or a pipe into it.
+RUNS_TWINRASTER = re.compile(r"^\$ (.*[|;&] *)?(\w+=\S* )*twinraster\b")
 ELIDED = "..."
+# A command and its output for the self-test, run after a command that makes "notes" a file.
+JUNIT_IN_A_FILE = ("$ twinraster render scenes/cgfs-transforms.json --backend cpu --junit notes/j.xml\n"
+                   "twinraster: --junit notes/j.xml: notes is a file, not a directory\n")
 TIMEOUT_SECONDS = 120
 
 
@@ -128,6 +135,10 @@ class Example:
         self.skip_reason = skip_reason
         self.commands = []  # (line index of "$ ", command, documented output lines)
 
+    def fence_is_open(self, lines):
+        """Whether the closing fence has text after its backticks, which Markdown does not close on."""
+        return self.last_line < len(lines) and lines[self.last_line].strip("` ") != ""
+
 
 def find_examples(path, lines):
     """Every example block of a file's lines."""
@@ -139,7 +150,7 @@ def find_examples(path, lines):
             continue
         end = next((k for k in range(i + 1, len(lines)) if lines[k].startswith("```")), len(lines))
         body = lines[i + 1:end]
-        if body and RUNS_TWINRASTER.match(body[0]):
+        if body and body[0].startswith("$ ") and any(RUNS_TWINRASTER.match(line) for line in body):
             skip = SKIP.search(lines[i - 1]) if i > 0 else None
             example = Example(path, i, end, skip.group(1) if skip else None)
             for k, line in enumerate(body, start=i + 1):
@@ -223,25 +234,26 @@ def updated_output(documented, actual):
     return result + actual[j:]
 
 
-def scratch_folder(source, command):
-    """A folder to run in: scenes/ linked, each repository file the command names copied, and
-    each folder it names a file in made, so that outputs land here and never in the repository."""
+def scratch_folder(source, commands):
+    """A folder for one example's commands: scenes/ linked and each repository file they name
+    copied (its folder made for it), so that outputs land here and never in the repository. Other
+    folders are left for the commands to make or refuse, as a user's would be."""
     folder = tempfile.mkdtemp(prefix="twinraster-doc-example-")
     os.symlink(os.path.abspath(os.path.join(source, "scenes")), os.path.join(folder, "scenes"))
-    for word in re.split(r"[\s<>=]+", command):
+    for word in re.split(r"[\s<>=]+", " ".join(commands)):
         if not word or word.startswith(("-", "/", "scenes/")) or "/" not in word:
             continue
-        os.makedirs(os.path.join(folder, os.path.dirname(word)), exist_ok=True)
         if os.path.isfile(os.path.join(source, word)):
+            os.makedirs(os.path.join(folder, os.path.dirname(word)), exist_ok=True)
             shutil.copyfile(os.path.join(source, word), os.path.join(folder, word))
     return folder
 
 
-def run_command(exe, source, machine, command):
-    """The command's output lines, standard output and error interleaved, as the reference machine's."""
+def run_command(exe, folder, machine, command):
+    """The command's output lines in folder, standard output and error interleaved, as the
+    reference machine's."""
     bin_dir = tempfile.mkdtemp(prefix="twinraster-doc-bin-")
     os.symlink(os.path.abspath(exe), os.path.join(bin_dir, "twinraster"))
-    folder = scratch_folder(source, command)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ.get("PATH", ""))
     try:
         done = subprocess.run(["sh", "-c", command], cwd=folder, env=env, stdout=subprocess.PIPE,
@@ -250,9 +262,17 @@ def run_command(exe, source, machine, command):
     except subprocess.TimeoutExpired:
         lines = ["(no output: the command ran for over %d s)" % TIMEOUT_SECONDS]
     finally:
-        shutil.rmtree(folder)
         shutil.rmtree(bin_dir)
     return [machine.as_reference(line) for line in lines]
+
+
+def remove_folder(folder):
+    """Removes a scratch folder, even where an example took write permission away (chmod 444)."""
+    for at, dirs, files in os.walk(folder):
+        for name in dirs + files:
+            if not os.path.islink(os.path.join(at, name)):
+                os.chmod(os.path.join(at, name), 0o755)
+    shutil.rmtree(folder)
 
 
 def check_file(exe, source, machine, path, update, report):
@@ -267,15 +287,21 @@ def check_file(exe, source, machine, path, update, report):
             skipped += 1
             report("%s:%d: not run: %s" % (shown, example.first_line + 1, example.skip_reason))
             continue
+        if example.fence_is_open(lines):
+            drifted += 1
+            report("%s:%d: the fence closing the example has text after it, so Markdown keeps the block open: "
+                   "put the text on a line of its own" % (shown, example.last_line + 1))
+        folder = scratch_folder(source, [command for _, command, _ in example.commands])
         for at, command, documented in example.commands:
             run += 1
-            actual = run_command(exe, source, machine, command)
+            actual = run_command(exe, folder, machine, command)
             if output_matches(documented, actual):
                 continue
             drifted += 1
             report("%s:%d: the output of `%s` drifted from the manual:" % (shown, at + 1, command))
             report("\n".join(difflib.unified_diff(documented, actual, "documented", "actual", lineterm="")))
             replacements.append((at + 1, at + 1 + len(documented), updated_output(documented, actual)))
+        remove_folder(folder)
     if update and replacements:
         for first, last, new in reversed(replacements):
             lines[first:last] = new
@@ -286,45 +312,66 @@ def check_file(exe, source, machine, path, update, report):
 
 
 def self_test(exe, source):
-    """The checker on a made-up page: a true example passes, a drifted one and a wrong elision fail."""
+    """The checker on a made-up page: a true example passes (one that prepares a file for its
+    twinraster command too), a drifted one and a wrong elision fail, and so does a closing fence
+    with text after it."""
     folder = tempfile.mkdtemp(prefix="twinraster-doc-self-test-")
     true_page = os.path.join(folder, "true.md")
     with open(true_page, "w", encoding="utf-8") as f:
         f.write("```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
                 "twinraster: unknown command \"rendr\" (did you mean \"render\"?)\nsee 'twinraster --help'\n```\n\n"
                 "```\n$ twinraster --version\ntwinraster 9.9.9 (0000000)\nlavapipe's CPU path on this machine: ...\n"
-                "...\n```\n\n<!-- example: not run: made up for this test -->\n```\n$ twinraster nothing\nnever\n```\n")
+                "...\n```\n\n<!-- example: not run: made up for this test -->\n```\n$ twinraster nothing\nnever\n```\n\n"
+                "```\n$ touch notes\n" + JUNIT_IN_A_FILE + "```\n")
+    # Each wrong page, with the line its drift is reported at.
     wrong_pages = {
-        "a drifted line": "```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
-                          "twinraster: unknown command \"rendr\" (did you mean \"explain\"?)\nsee 'twinraster --help'\n```\n",
-        "a missing line": "```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
-                          "twinraster: unknown command \"rendr\" (did you mean \"render\"?)\n```\n",
-        "a prefix that no longer fits": "```\n$ twinraster --version\ntwinraster 9.9.9\nthe CPU path: ...\n...\n```\n",
+        "a drifted line": ("```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
+                           "twinraster: unknown command \"rendr\" (did you mean \"explain\"?)\nsee 'twinraster --help'\n```\n",
+                           2),
+        "a missing line": ("```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
+                           "twinraster: unknown command \"rendr\" (did you mean \"render\"?)\n```\n", 2),
+        "a prefix that no longer fits": ("```\n$ twinraster --version\ntwinraster 9.9.9\nthe CPU path: ...\n...\n```\n", 2),
+        # After a command that makes notes a folder, the same render writes j.xml there: its refusal drifts.
+        "an output that needs the command before it": ("```\n$ mkdir notes\n" + JUNIT_IN_A_FILE + "```\n", 3),
     }
     machine = Machine(exe)
     failures = []
     quiet = []
     run, skipped, drifted = check_file(exe, source, machine, true_page, False, quiet.append)
-    if (run, skipped, drifted) != (2, 1, 0):
-        failures.append("a true page: %d run, %d skipped, %d drifted (expected 2, 1, 0): %s" %
+    if (run, skipped, drifted) != (4, 1, 0):
+        failures.append("a true page: %d run, %d skipped, %d drifted (expected 4, 1, 0): %s" %
                         (run, skipped, drifted, "\n".join(quiet)))
-    for what, text in wrong_pages.items():
+    for what, (text, line) in wrong_pages.items():
         page = os.path.join(folder, "wrong.md")
         with open(page, "w", encoding="utf-8") as f:
             f.write(text)
         said = []
-        if check_file(exe, source, machine, page, False, said.append)[2] != 1 or ":2: the output of" not in said[0]:
-            failures.append("%s was not caught at line 2: %s" % (what, said))
+        if check_file(exe, source, machine, page, False, said.append)[2] != 1 or ":%d: the output of" % line not in said[0]:
+            failures.append("%s was not caught at line %d: %s" % (what, line, said))
         check_file(exe, source, machine, page, True, lambda _: None)
         if check_file(exe, source, machine, page, False, said.append)[2] != 0:
             failures.append("%s still drifts after --update: %s" % (what, said))
+    failures += self_test_open_fence(exe, source, machine, folder)
     failures += self_test_stated_counts(source, folder)
     shutil.rmtree(folder)
     for failure in failures:
         print("check_doc_examples --self-test: " + failure, file=sys.stderr)
-    cases = 1 + len(wrong_pages) * 2 + 3
+    cases = 1 + len(wrong_pages) * 2 + 1 + 3
     print("check_doc_examples --self-test: %d of %d cases as expected" % (cases - len(failures), cases))
     return 1 if failures else 0
+
+
+def self_test_open_fence(exe, source, machine, folder):
+    """An example whose closing fence has text after it fails, though its output is right."""
+    page = os.path.join(folder, "fence.md")
+    with open(page, "w", encoding="utf-8") as f:
+        f.write("```\n$ twinraster rendr scenes/cgfs-transforms.json\n"
+                "twinraster: unknown command \"rendr\" (did you mean \"render\"?)\nsee 'twinraster --help'\n"
+                "``` and then prose\n")
+    said = []
+    if check_file(exe, source, machine, page, False, said.append)[2] != 1 or ":5: the fence closing" not in said[0]:
+        return ["a closing fence with text after it was not caught at line 5: %s" % said]
+    return []
 
 
 def self_test_stated_counts(source, folder):

@@ -81,6 +81,15 @@ TEST_CASE("Usage errors exit with 2, say what is wrong in one line, then where t
       {{"render", scene, "--timeout", "1e7"},
        "twinraster render: --timeout: expects seconds from 0 (no limit) to 1000000, got \"1e7\"",
        "see 'twinraster render --help'"},
+      // An image is read from a file only: - is refused, never opened as a file named "-".
+      {{"verify", scene, "-"},
+       "twinraster verify: IMAGE.png -: images are read from files, not from standard input; write it to a file "
+       "first (render -o FILE.png)",
+       "see 'twinraster verify --help'"},
+      {{"compare", "a.png", "-"},
+       "twinraster compare: B.png -: images are read from files, not from standard input; write it to a file first "
+       "(render -o FILE.png)",
+       "see 'twinraster compare --help'"},
       {{"bench", "--runs", "0"},
        "twinraster bench: --runs: expects an integer in 1..1000, got \"0\"",
        "see 'twinraster bench --help'"},

@@ -114,6 +114,34 @@ TEST_CASE("render --verify judges lavapipe's image and writes OUT-gpu-map.png, a
   CHECK_THAT(book.err, HasSubstring("--verify judges by Vulkan's rules"));
 }
 
+TEST_CASE("render --verify with both backends: identical images settle a scene with nothing in view (exit 0)",
+          "[cli][verify][render]") {
+  const test::TempDir dir;
+  // A quad behind the camera: the verifier alone is inconclusive (exit 6, verify_cli_test.cpp),
+  // but the device's image equal to the twin's, bit for bit, is the answer that decides.
+  test::WriteFile(dir / "behind.json", R"({
+    "canvas": {"width": 64, "height": 48},
+    "viewport": {"width": 1, "height": 1, "distance": 1},
+    "camera": {"position": [0, 0, 0]},
+    "models": {"quad": {"vertices": [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0]],
+                        "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"]]}},
+    "instances": [{"model": "quad", "transform": {"translation": [0, 0, -7]}}]
+  })");
+  const std::string scene = (dir / "behind.json").string(), out = (dir / "b.png").string();
+  const test::CliResult r = test::RunCli({"render", scene, "--verify", "-o", out});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, HasSubstring("gpu vs cpu: 64 x 48: 0 differing pixels"));
+  CHECK_THAT(r.out, HasSubstring("verify: gpu image inconclusive: nothing is in view"));
+  const test::CliResult gpu = test::RunCli({"render", scene, "--verify", "--backend", "gpu", "-o", out});
+  CHECK(gpu.exit_code == 6);
+  const test::CliResult json = test::RunCli({"render", scene, "--verify", "--json", "-o", out});
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  CHECK(j["verdict"] == "identical");
+  CHECK(j["exit_code"] == 0);
+  CHECK(j["verify"]["verdict"] == "inconclusive");
+}
+
 TEST_CASE(
     "render --backend both says what a difference is: within what Vulkan allows, but inconclusive (exit 6) where depth "
     "is uncertain",

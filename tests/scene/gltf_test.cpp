@@ -344,6 +344,27 @@ TEST_CASE("glTF: the node graph must be a forest") {
   CHECK_THAT(Refusal(child_as_root), HasSubstring("scenes[0].nodes[0]: node 1 is a child of node 0, not a root"));
 }
 
+TEST_CASE("glTF: a lit mesh scaled to 0 is left out with a note, and one flattened to a plane is refused") {
+  // A lit mesh needs the normal matrix, which a singular M_Model lacks: before this check such a
+  // file reached the drawing and ended as an internal error (exit 4).
+  const Json hidden = TriangleDocument({{{"mesh", 0}}, {{"mesh", 0}, {"scale", {0, 0, 0}}}});
+  Json both = hidden;
+  both["scenes"][0]["nodes"] = {0, 1};
+  const Scene scene = SceneOf(both);
+  CHECK(scene.instances.size() == 1);
+  CHECK_THAT(scene.notes.front(), HasSubstring("1 lit primitive under a node chain scaled to 0: not drawn"));
+  Json under_parent = TriangleDocument({{{"scale", {0, 0, 0}}, {"children", {1}}}, {{"mesh", 0}}});
+  CHECK_THAT(Refusal(under_parent), HasSubstring("nothing to draw"));
+  CHECK_THAT(Refusal(TriangleDocument({{{"mesh", 0}, {"scale", {1, 1, 0}}}})),
+             HasSubstring("nodes[0]: a lit mesh whose node chain has no inverse"));
+  Json matrix = TriangleDocument({{{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}}}});
+  CHECK_THAT(Refusal(matrix), HasSubstring("nodes[0]: a lit mesh whose node chain has no inverse"));
+  Json unlit = TriangleDocument({{{"mesh", 0}, {"scale", {1, 1, 0}}}});
+  unlit["materials"] = {{{"extensions", {{"KHR_materials_unlit", Json::object()}}}}};
+  unlit["meshes"][0]["primitives"][0]["material"] = 0;
+  CHECK(SceneOf(unlit).instances.size() == 1);  // unlit: no normals, drawn as it is
+}
+
 TEST_CASE("glTF: every range is checked against the real bytes, with arithmetic that cannot wrap") {
   Json doc = TriangleDocument({{{"mesh", 0}}});
   doc["bufferViews"][0]["byteLength"] = 100;

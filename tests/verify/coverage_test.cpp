@@ -153,8 +153,10 @@ const std::vector<std::pair<std::string, Mutation>>& Defects() {
   return defects;
 }
 
-void AppendTable(const std::string& line) {
-  std::ofstream out(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-coverage.md", std::ios::app);
+// Each test case writes its own file: CTest runs them in parallel, and one file shared by two
+// of them came out with their rows interleaved.
+void AppendTable(const std::string& file, const std::string& line) {
+  std::ofstream out(std::filesystem::path(TWINRASTER_BINARY_DIR) / file, std::ios::app);
   out << line << "\n";
 }
 
@@ -189,10 +191,11 @@ TEST_CASE("coverage: the twin's image under any shading and clear colour passes,
           "[verify][coverage]") {
   std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-coverage.md");
   AppendTable(
+      "verify-coverage.md",
       "| scene | covered, certain | uncovered, certain | uncertain | of them covered by the twin | violations, 5 "
       "shadings "
       "x 2 clear colours | violations shifted 1 px right |");
-  AppendTable("|---|---|---|---|---|---|---|");
+  AppendTable("verify-coverage.md", "|---|---|---|---|---|---|---|");
   std::size_t judged = 0;
   const Rgb8 magenta{255, 0, 255};
   for (const std::string& file : kScenes) {
@@ -230,18 +233,19 @@ TEST_CASE("coverage: the twin's image under any shading and clear colour passes,
     row << "| " << file << " | " << first.certainly_covered << " | " << first.certainly_uncovered << " | "
         << first.uncertain << " | " << first.uncertain_covered << " | " << violations << " | "
         << shifted.coverage.Violations() << " |";
-    AppendTable(row.str());
+    AppendTable("verify-coverage.md", row.str());
   }
   CHECK(judged == kScenes.size() * kShades.size() * 2);
 }
 
 TEST_CASE("coverage: every transform bug is caught on every shipped scene it changes, under shading noise",
           "[verify][coverage]") {
-  AppendTable("");
+  std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-coverage-bugs.md");
   AppendTable(
+      "verify-coverage-bugs.md",
       "| defect | scene | px whose coverage differs from the twin's | of them where coverage is certain | spills | "
       "holes | verdict |");
-  AppendTable("|---|---|---|---|---|---|---|");
+  AppendTable("verify-coverage-bugs.md", "|---|---|---|---|---|---|---|");
   std::map<std::string, std::size_t> caught, unchanged;
   std::size_t judged = 0;
   for (const std::string& file : kScenes) {
@@ -282,7 +286,7 @@ TEST_CASE("coverage: every transform bug is caught on every shipped scene it cha
       std::ostringstream row;
       row << "| " << name << " | " << file << " | " << differing << " | " << certain << " | " << j.coverage.spills
           << " | " << j.coverage.holes << " | " << run::VerdictName(j.verdict) << " |";
-      AppendTable(row.str());
+      AppendTable("verify-coverage-bugs.md", row.str());
       ++judged;
     }
   }

@@ -171,8 +171,10 @@ const std::vector<Variant>& Variants() {
   return variants;
 }
 
-void AppendTable(const std::string& line) {
-  std::ofstream out(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-gltf-coverage.md", std::ios::app);
+// Each test case writes its own file: CTest runs them in parallel, and one file shared by two
+// of them came out with their rows interleaved.
+void AppendTable(const std::string& file, const std::string& line) {
+  std::ofstream out(std::filesystem::path(TWINRASTER_BINARY_DIR) / file, std::ios::app);
   out << line << "\n";
 }
 
@@ -221,8 +223,8 @@ TEST_CASE("glTF coverage: scenes/gltf holds the shipped glTF scenes, each with e
 TEST_CASE("glTF coverage: the twin's image of each shipped glTF scene passes under any shading and clear colour",
           "[verify][coverage][gltf]") {
   std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-gltf-coverage.md");
-  AppendTable("| scene | canvas | certainly covered | certainly uncovered | uncertain |");
-  AppendTable("|---|---|---|---|---|");
+  AppendTable("verify-gltf-coverage.md", "| scene | canvas | certainly covered | certainly uncovered | uncertain |");
+  AppendTable("verify-gltf-coverage.md", "|---|---|---|---|---|");
   const Rgb8 magenta{255, 0, 255};
   std::size_t judged = 0;
   for (const std::string& file : kScenes) {
@@ -249,16 +251,17 @@ TEST_CASE("glTF coverage: the twin's image of each shipped glTF scene passes und
     std::ostringstream row;
     row << "| " << file << " | " << twin.width << "x" << twin.height << " | " << first.certainly_covered << " | "
         << first.certainly_uncovered << " | " << first.uncertain << " |";
-    AppendTable(row.str());
+    AppendTable("verify-gltf-coverage.md", row.str());
   }
   CHECK(judged == kScenes.size() * 3 * 2);
 }
 
 TEST_CASE("glTF coverage: each glTF import bug fails on every shipped glTF scene, under shading noise",
           "[verify][coverage][gltf]") {
-  AppendTable("");
-  AppendTable("| defect | scene | px whose coverage differs | of them certain | spills | holes | verdict |");
-  AppendTable("|---|---|---|---|---|---|---|");
+  std::filesystem::remove(std::filesystem::path(TWINRASTER_BINARY_DIR) / "verify-gltf-coverage-bugs.md");
+  AppendTable("verify-gltf-coverage-bugs.md",
+              "| defect | scene | px whose coverage differs | of them certain | spills | holes | verdict |");
+  AppendTable("verify-gltf-coverage-bugs.md", "|---|---|---|---|---|---|---|");
   std::map<std::string, std::size_t> failed;
   std::size_t judged = 0;
   std::uint32_t seed = 11;
@@ -294,7 +297,7 @@ TEST_CASE("glTF coverage: each glTF import bug fails on every shipped glTF scene
       std::ostringstream row;
       row << "| " << v.name << " | " << file << " | " << differing << " | " << certain << " | " << j.coverage.spills
           << " | " << j.coverage.holes << " | " << run::VerdictName(j.verdict) << " |";
-      AppendTable(row.str());
+      AppendTable("verify-gltf-coverage-bugs.md", row.str());
       ++judged;
     }
   }
