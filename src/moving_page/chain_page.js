@@ -13,7 +13,10 @@
 //   lastUpdateMs          milliseconds of the last update: the module's work and the drawing
 //   pictureRgbaBase64()   the picture shown, RGBA8, top row first, in base64 ("" when none)
 //   explainJson()         explain --json's object for the state shown, as the module wrote it
-//   controlIds()          the ids of every control, in page order
+//   controlIds()          the ids of every control, in page order (a number field's slider is
+//                         its id + "-slider")
+//   redrawMs(count)       the twin's draw alone for the state shown (tr_redraw), timed `count`
+//                         times: an array of milliseconds
 "use strict";
 
 (() => {
@@ -561,6 +564,16 @@
     explainJson: () => lastExplain,
     pictureRgbaBase64: () => (lastPicture && !rulesRefused ? bytesBase64(lastPicture.rgba) : ""),
     controlIds: () => Array.from(byId("twinraster-controls").querySelectorAll("input, select"), (c) => c.id),
+    redrawMs(count) {
+      // The twin's draw alone, again for the state shown (tr_redraw), timed `count` times.
+      const times = [];
+      for (let i = 0; i < count; ++i) {
+        const start = performance.now();
+        if (module.exports.tr_redraw() !== 0) throw new Error("tr_redraw failed: " + moduleMessage());
+        times.push(performance.now() - start);
+      }
+      return times;
+    },
     setControl(id, value) {
       const control = byId(id);
       if (!control) return Promise.reject(new Error("no control " + id));

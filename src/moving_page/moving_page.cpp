@@ -90,7 +90,7 @@ std::string MovingPageHtml(const Explanation& e, const MovingPageInput& in) {
   page += DataScript("twinraster-scene", "application/json", JsonForScript(in.scene_json));
   page += DataScript("twinraster-page", "application/json", JsonForScript(PageJson(e, in).dump()));
   page += DataScript("twinraster-module", "application/octet-stream", Base64(in.module));
-  page += "<script>\n" + std::string(ChainPageScript()) + "</script>\n";
+  page += "<script id=\"twinraster-script\">\n" + std::string(ChainPageScript()) + "</script>\n";
   page += markup::kPageEnd;
   return page;
 }
