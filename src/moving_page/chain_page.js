@@ -200,8 +200,13 @@
   let frameAsked = false;
   let running = false;  // an update is under way (a refusal re-instantiates the module: it awaits)
   let again = false;  // the state changed while it ran: one more update, with the last values
+  let lastDone = -Infinity;  // when the last update ended (performance.now())
   let waiting = [];  // setControl's promises, settled once the state they set is drawn
 
+  // A change is drawn at once while updates are quick (under half a frame: the browser sends a
+  // drag's input events once a frame). After a slow update, the changes that follow within a
+  // frame wait for the next animation frame, so that they coalesce into one update, the last
+  // values winning. Either way at most one update is ever in flight.
   function scheduleUpdate() {
     if (running) {
       again = true;
@@ -209,23 +214,28 @@
     }
     if (frameAsked) return;
     frameAsked = true;
-    requestAnimationFrame(async () => {
-      frameAsked = false;
-      running = true;
-      try {
-        await update();
-      } catch (error) {
-        setStatus("The page failed: " + error);
-      } finally {
-        running = false;
-      }
-      if (again) {
-        again = false;
-        scheduleUpdate();
-      } else {
-        settle();
-      }
-    });
+    const inBurst = performance.now() - lastDone < 16 && api.lastUpdateMs > 8;
+    if (inBurst) requestAnimationFrame(runUpdate);
+    else queueMicrotask(runUpdate);
+  }
+
+  async function runUpdate() {
+    frameAsked = false;
+    running = true;
+    try {
+      await update();
+    } catch (error) {
+      setStatus("The page failed: " + error);
+    } finally {
+      running = false;
+      lastDone = performance.now();
+    }
+    if (again) {
+      again = false;
+      scheduleUpdate();
+    } else {
+      settle();
+    }
   }
 
   function settle() {
