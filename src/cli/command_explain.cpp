@@ -11,6 +11,10 @@
 #include "explain_report/explain_json.hpp"
 #include "explain_report/explain_text.hpp"
 #include "files/staged_file.hpp"
+#include "moving_page/moving_page.hpp"
+#include "moving_page/self_contained_scene.hpp"
+#include "page_module/module_blob.hpp"
+#include "twin_rules/twin_rules.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -28,6 +32,7 @@ struct ExplainArguments {
   bool all_vertices = false;
   bool json = false;
   std::optional<std::string> html;
+  std::string device;           // whose rules the moving page's picture follows; empty: render --backend cpu's
   SceneChoiceArguments choice;  // --camera, --scene, --size
 };
 
@@ -48,12 +53,40 @@ void CheckDrawable(const Explanation& e) {
   }
 }
 
+// The rules `render --backend cpu` would draw by: the device named, or lavapipe's on this machine.
+twin_rules::TwinRules PageRules(const ExplainArguments& a) {
+  const twin_rules::CpuPath path = twin_rules::DetectCpuPath();
+  return a.device.empty() ? twin_rules::ChooseTwinRules({}, path) : twin_rules::ChooseTwinRulesByName(a.device, path);
+}
+
+// The page that moves when it can; else today's static page, and one line on standard error
+// saying why it does not move.
+std::string PageHtml(const ExplainArguments& a, const Scene& scene, const Explanation& chain,
+                     const twin_rules::TwinRules& rules) {
+  std::string why_not(page_module::ModuleMissingReason());
+  moving_page::SelfContainedScene carried;
+  if (page_module::ModuleBytes().empty()) {
+    if (why_not.empty()) why_not = "this build has no browser module";
+  } else {
+    carried = moving_page::MakeSelfContainedScene(a.scene, scene, ChoiceOf(a.choice));
+    why_not = carried.why_not;
+  }
+  if (!why_not.empty()) {
+    std::cerr << "note: the page does not move: " << why_not << "\n";
+    return explain_report::ChainPageHtml(chain);
+  }
+  return moving_page::MovingPageHtml(
+      chain, {carried.json, scene.name, rules, page_module::ModuleBytes(), a.instance, a.vertex});
+}
+
 int RunExplain(const ExplainArguments& a) {
   if (a.all_vertices && a.vertex) {
     throw UsageError("--all-vertices traces every vertex, --vertex V traces one: give one of them");
   }
   const bool page_to_stdout = a.html && IsStandardStream(*a.html);
   if (page_to_stdout && a.json) throw UsageError("--html - and --json both want standard output: drop one of them");
+  if (!a.device.empty() && !a.html) throw UsageError("--device chooses the page's picture rules: give it with --html");
+  const std::optional<twin_rules::TwinRules> rules = a.html ? std::optional(PageRules(a)) : std::nullopt;
   if (a.html && !page_to_stdout) {
     OutputPaths paths;  // before the scene is read: a bad destination costs nothing
     paths.File("--html " + *a.html, *a.html);
@@ -66,11 +99,12 @@ int RunExplain(const ExplainArguments& a) {
     // Explain checks --instance and --vertex before the file is written.
     const Explanation page_chain = Explain(scene, {a.instance, a.vertex, ExplainVertices::kAll});
     CheckDrawable(page_chain);
+    const std::string html = PageHtml(a, scene, page_chain, *rules);
     if (page_to_stdout) {
-      WriteStandardOutput(explain_report::ChainPageHtml(page_chain));
+      WriteStandardOutput(html);
       return kExitOk;
     }
-    files::StagedFile page(*a.html, explain_report::ChainPageHtml(page_chain));
+    files::StagedFile page(*a.html, html);
     page.Commit();
     if (!a.json) {
       std::cout << "wrote " << *a.html << "\n";
@@ -113,8 +147,17 @@ CommandRun AddExplainCommand(CLI::App& app) {
                    "model, the world from above and the side with the camera's frustum, camera\n"
                    "space, NDC and the canvas, each with its matrix and the traced vertex\n"
                    "(--instance, --vertex; default: instance 0's first vertex in view); - writes\n"
-                   "the page to standard output")
+                   "the page to standard output. The page moves: its controls change the scene and\n"
+                   "the embedded module recomputes every panel and the twin's picture; where it\n"
+                   "cannot (no module in this build, an OBJ or glTF file on its own, a glTF model,\n"
+                   "a scene on standard input) the page is static and a note says why")
       ->type_name("FILE");
+  command
+      ->add_option("--device", a->device,
+                   "with --html: the device whose rules the page's picture follows, by name as\n"
+                   "render takes it (lavapipe, swiftshader); default: lavapipe's on this machine,\n"
+                   "as render --backend cpu draws")
+      ->type_name("NAME");
   AddSceneChoiceOptions(*command, a->choice);
   command->add_flag("--json", a->json,
                     "print one JSON object (twinraster.explain/3, docs/json-output.md), also\n"
