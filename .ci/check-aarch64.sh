@@ -54,7 +54,7 @@ fi
 step "cross-build (g++-aarch64-linux-gnu)"
 TWINRASTER_ARM64_SYSROOT="$sysroot" cmake -S . -B "$work/build" \
   -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release \
-  -DTWINRASTER_BUILD_TESTS=OFF -DTWINRASTER_WERROR=ON >/dev/null
+  -DTWINRASTER_BUILD_TESTS=OFF -DTWINRASTER_WERROR=ON -DTWINRASTER_BROWSER_MODULE=OFF >/dev/null
 cmake --build "$work/build" --target twinraster -j "$(nproc)"
 
 step "render --backend both under qemu-aarch64-static"

@@ -4,8 +4,8 @@
 # has built the release preset.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-ctest --preset release -R '^Pages: '
-for shot in page-batch page-chain page-chain-lit; do
+ctest --preset release -R '^Pages: |^Moving page: the chapter'
+for shot in page-batch page-chain page-chain-lit page-chain-moving; do
   cp "build/page-screenshots/$shot.png" "docs/generated/images/$shot.png"
 done
 echo "page-screenshots: docs/generated/images/page-*.png updated"

@@ -52,6 +52,10 @@ bool NeedsLocatingParser(simdjson::dom::element root) {
 // line or the path.
 ParsedJson ParseJson(std::string_view text, const std::string& file_name, JsonStrictness strictness) {
   ParsedJson parsed;
+  // Debian 13's simdjson skips a byte-order mark that Debian 12's (3.1) refused: the
+  // locating parser refuses it on every release, as nlohmann's build does. (A scene file's is
+  // skipped before this.)
+  if (text.starts_with("\xEF\xBB\xBF")) LocateJsonProblem(text, file_name);
   // The padding past the text's end is there, so simdjson need not copy it.
   if (const simdjson::error_code error = parsed.parser().parse(text.data(), text.size(), false).error();
       error != simdjson::SUCCESS) {

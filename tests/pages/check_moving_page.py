@@ -32,6 +32,7 @@ from check_pages import check, run  # noqa: E402
 from selenium import webdriver  # noqa: E402
 from selenium.webdriver.chrome.options import Options  # noqa: E402
 from selenium.webdriver.chrome.service import Service  # noqa: E402
+from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
 
@@ -339,9 +340,30 @@ def check_scene(a, scene_path, name, states):
         check_controls_usable(driver, name)
         check_refusal_save_reset(a, driver, name, own)
         drive(a, driver, name, states)
+        if name == "cgfs-transforms":
+            screenshot_mid_drag(a, driver)
         pages.check_console(driver, name)
     finally:
         driver.quit()
+
+
+def screenshot_mid_drag(a, driver):
+    """The chapter scene as a learner drags the camera's rotation: the mouse is held on the slider,
+    moved, and the page shot before it is let go. Also checks that the drag moved the state."""
+    driver.find_element(By.ID, "twinraster-reset").click()
+    time.sleep(0.5)
+    before = page_state(driver)["scene"]
+    camera = [c for c in controls(driver) if c["group"] == "Camera" and c["type"] == "range"]
+    slider = driver.find_element(By.ID, camera[-1]["id"])
+    driver.execute_script("arguments[0].scrollIntoView({block: 'start'}); window.scrollBy(0, -260);", slider)
+    drag = ActionChains(driver).click_and_hold(slider)
+    for _ in range(6):
+        drag = drag.move_by_offset(6, 0).pause(0.1)
+    drag.perform()
+    time.sleep(0.5)
+    check(page_state(driver)["scene"] != before, "the drag on %s did not move the scene" % camera[-1]["label"])
+    pages.screenshot(driver, a.screenshots, "page-chain-moving.png")
+    ActionChains(driver).release().perform()
 
 
 def check_rules_refused(a, scene_path):
@@ -433,6 +455,7 @@ def main():
     parser.add_argument("--work", required=True)
     parser.add_argument("--states", type=int, default=0, help="states driven (default: per case)")
     parser.add_argument("--seed", type=int, default=40)
+    parser.add_argument("--screenshots", help="save the mid-drag screenshot docs/chain.md shows here")
     a = parser.parse_args()
     a.exe = os.path.abspath(a.exe)
     if os.path.isdir(a.work):
