@@ -356,9 +356,13 @@ def screenshot_mid_drag(a, driver):
     camera = [c for c in controls(driver) if c["group"] == "Camera" and c["type"] == "range"]
     slider = driver.find_element(By.ID, camera[-1]["id"])
     driver.execute_script("arguments[0].scrollIntoView({block: 'start'}); window.scrollBy(0, -260);", slider)
-    drag = ActionChains(driver).click_and_hold(slider)
-    for _ in range(6):
-        drag = drag.move_by_offset(6, 0).pause(0.1)
+    # Press on the thumb itself, where the scene's own value puts it, and drag a little way.
+    thumb = driver.execute_script(
+        "const s = arguments[0], r = s.getBoundingClientRect();"
+        "return Math.round((s.value - s.min) / (s.max - s.min) * (r.width - 16) + 8 - r.width / 2);", slider)
+    drag = ActionChains(driver).move_to_element_with_offset(slider, thumb, 0).click_and_hold()
+    for _ in range(3):  # the slider spans its whole range in some 150 pixels: a few degrees each
+        drag = drag.move_by_offset(2, 0).pause(0.1)
     drag.perform()
     time.sleep(0.5)
     check(page_state(driver)["scene"] != before, "the drag on %s did not move the scene" % camera[-1]["label"])
