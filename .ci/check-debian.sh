@@ -83,15 +83,16 @@ fi
 git clone -q "$PWD" "$root/root/twinraster"
 rm -rf "$root/root/twinraster/.git"
 
-# The --no-vulkan run: every package but Vulkan's, proof that none came in, then the build
-# without Vulkan and its tests. The browser tests need Chromium, whose package depends on
-# libvulkan1: the only entries not run here (the other runs of CI run them).
+# The --no-vulkan run: every package but Vulkan's and the browser module's, proof that none came
+# in, then the build without Vulkan and its tests: the smallest build, whose explain --html writes
+# the static page and says why (a CTest entry checks that line). The browser tests need Chromium,
+# whose package depends on libvulkan1: the only entries not run here (the other runs of CI run them).
 no_vulkan() {
-  step "bash scripts/setup.sh --tests --no-vulkan"
-  run "bash scripts/setup.sh --tests --no-vulkan"
-  step "no Vulkan in the root"
-  run "! dpkg-query -W -f='\${Package}\n' | grep -i -e vulkan -e glslang -e spirv -e chromium" ||
-    { echo "check-debian: a Vulkan package was installed" >&2; exit 1; }
+  step "bash scripts/setup.sh --tests --no-vulkan --no-browser-module"
+  run "bash scripts/setup.sh --tests --no-vulkan --no-browser-module"
+  step "no Vulkan and no wasm32 toolchain in the root"
+  run "! dpkg-query -W -f='\${Package}\n' | grep -i -e vulkan -e glslang -e spirv -e chromium -e wasm -e wasi -e '^lld'" ||
+    { echo "check-debian: a Vulkan or wasm32 package was installed" >&2; exit 1; }
   run "! find / -xdev -name 'libvulkan*' | grep . && ! command -v glslangValidator" ||
     { echo "check-debian: libvulkan or glslang is in the root" >&2; exit 1; }
   step "configure and build with -DTWINRASTER_VULKAN=OFF"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs twinraster's dependencies from Debian packages: what the program needs to build and run
 # (no argument), or that plus what the tests need (--tests); with --no-vulkan, none of the Vulkan
-# packages, for a build configured with -DTWINRASTER_VULKAN=OFF (docs/building.md). The names exist on Debian 12
+# packages, for a build configured with -DTWINRASTER_VULKAN=OFF (docs/building.md); with
+# --no-browser-module, none of the wasm32 packages the browser module needs. The names exist on Debian 12
 # (bookworm) and 13 (trixie) alike; clang and libclang-rt-dev are each release's default version.
 # Idempotent: packages already present are skipped, and `apt-get update` runs only when
 # something is missing (so it also works on a machine where it never ran).
@@ -22,7 +23,8 @@ packages=(
   libcli11-dev                   # the command line
   libstb-dev                     # bench: stb_image_write, a PNG encoder to compare against
   time                           # bench --loaders: /usr/bin/time, the peak memory of whole processes
-  clang lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32  # the browser module explain --html embeds (wasm32-wasi)
+  clang                          # the browser module's compiler, and the tests' second compiler
+  lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32  # the browser module explain --html embeds (wasm32-wasi)
 )
 test_packages=(
   vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
@@ -39,16 +41,20 @@ test_packages=(
 # Debian package depends on libvulkan1 (the browser tests are left out of such a run).
 vulkan_packages=(libvulkan-dev mesa-vulkan-drivers glslang-dev glslang-tools spirv-tools vulkan-validationlayers
                  chromium chromium-driver python3-selenium)
-no_vulkan=false
+# What a build without the browser module does without (explain --html then writes the static page
+# and says why in one line).
+browser_module_packages=(lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32)
+left_out=()
 for argument in "$@"; do
   case "$argument" in
     --tests) packages+=("${test_packages[@]}") ;;
-    --no-vulkan) no_vulkan=true ;;
-    *) echo "usage: scripts/setup.sh [--tests] [--no-vulkan]" >&2; exit 2 ;;
+    --no-vulkan) left_out+=("${vulkan_packages[@]}") ;;
+    --no-browser-module) left_out+=("${browser_module_packages[@]}") ;;
+    *) echo "usage: scripts/setup.sh [--tests] [--no-vulkan] [--no-browser-module]" >&2; exit 2 ;;
   esac
 done
-if $no_vulkan; then
-  for p in "${vulkan_packages[@]}"; do
+if [ ${#left_out[@]} -gt 0 ]; then
+  for p in "${left_out[@]}"; do
     for i in "${!packages[@]}"; do
       if [ "${packages[i]}" = "$p" ]; then unset 'packages[i]'; fi
     done
