@@ -6,6 +6,9 @@
 # The scene loader reads JSON with nlohmann's header-only DOM: Debian ships simdjson only compiled
 # for the build machine.
 set(TWINRASTER_JSON_DOM nlohmann CACHE STRING "The scene loader's JSON DOM" FORCE)
+# For every target, not only the scene library: the other stages include scene/'s headers too, and
+# must see the same DOM (and no <simdjson.h>, which this build may not have).
+add_compile_definitions(TWINRASTER_JSON_DOM_NLOHMANN)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 
