@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 // The method. An angle in degrees is reduced to |t| ≤ 45° exactly (fmod by 360 is exact, and so is
@@ -106,6 +107,11 @@ struct Turned {
   Double2 cosine;
 };
 Turned OfDegrees(double degrees) {
+  // An infinity or a NaN has no quarter turn to count (converting its NaN to int is undefined).
+  if (!std::isfinite(degrees)) {
+    const Double2 nan{std::numeric_limits<double>::quiet_NaN(), 0.0};
+    return {nan, nan};
+  }
   const double r = std::fmod(degrees, 360.0);
   const double n = std::nearbyint(r / 90.0);
   const Double2 x = Radians(r - 90.0 * n);
