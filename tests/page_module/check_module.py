@@ -23,23 +23,16 @@ import base64
 import json
 import os
 import shutil
-import struct
 import subprocess
 import sys
-import zlib
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pages"))
+import check_pages as pages  # noqa: E402  (the page tests' shared checks and PNG reading)
+from check_pages import FAILURES, check  # noqa: E402
 
-FAILURES = []
-
-
-def check(condition, message):
-    if not condition:
-        FAILURES.append(message)
-        print("FAIL: " + message, file=sys.stderr)
-    return condition
+from selenium import webdriver  # noqa: E402
+from selenium.webdriver.chrome.options import Options  # noqa: E402
+from selenium.webdriver.chrome.service import Service  # noqa: E402
 
 
 def run(args):
@@ -47,41 +40,6 @@ def run(args):
     if r.returncode != 0:
         sys.exit("FAIL: %s exited %d\n%s" % (" ".join(args), r.returncode, r.stderr.decode(errors="replace")[-3000:]))
     return r.stdout
-
-
-def read_png_rgba(path):
-    """An 8-bit RGBA, non-interlaced PNG (what twinraster writes) as (width, height, bytes)."""
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    at, idat, width, height = 8, b"", 0, 0
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        body = data[at + 8:at + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            assert (depth, colour, interlace) == (8, 6, 0), "%s: not 8-bit RGBA" % path
-        elif kind == b"IDAT":
-            idat += body
-        at += 12 + length
-    raw, stride, rows, previous = zlib.decompress(idat), width * 4, [], bytearray(width * 4)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for x in range(stride):
-            left = line[x - 4] if x >= 4 else 0
-            up, corner = previous[x], previous[x - 4] if x >= 4 else 0
-            if kind == 1:
-                line[x] = (line[x] + left) & 255
-            elif kind == 2:
-                line[x] = (line[x] + up) & 255
-            elif kind == 3:
-                line[x] = (line[x] + (left + up) // 2) & 255
-            elif kind == 4:
-                p = left + up - corner
-                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
-                line[x] = (line[x] + (left if pa <= pb and pa <= pc else up if pb <= pc else corner)) & 255
-        rows.append(bytes(line))
-        previous = line
-    return width, height, b"".join(rows)
 
 
 # The test page: the module embedded, a fresh instance on demand, and one call per export the
@@ -242,7 +200,7 @@ def case_scenes(driver, a):
             if os.path.exists(png):
                 os.remove(png)
             run([a.exe, "render", path, "--backend", "cpu", "-o", png])
-            width, height, rgba = read_png_rgba(png)
+            width, height, rgba = pages.png_rgba(png)
             picture = base64.b64decode(got["picture"])
             check((got["width"], got["height"]) == (width, height), "%s: picture size %sx%s, native %dx%d"
                   % (what, got["width"], got["height"], width, height))

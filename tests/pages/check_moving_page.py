@@ -23,7 +23,6 @@ import shutil
 import struct
 import sys
 import time
-import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import check_pages as pages  # noqa: E402  (its checks, commands and page loading)
@@ -85,50 +84,6 @@ def differences(want, got, where="", found=None):
 def float_bits(matrix):
     """F as the renderers take it: each double rounded to float, as bits."""
     return [struct.unpack("<I", struct.pack("<f", x))[0] for row in matrix for x in row]
-
-
-def png_rgba(path):
-    """(width, height, RGBA bytes) of an 8-bit RGB or RGBA PNG, not interlaced: the ones twinraster writes."""
-    data = open(path, "rb").read()
-    check(data[:8] == b"\x89PNG\r\n\x1a\n", path + ": not a PNG")
-    at, idat, header = 8, b"", None
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        body = data[at + 8:at + 8 + length]
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat += body
-        at += 12 + length
-    width, height, depth, colour, _, _, interlace = header
-    if depth != 8 or colour not in (2, 6) or interlace:
-        sys.exit("FAIL: %s: a PNG this checker does not decode (depth %d, colour %d)" % (path, depth, colour))
-    channels = 4 if colour == 6 else 3
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        previous = line
-    pixels = b"".join(rows)
-    if channels == 3:
-        pixels = b"".join(pixels[i:i + 3] + b"\xff" for i in range(0, len(pixels), 3))
-    return width, height, pixels
 
 
 # ---- the page ----------------------------------------------------------------------------------
@@ -196,7 +151,7 @@ def compare_natively(a, driver, what, state_file, trace):
         check(float_bits(w["mvp"]) == float_bits(g["mvp"]), "%s: F's float bits differ, instance %d" % (what, w["index"]))
     png = state_file[:-len(".json")] + ".png"
     run([a.exe, "render", state_file, "--backend", "cpu", "--threads", "1", "-o", png, "-q"])
-    width, height, native_rgba = png_rgba(png)
+    width, height, native_rgba = pages.png_rgba(png)
     rgba = base64.b64decode(shown["picture"])
     check(len(rgba) == width * height * 4, "%s: the page's picture has %d bytes, native %dx%d" % (what, len(rgba), width, height))
     if rgba != native_rgba and len(rgba) == len(native_rgba):
@@ -446,8 +401,8 @@ def case_nojs(a):
     for path, shot in zip(("nojs-page.png", "nojs-static.png"), shots):
         with open(os.path.join(a.work, path), "wb") as f:
             f.write(shot)
-    w1, h1, p1 = png_rgba(os.path.join(a.work, "nojs-page.png"))
-    w2, h2, p2 = png_rgba(os.path.join(a.work, "nojs-static.png"))
+    w1, h1, p1 = pages.png_rgba(os.path.join(a.work, "nojs-page.png"))
+    w2, h2, p2 = pages.png_rgba(os.path.join(a.work, "nojs-static.png"))
     check((w1, h1) == (w2, h2) and p1 == p2, "nojs: without JavaScript the page does not look like the static page")
 
 
