@@ -295,14 +295,20 @@
 
   let controlSerial = 0;
 
-  // A labelled slider and number field that move together; `set` writes the value into the scene.
-  function numberControl(parent, label, value, range, step, set) {
+  // A control's row, its id and its label, which names the control by that id.
+  function labelledRow(label) {
     const id = "twinraster-control-" + ++controlSerial;
     const row = document.createElement("div");
     row.className = "twinraster-control";
     const name = document.createElement("label");
     name.htmlFor = id;
     name.textContent = label;
+    return { id, row, name };
+  }
+
+  // A labelled slider and number field that move together; `set` writes the value into the scene.
+  function numberControl(parent, label, value, range, step, set) {
+    const { id, row, name } = labelledRow(label);
     const slider = document.createElement("input");
     slider.type = "range";
     slider.min = String(range.min);
@@ -333,12 +339,7 @@
   }
 
   function choiceControl(parent, label, options, value, set) {
-    const id = "twinraster-control-" + ++controlSerial;
-    const row = document.createElement("div");
-    row.className = "twinraster-control";
-    const name = document.createElement("label");
-    name.htmlFor = id;
-    name.textContent = label;
+    const { id, row, name } = labelledRow(label);
     const select = document.createElement("select");
     select.id = id;
     for (const [optionValue, text] of options) {
