@@ -4,28 +4,56 @@
 # embedded in twinraster_page_module_blob (src/page_module/module_blob.hpp). Without the toolchain,
 # the blob has no bytes and one line saying why. TWINRASTER_BROWSER_MODULE: AUTO, ON (fail the
 # configure without the toolchain), OFF. Included by src/page_module/CMakeLists.txt.
-set(module_packages "Debian's clang, lld, wasi-libc, libc++-dev-wasm32 and libclang-rt-dev-wasm32")
+set(module_packages "Debian's clang, lld, llvm, wasi-libc, libc++-dev-wasm32 and libclang-rt-dev-wasm32")
 set(module_blob_cpp ${CMAKE_CURRENT_BINARY_DIR}/generated/module_blob.cpp)
 
-# Links a small wasm32-wasi C++ reactor with what the module needs: libc++'s strings, wasi-libc,
-# and compiler-rt's builtins (a 128-bit multiply). Sets the variable named by `out` to "" on
-# success, else to the reason.
+# Finds llvm-ar and llvm-ranlib (Debian's llvm) beside clang++: the module's stages are static
+# libraries of wasm32 objects, which GNU ar stores without the symbol index wasm-ld needs.
+function(twinraster_find_wasm_archiver)
+  execute_process(COMMAND ${TWINRASTER_BROWSER_MODULE_CXX} -dumpversion OUTPUT_VARIABLE version
+                  OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  string(REGEX MATCH "^[0-9]+" major "${version}")
+  find_program(TWINRASTER_BROWSER_MODULE_AR NAMES llvm-ar llvm-ar-${major})
+  find_program(TWINRASTER_BROWSER_MODULE_RANLIB NAMES llvm-ranlib llvm-ranlib-${major})
+endfunction()
+
+# Archives a small wasm32-wasi C++ library with llvm-ar and links it into a reactor with what the
+# module needs: libc++'s strings, wasi-libc, and compiler-rt's builtins (a 128-bit multiply). Sets
+# the variable named by `out` to "" on success, else to the reason.
 function(twinraster_try_wasm_toolchain out)
   if(NOT TWINRASTER_BROWSER_MODULE_CXX)
     set(${out} "clang++ was not found" PARENT_SCOPE)
     return()
   endif()
+  twinraster_find_wasm_archiver()
+  if(NOT TWINRASTER_BROWSER_MODULE_AR OR NOT TWINRASTER_BROWSER_MODULE_RANLIB)
+    set(${out} "llvm-ar and llvm-ranlib were not found" PARENT_SCOPE)
+    return()
+  endif()
   set(dir ${CMAKE_CURRENT_BINARY_DIR}/wasm_toolchain_check)
-  file(WRITE ${dir}/check.cpp [=[
+  file(REMOVE ${dir}/libcheck.a)
+  file(WRITE ${dir}/square.cpp [=[
 #include <string>
-extern "C" __attribute__((export_name("check"))) unsigned check(unsigned long long a) {
+unsigned square_digits(unsigned long long a) {
   const unsigned __int128 square = static_cast<unsigned __int128>(a) * a;
   return static_cast<unsigned>(std::to_string(a).size() + static_cast<unsigned>(square >> 64));
 }
 ]=])
-  execute_process(COMMAND ${TWINRASTER_BROWSER_MODULE_CXX} --target=wasm32-wasi -std=c++20 -O1 -mexec-model=reactor
-                          ${dir}/check.cpp -o ${dir}/check.wasm
+  file(WRITE ${dir}/check.cpp [=[
+unsigned square_digits(unsigned long long a);
+extern "C" __attribute__((export_name("check"))) unsigned check(unsigned long long a) { return square_digits(a); }
+]=])
+  set(cxx ${TWINRASTER_BROWSER_MODULE_CXX} --target=wasm32-wasi -std=c++20 -O1)
+  execute_process(COMMAND ${cxx} -c ${dir}/square.cpp -o ${dir}/square.o
                   RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(result EQUAL 0)
+    execute_process(COMMAND ${TWINRASTER_BROWSER_MODULE_AR} qcs ${dir}/libcheck.a ${dir}/square.o
+                    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  endif()
+  if(result EQUAL 0)
+    execute_process(COMMAND ${cxx} -mexec-model=reactor ${dir}/check.cpp ${dir}/libcheck.a -o ${dir}/check.wasm
+                    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  endif()
   if(result EQUAL 0)
     set(${out} "" PARENT_SCOPE)
   else()
@@ -63,7 +91,7 @@ if(module_reason)
   return()
 endif()
 
-message(STATUS "Browser module: built with ${TWINRASTER_BROWSER_MODULE_CXX} for wasm32-wasi and embedded")
+message(STATUS "Browser module: built with ${TWINRASTER_BROWSER_MODULE_CXX} and ${TWINRASTER_BROWSER_MODULE_AR} for wasm32-wasi and embedded")
 include(ExternalProject)
 set(TWINRASTER_BROWSER_MODULE_DIR ${PROJECT_BINARY_DIR}/browser_module CACHE INTERNAL "")
 set(TWINRASTER_BROWSER_MODULE_WASM ${TWINRASTER_BROWSER_MODULE_DIR}/src/page_module/twinraster_page.wasm
@@ -78,6 +106,7 @@ ExternalProject_Add(twinraster_browser_module
   SOURCE_DIR ${PROJECT_SOURCE_DIR}
   BINARY_DIR ${TWINRASTER_BROWSER_MODULE_DIR}
   CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/toolchains/wasm32-wasi.cmake
+             -DCMAKE_AR=${TWINRASTER_BROWSER_MODULE_AR} -DCMAKE_RANLIB=${TWINRASTER_BROWSER_MODULE_RANLIB}
              -DCMAKE_BUILD_TYPE=Release
              -DTWINRASTER_BROWSER_MODULE_BUILD=ON -DTWINRASTER_WERROR=${TWINRASTER_WERROR} ${launcher}
   INSTALL_COMMAND ""

@@ -24,7 +24,7 @@ packages=(
   libstb-dev                     # bench: stb_image_write, a PNG encoder to compare against
   time                           # bench --loaders: /usr/bin/time, the peak memory of whole processes
   clang                          # the browser module's compiler, and the tests' second compiler
-  lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32  # the browser module explain --html embeds (wasm32-wasi)
+  lld llvm wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32  # the browser module explain --html embeds (wasm32-wasi; llvm-ar)
 )
 test_packages=(
   vulkan-validationlayers        # VK_LAYER_KHRONOS_validation, used by the tests
@@ -43,7 +43,7 @@ vulkan_packages=(libvulkan-dev mesa-vulkan-drivers glslang-dev glslang-tools spi
                  chromium chromium-driver python3-selenium)
 # What a build without the browser module does without (explain --html then writes the static page
 # and says why in one line).
-browser_module_packages=(lld wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32)
+browser_module_packages=(lld llvm wasi-libc libc++-dev-wasm32 libclang-rt-dev-wasm32)
 left_out=()
 for argument in "$@"; do
   case "$argument" in
