@@ -130,12 +130,16 @@ std::string PanelSvg(const Panel& p) {
         << "\"/>\n";
   }
   if (!p.segments.empty()) {
-    // One path per style keeps a mesh's page small.
+    // One path per style keeps a mesh's page small, and so does a segment that starts where the
+    // last one ended (a triangle's next edge) continuing the line without a move.
     for (const char* style : {"frustum", "far", "edge", "normal", "light"}) {
       std::string d;
+      const P2* end = nullptr;
       for (const Segment& s : p.segments) {
         if (std::string_view(s.style) != style) continue;
-        d += "M" + X(s.a.x) + " " + Y(s.a.y) + "L" + X(s.b.x) + " " + Y(s.b.y);
+        if (!end || end->x != s.a.x || end->y != s.a.y) d += "M" + X(s.a.x) + " " + Y(s.a.y);
+        d += "L" + X(s.b.x) + " " + Y(s.b.y);
+        end = &s.b;
       }
       if (!d.empty()) svg << "<path class=\"" << style << "\" d=\"" << d << "\"/>\n";
     }

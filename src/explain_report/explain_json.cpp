@@ -162,4 +162,10 @@ Json ExplainJson(const Explanation& e) {
   return out;
 }
 
+Json FollowedVertexJson(const InstanceExplanation& instance) {
+  const bool has_vertex = instance.traced < instance.vertices.size();
+  return {{"instance", instance.index},
+          {"vertex", has_vertex ? VertexJson(instance.vertices[instance.traced]) : Json(nullptr)}};
+}
+
 }  // namespace twinraster::explain_report

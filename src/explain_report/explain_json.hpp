@@ -15,4 +15,9 @@ inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
 // Every number as computed, a negative zero included, so that tools read exactly the chain's doubles.
 nlohmann::ordered_json ExplainJson(const Explanation& explanation);
 
+// The vertex an instance's trace follows (vertices[traced]), as ExplainJson's "vertices" holds it,
+// beside the instance's "index": {"instance": I, "vertex": {...}}, "vertex" null for a model
+// without vertices. The moving page's trace line reads this, not the whole object.
+nlohmann::ordered_json FollowedVertexJson(const InstanceExplanation& instance);
+
 }  // namespace twinraster::explain_report

@@ -12,7 +12,8 @@
 //                         user's input fires; returns a Promise resolved once that state is drawn
 //   lastUpdateMs          milliseconds of the last update: the module's work and the drawing
 //   pictureRgbaBase64()   the picture shown, RGBA8, top row first, in base64 ("" when none)
-//   explainJson()         explain --json's object for the state shown, as the module wrote it
+//   explainJson()         explain --json's text for the state shown, which the module writes when
+//                         asked (never on a change: a lit mesh's is megabytes)
 //   controlIds()          the ids of every control, in page order (a number field's slider is
 //                         its id + "-slider")
 //   redrawMs(count)       the twin's draw alone for the state shown (tr_redraw), timed `count`
@@ -32,7 +33,7 @@
   const ownText = JSON.stringify(state, null, 2);
   let trace = { instance: page.instance, vertex: page.vertex };  // -1: explain's default
   let sentText = "";  // what the module last received
-  let lastExplain = "";
+  let drawn = null;  // the last state the module drew, { text, trace }: sentText unless refused
   let lastPicture = null;  // { width, height, rgba }
   let rulesRefused = "";  // why the module cannot draw by the page's rules, or ""
 
@@ -134,16 +135,18 @@
     }
   }
 
-  // One state through the module. Returns null when it was refused (the module then throws
-  // inside, which reaches here as a trap), with the module's message in `refusal`.
-  function compute(text) {
+  // Calls the module's export `name` (tr_update or tr_explain) on a scene text and a trace
+  // ({ instance, vertex }). Returns null, or the module's message when it refused (it throws
+  // inside, which reaches here as a trap).
+  function callWithScene(name, text, at) {
     const bytes = encoder.encode(text);
     const pointer = module.exports.tr_alloc(bytes.length);
     new Uint8Array(module.memory.buffer, pointer, bytes.length).set(bytes);
     try {
-      module.exports.tr_update(pointer, bytes.length, trace.instance, trace.vertex);
+      module.exports[name](pointer, bytes.length, at.instance, at.vertex);
+      return null;
     } catch (error) {
-      return { refusal: moduleMessage() || String(error) };
+      return moduleMessage() || String(error);
     } finally {
       try {
         module.exports.tr_free(pointer);
@@ -151,15 +154,30 @@
         // a trapped instance is replaced whole: its memory goes with it
       }
     }
+  }
+
+  // One state through the module: its panels, the traced vertex and the picture, or `refusal`.
+  function compute(text) {
+    const refusal = callWithScene("tr_update", text, trace);
+    if (refusal !== null) return { refusal };
     const e = module.exports;
     const width = e.tr_picture_width();
     const height = e.tr_picture_height();
     const rgba = new Uint8ClampedArray(module.memory.buffer, e.tr_picture(), width * height * 4).slice();
     return {
       panels: readText(e.tr_panels(), e.tr_panels_size()),
-      explain: readText(e.tr_explain_json(), e.tr_explain_json_size()),
+      trace: readText(e.tr_trace(), e.tr_trace_size()),
       picture: { width, height, rgba },
     };
+  }
+
+  // explain --json's text for the state drawn; asked for by tests and scripts only (it is
+  // megabytes for a lit mesh), so never on a change.
+  function explainJson() {
+    if (drawn === null) return "";
+    const refusal = callWithScene("tr_explain", drawn.text, drawn.trace);
+    if (refusal !== null) throw new Error("explain JSON refused: " + refusal);
+    return readText(module.exports.tr_explain_json(), module.exports.tr_explain_json_size());
   }
 
   // ---- drawing ------------------------------------------------------------------------------
@@ -184,15 +202,15 @@
     return "(" + list.map((x) => (x === null ? "none" : Number(x).toPrecision(6))).join(", ") + ")";
   }
 
-  // The traced vertex as explain's JSON has it: the first instance shown, its traced vertex.
-  function showTrace(explainText) {
-    const explain = JSON.parse(explainText);
-    const instance = explain.instances[0];
-    const traced = instance.vertices.find((v) => v.inside_clip_volume) || instance.vertices[0];
-    const chosen = trace.vertex >= 0 ? instance.vertices[0] : traced;
-    byId("twinraster-trace").textContent =
-      "instance " + instance.index + ", vertex " + chosen.index + ": clip " + numbers(chosen.clip) +
-      ", NDC " + numbers(chosen.ndc) + ", pixel " + numbers(chosen.framebuffer.slice(0, 2));
+  // The traced vertex as the module gives it: the first instance shown and the vertex its trace
+  // follows, in explain --json's words (explain_report::FollowedVertexJson).
+  function showTrace(traceText) {
+    const followed = JSON.parse(traceText);
+    const v = followed && followed.vertex;
+    byId("twinraster-trace").textContent = !v
+      ? "no vertex to trace"
+      : "instance " + followed.instance + ", vertex " + v.index + ": clip " + numbers(v.clip) +
+        ", NDC " + numbers(v.ndc) + ", pixel " + numbers(v.framebuffer.slice(0, 2));
   }
 
   // ---- updates, one at a time, the last value winning ---------------------------------------
@@ -257,10 +275,10 @@
       return;
     }
     byId("twinraster-panels").innerHTML = result.panels;
-    lastExplain = result.explain;
+    drawn = { text, trace: { ...trace } };
     lastPicture = result.picture;
     showPicture(result.picture);
-    showTrace(result.explain);
+    showTrace(result.trace);
     setStatus(rulesRefused ? "The picture is not drawn: " + rulesRefused : "");
     api.lastUpdateMs = performance.now() - start;
   }
@@ -572,7 +590,7 @@
     ready: null,
     lastUpdateMs: 0,
     sceneText: () => sentText,
-    explainJson: () => lastExplain,
+    explainJson,
     pictureRgbaBase64: () => (lastPicture && !rulesRefused ? bytesBase64(lastPicture.rgba) : ""),
     controlIds: () => Array.from(byId("twinraster-controls").querySelectorAll("input, select"), (c) => c.id),
     redrawMs(count) {

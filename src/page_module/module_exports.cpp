@@ -1,7 +1,8 @@
 // The browser module's interface (docs/pages.md): what the moving chain page calls, over
-// ComputePageFrame. All strings are UTF-8 given as (pointer, size); all integers 32-bit. It keeps
-// one state: the rules set, the last frame (panels, explain's JSON, picture, draw list). It does
-// not parse controls or draw on a canvas (the page's JavaScript does) and reads no file.
+// ComputePageFrame and PageExplainJson. All strings are UTF-8 given as (pointer, size); all integers
+// 32-bit. It keeps one state: the rules set, the last frame (panels, trace, picture, draw list) and
+// the last explain JSON asked for. It does not parse controls or draw on a canvas (the page's
+// JavaScript does) and reads no file.
 //
 // Imports, all wasi_snapshot_preview1's: clock_time_get, which must succeed (the twin times its
 // draw with libc++'s steady_clock, which aborts when the clock fails: the page gives
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace twinraster::page_module {
@@ -31,6 +33,7 @@ constexpr std::uint32_t kMaxCanvas = 2048;
 
 cpu::RasterRules g_rules;  // lavapipe's, Mesa 22.3.6 on x86-64 with AVX2 and FMA, until the page says
 PageFrame g_frame;
+std::string g_explain_json;  // tr_explain's
 
 // -1 is explain's default (the first instance, every vertex); anything else is an index, which
 // ComputePageFrame checks against the scene.
@@ -39,10 +42,21 @@ std::optional<std::size_t> Index(std::int32_t value) {
   return static_cast<std::size_t>(value);
 }
 
+PageRequest Request(const std::uint8_t* scene, std::uint32_t bytes, std::int32_t instance, std::int32_t vertex) {
+  PageRequest request;
+  request.scene_json = std::string_view(reinterpret_cast<const char*>(scene), bytes);
+  request.rules = g_rules;
+  request.instance = Index(instance);
+  request.vertex = Index(vertex);
+  request.max_canvas = kMaxCanvas;
+  return request;
+}
+
 }  // namespace
 
 }  // namespace twinraster::page_module
 
+using twinraster::page_module::g_explain_json;
 using twinraster::page_module::g_frame;
 using twinraster::page_module::g_rules;
 
@@ -85,13 +99,16 @@ std::int32_t tr_set_rules(std::int32_t rasterizer, std::int32_t flush_denormals,
 
 TR_EXPORT(tr_update)
 std::int32_t tr_update(const std::uint8_t* scene, std::uint32_t bytes, std::int32_t instance, std::int32_t vertex) {
-  twinraster::page_module::PageRequest request;
-  request.scene_json = std::string_view(reinterpret_cast<const char*>(scene), bytes);
-  request.rules = g_rules;
-  request.instance = twinraster::page_module::Index(instance);
-  request.vertex = twinraster::page_module::Index(vertex);
-  request.max_canvas = twinraster::page_module::kMaxCanvas;
-  g_frame = twinraster::page_module::ComputePageFrame(request);
+  g_frame = twinraster::page_module::ComputePageFrame(twinraster::page_module::Request(scene, bytes, instance, vertex));
+  twinraster::page_module::SetMessage("");
+  return 0;
+}
+
+// explain --json's text for a state, read with tr_explain_json(): asked for apart from tr_update,
+// since the page's own line needs only tr_trace().
+TR_EXPORT(tr_explain)
+std::int32_t tr_explain(const std::uint8_t* scene, std::uint32_t bytes, std::int32_t instance, std::int32_t vertex) {
+  g_explain_json = twinraster::page_module::PageExplainJson(twinraster::page_module::Request(scene, bytes, instance, vertex));
   twinraster::page_module::SetMessage("");
   return 0;
 }
@@ -105,9 +122,11 @@ TR_EXPORT(tr_panels) const char* tr_panels() { return g_frame.panels_html.data()
 TR_EXPORT(tr_panels_size) std::uint32_t tr_panels_size() {
   return static_cast<std::uint32_t>(g_frame.panels_html.size());  // size_t is 32 bits in wasm32
 }
-TR_EXPORT(tr_explain_json) const char* tr_explain_json() { return g_frame.explain_json.data(); }
+TR_EXPORT(tr_trace) const char* tr_trace() { return g_frame.trace_json.data(); }
+TR_EXPORT(tr_trace_size) std::uint32_t tr_trace_size() { return static_cast<std::uint32_t>(g_frame.trace_json.size()); }
+TR_EXPORT(tr_explain_json) const char* tr_explain_json() { return g_explain_json.data(); }
 TR_EXPORT(tr_explain_json_size) std::uint32_t tr_explain_json_size() {
-  return static_cast<std::uint32_t>(g_frame.explain_json.size());
+  return static_cast<std::uint32_t>(g_explain_json.size());
 }
 TR_EXPORT(tr_picture) const std::uint8_t* tr_picture() { return g_frame.picture.rgba.data(); }
 TR_EXPORT(tr_picture_width) std::uint32_t tr_picture_width() { return g_frame.picture.width; }

@@ -31,17 +31,25 @@ void CheckCanvas(const Scene& scene, std::uint32_t max_canvas) {
 PageFrame ComputePageFrame(const PageRequest& request) {
   const Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
   CheckCanvas(scene, request.max_canvas);
+  // The panels draw every vertex's edges, as explain --html's do; the trace line follows the
+  // vertex explain would (the one asked for, else the first in view).
+  const Explanation explanation = Explain(scene, {request.instance, request.vertex, ExplainVertices::kAll});
   PageFrame frame;
-  // The panels draw every vertex's edges; the numbers trace every vertex unless one is asked for,
-  // as explain --html and explain --json do.
-  frame.panels_html =
-      explain_report::ChainPanelsHtml(Explain(scene, {request.instance, request.vertex, ExplainVertices::kAll}));
-  const ExplainVertices json_vertices = request.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll;
-  frame.explain_json =
-      explain_report::ExplainJson(Explain(scene, {request.instance, request.vertex, json_vertices})).dump(2);
+  frame.panels_html = explain_report::ChainPanelsHtml(explanation);
+  frame.trace_json = explanation.instances.empty()
+                         ? "null"
+                         : explain_report::FollowedVertexJson(explanation.instances.front()).dump();
   frame.draw_list = BuildDrawList(scene);
   frame.picture = DrawPicture(frame.draw_list, request.rules);
   return frame;
+}
+
+std::string PageExplainJson(const PageRequest& request) {
+  const Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
+  CheckCanvas(scene, request.max_canvas);
+  // explain --json traces every vertex unless one is asked for.
+  const ExplainVertices vertices = request.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll;
+  return explain_report::ExplainJson(Explain(scene, {request.instance, request.vertex, vertices})).dump(2);
 }
 
 Image DrawPicture(const DrawList& list, const cpu::RasterRules& rules) {

@@ -5,8 +5,8 @@ python3-selenium), opened from a file:// page that embeds it (base64), without
 
 Cases:
   scenes      for each shipped scene (OBJ meshes made data: URIs, glTF and the million cubes
-              left out): tr_update's explain JSON equals
-              `twinraster explain SCENE --json` byte for byte, its panels are those of
+              left out): tr_explain's JSON equals `twinraster explain SCENE --json` byte for
+              byte, tr_update's trace is the vertex that JSON follows, its panels are those of
               `explain --html`, and its picture equals `render --backend cpu`, pixel for pixel;
               also with a traced instance and vertex; tr_redraw draws the same picture again.
   swiftshader SwiftShader's rules (denormals flushed) are refused with 1 and a message, and the
@@ -89,8 +89,10 @@ function update(sceneText, instance, vertex) {
   new Uint8Array(tr.memory.buffer, at, bytes.length).set(bytes);
   try {
     const status = tr.tr_update(at, bytes.length, instance, vertex);
+    const explained = tr.tr_explain(at, bytes.length, instance, vertex);
     tr.tr_free(at);
-    return {status: status, message: message(), json: text(tr.tr_explain_json(), tr.tr_explain_json_size()),
+    return {status: status + explained, message: message(), json: text(tr.tr_explain_json(), tr.tr_explain_json_size()),
+            trace: text(tr.tr_trace(), tr.tr_trace_size()),
             panels: text(tr.tr_panels(), tr.tr_panels_size()), width: tr.tr_picture_width(),
             height: tr.tr_picture_height(), picture: picture()};
   } catch (e) {
@@ -104,6 +106,16 @@ function picture() {
 </script>
 <p>twinraster's browser module, checked.</p>
 """
+
+
+def followed_vertex(explain, vertex_asked):
+    """The first instance's followed vertex in explain --json: the one asked for (its only vertex),
+    else the first inside the clip volume, else vertex 0."""
+    instance = explain["instances"][0]
+    vertices = instance["vertices"]
+    inside = [v for v in vertices if v["inside_clip_volume"]]
+    chosen = vertices[0] if vertex_asked or not inside else inside[0]
+    return {"instance": instance["index"], "vertex": chosen}
 
 
 def browser():
@@ -193,6 +205,8 @@ def case_scenes(driver, a):
             # The page's scene is named "page" (page_module::kPageSceneName), the file's by its stem.
             named = got["json"].replace('"scene": "page"', '"scene": "%s"' % name[:-len(".json")], 1)
             check(named + "\n" == native_json, "%s: the module's explain JSON differs from explain --json" % what)
+            check(json.loads(got["trace"]) == followed_vertex(json.loads(native_json), vertex >= 0),
+                  "%s: tr_trace is not the vertex explain --json follows: %s" % (what, got["trace"][:300]))
             native_page = run([a.exe, "explain", path, "--html", "-"] + extra).decode()
             check(len(got["panels"]) > 1000 and got["panels"] in native_page,
                   "%s: the module's panels are not those of explain --html" % what)
