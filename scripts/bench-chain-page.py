@@ -8,10 +8,15 @@ setup + draw + readback), on the same state, in the same run.
 Scenes: the chapter's scene (scenes/cgfs-transforms.json, 600 x 600), scenes/lit-gouraud.json, and
 a 10,000-instance grid (the chapter's cube, 25 x 20 x 20, written from scenes/catlike-grid.json).
 
-Usage: scripts/bench-chain-page.py [--exe build/bin/twinraster] [--changes 41] [--draws 15]
-                                   [--out DIR] [--json FILE]
-Prints a table; --json writes the figures (format twinraster.bench-chain-page/1)."""
+With --baseline OTHER_EXE, the pages OTHER_EXE writes (an earlier build, say) are timed in the same
+run, each scene's right after this build's, and the table gives each change's time as a ratio.
+
+Usage: scripts/bench-chain-page.py [--exe build/bin/twinraster] [--baseline EXE] [--changes 41]
+                                   [--draws 15] [--out DIR] [--json FILE]
+Prints a table; --json writes the figures (format twinraster.bench-chain-page/1; with --baseline,
+rows for both, each with its "exe")."""
 import argparse
+import hashlib
 import json
 import os
 import re
@@ -97,6 +102,8 @@ def native_draws(exe, scene, work, runs):
 
 
 def bench(driver, exe, name, scene, work, changes, draws):
+    work = os.path.join(work, hashlib.sha256(os.path.realpath(exe).encode()).hexdigest()[:12])
+    os.makedirs(work, exist_ok=True)
     page = page_of(exe, scene, work, name)
     driver.get("file://" + page)
     got = driver.execute_async_script(TIME_CHANGES, changes, draws)
@@ -107,7 +114,7 @@ def bench(driver, exe, name, scene, work, changes, draws):
         f.write(got["scene"])
     native = native_draws(exe, state, work, draws)
     size = os.path.getsize(page)
-    return {"scene": name, "page_bytes": size, "control": got["control"], "changes": changes,
+    return {"scene": name, "exe": exe, "page_bytes": size, "control": got["control"], "changes": changes,
             "change_to_picture_ms": statistics.median(got["wall"]),
             "module_update_ms": statistics.median(got["module"]),
             "wasm_draw_ms": statistics.median(got["draws"]), "native_draw_ms": statistics.median(native),
@@ -117,6 +124,7 @@ def bench(driver, exe, name, scene, work, changes, draws):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "bin", "twinraster"))
+    parser.add_argument("--baseline", help="another twinraster whose pages are timed beside --exe's")
     parser.add_argument("--changes", type=int, default=41)
     parser.add_argument("--draws", type=int, default=15)
     parser.add_argument("--out", help="keep the pages and states here (default: a temporary folder)")
@@ -127,17 +135,24 @@ def main():
     scenes = [("chapter", os.path.join(ROOT, "scenes", "cgfs-transforms.json")),
               ("lit-gouraud", os.path.join(ROOT, "scenes", "lit-gouraud.json")),
               ("grid-10000", grid_scene(work))]
+    exes = [a.exe] + ([a.baseline] if a.baseline else [])
     driver = browser()
     try:
-        rows = [bench(driver, a.exe, name, scene, work, a.changes, a.draws) for name, scene in scenes]
+        rows = [bench(driver, exe, name, scene, work, a.changes, a.draws) for name, scene in scenes for exe in exes]
     finally:
         driver.quit()
-    print("%-12s %10s %14s %12s %12s %12s %7s" % ("scene", "page", "change->shown", "module", "wasm draw",
-                                                 "native draw", "ratio"))
+    print("%-12s %-9s %10s %14s %12s %12s %12s %7s" % ("scene", "build", "page", "change->shown", "module",
+                                                       "wasm draw", "native draw", "ratio"))
     for r in rows:
-        print("%-12s %8.0f KB %11.2f ms %9.2f ms %9.2f ms %9.2f ms %6.2fx" % (
-            r["scene"], r["page_bytes"] / 1000, r["change_to_picture_ms"], r["module_update_ms"],
-            r["wasm_draw_ms"], r["native_draw_ms"], r["wasm_draw_ms"] / max(r["native_draw_ms"], 1e-9)))
+        print("%-12s %-9s %8.0f KB %11.2f ms %9.2f ms %9.2f ms %9.2f ms %6.2fx" % (
+            r["scene"], "baseline" if r["exe"] != a.exe else "this", r["page_bytes"] / 1000,
+            r["change_to_picture_ms"], r["module_update_ms"], r["wasm_draw_ms"], r["native_draw_ms"],
+            r["wasm_draw_ms"] / max(r["native_draw_ms"], 1e-9)))
+    if a.baseline:
+        for this, base in zip(rows[0::2], rows[1::2]):
+            print("%-12s change->shown: this build %.2f ms, baseline %.2f ms (%.2fx faster)" % (
+                this["scene"], this["change_to_picture_ms"], base["change_to_picture_ms"],
+                base["change_to_picture_ms"] / max(this["change_to_picture_ms"], 1e-9)))
     print("medians: change->shown over %d changes of each scene's first camera control; draws over %d "
           "(wasm: tr_redraw in the page; native: render --backend cpu --threads 1, setup + draw + readback)"
           % (a.changes, a.draws))

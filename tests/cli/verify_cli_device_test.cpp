@@ -5,6 +5,7 @@
 #include "files/png_file.hpp"
 #include "image/image.hpp"
 #include "support/catch.hpp"
+#include "support/nothing_in_view.hpp"
 #include "support/test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -119,14 +120,7 @@ TEST_CASE("render --verify with both backends: identical images settle a scene w
   const test::TempDir dir;
   // A quad behind the camera: the verifier alone is inconclusive (exit 6, verify_cli_test.cpp),
   // but the device's image equal to the twin's, bit for bit, is the answer that decides.
-  test::WriteFile(dir / "behind.json", R"({
-    "canvas": {"width": 64, "height": 48},
-    "viewport": {"width": 1, "height": 1, "distance": 1},
-    "camera": {"position": [0, 0, 0]},
-    "models": {"quad": {"vertices": [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0]],
-                        "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"]]}},
-    "instances": [{"model": "quad", "transform": {"translation": [0, 0, -7]}}]
-  })");
+  test::WriteFile(dir / "behind.json", test::kNothingInViewScene);
   const std::string scene = (dir / "behind.json").string(), out = (dir / "b.png").string();
   const test::CliResult r = test::RunCli({"render", scene, "--verify", "-o", out});
   INFO(r.out << r.err);

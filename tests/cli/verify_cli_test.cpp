@@ -4,6 +4,7 @@
 #include "files/png_file.hpp"
 #include "image/image.hpp"
 #include "support/catch.hpp"
+#include "support/nothing_in_view.hpp"
 #include "support/test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -167,15 +168,8 @@ TEST_CASE("compare: a valid PNG that declares 16384 x 16384 pixels is read a row
 TEST_CASE("A scene with nothing in view: render --verify and verify say so, and stay inconclusive (exit 6)",
           "[cli][verify]") {
   const test::TempDir dir;
-  // The chapter's cube behind the camera: nothing may cover any pixel, so the right image is empty.
-  test::WriteFile(dir / "behind.json", R"({
-    "canvas": {"width": 64, "height": 48},
-    "viewport": {"width": 1, "height": 1, "distance": 1},
-    "camera": {"position": [0, 0, 0]},
-    "models": {"quad": {"vertices": [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0]],
-                        "triangles": [[0, 1, 2, "red"], [0, 2, 3, "red"]]}},
-    "instances": [{"model": "quad", "transform": {"translation": [0, 0, -7]}}]
-  })");
+  // A quad behind the camera: nothing may cover any pixel, so the right image is empty.
+  test::WriteFile(dir / "behind.json", test::kNothingInViewScene);
   const std::string said =
       "inconclusive: nothing is in view (no triangle may cover any pixel), so an empty image is both the right "
       "answer and what a broken renderer draws; all 3072 px are the background, 0 violations";
