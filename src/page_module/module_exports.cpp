@@ -108,7 +108,8 @@ std::int32_t tr_update(const std::uint8_t* scene, std::uint32_t bytes, std::int3
 // since the page's own line needs only tr_trace().
 TR_EXPORT(tr_explain)
 std::int32_t tr_explain(const std::uint8_t* scene, std::uint32_t bytes, std::int32_t instance, std::int32_t vertex) {
-  g_explain_json = twinraster::page_module::PageExplainJson(twinraster::page_module::Request(scene, bytes, instance, vertex));
+  g_explain_json =
+      twinraster::page_module::PageExplainJson(twinraster::page_module::Request(scene, bytes, instance, vertex));
   twinraster::page_module::SetMessage("");
   return 0;
 }

@@ -36,9 +36,8 @@ PageFrame ComputePageFrame(const PageRequest& request) {
   const Explanation explanation = Explain(scene, {request.instance, request.vertex, ExplainVertices::kAll});
   PageFrame frame;
   frame.panels_html = explain_report::ChainPanelsHtml(explanation);
-  frame.trace_json = explanation.instances.empty()
-                         ? "null"
-                         : explain_report::FollowedVertexJson(explanation.instances.front()).dump();
+  frame.trace_json =
+      explanation.instances.empty() ? "null" : explain_report::FollowedVertexJson(explanation.instances.front()).dump();
   frame.draw_list = BuildDrawList(scene);
   frame.picture = DrawPicture(frame.draw_list, request.rules);
   return frame;

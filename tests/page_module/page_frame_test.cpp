@@ -1,12 +1,13 @@
 // page_module::ComputePageFrame and PageExplainJson natively, as the browser's module runs them:
 // the frame's panels are explain --html's, its trace is the vertex explain --json follows, its
 // picture is the twin's, and what the page cannot draw is refused with the words the page shows.
+#include "page_module/page_frame.hpp"
+
 #include "base/usage_error.hpp"
 #include "chain/draw_list.hpp"
 #include "chain/explanation.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "explain_report/chain_page.hpp"
-#include "page_module/page_frame.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/catch.hpp"
@@ -63,10 +64,12 @@ TEST_CASE("A page frame has explain --html's panels and the vertex explain --jso
   const page_module::PageFrame frame = page_module::ComputePageFrame(request);
 
   const Scene scene = ParseScene(text, std::string(page_module::kPageSceneName));
-  CHECK(frame.panels_html == explain_report::ChainPanelsHtml(Explain(scene, {instance, vertex, ExplainVertices::kAll})));
+  CHECK(frame.panels_html ==
+        explain_report::ChainPanelsHtml(Explain(scene, {instance, vertex, ExplainVertices::kAll})));
   const nlohmann::json explain = nlohmann::json::parse(page_module::PageExplainJson(request));
   CHECK(explain.at("scene") == "page");
-  CHECK(explain.at("instances").at(0).at("vertices").size() == (vertex ? 1U : scene.models[scene.instances.at(instance.value_or(0)).model].vertices.size()));
+  CHECK(explain.at("instances").at(0).at("vertices").size() ==
+        (vertex ? 1U : scene.models[scene.instances.at(instance.value_or(0)).model].vertices.size()));
   CHECK(nlohmann::json::parse(frame.trace_json) == FollowedInExplainJson(explain, vertex.has_value()));
 
   cpu::CpuOptions threads;
