@@ -1,8 +1,9 @@
 // One state of the moving chain page, computed: a scene file's text in; the chain's panels, the
-// traced vertex's numbers and the twin's picture out (and, when asked, what `explain --json` prints). The browser's
-// module runs exactly this (module_exports.cpp), and the native build runs it too, so that tests can hold the two to
-// the same bits. It reads no file (a scene's meshes come as data: URIs), starts no thread, and
-// chooses no rules: the page carries the rules the native run chose.
+// traced vertex's numbers and the twin's picture out (and, when asked, what `explain --json`
+// prints). The browser's module runs exactly this (module_exports.cpp), and the native build runs
+// it too, so that tests can hold the two to the same bits. It reads no file (a scene's meshes come
+// as data: URIs), starts no thread, and chooses no rules: the page carries the rules the native
+// run chose.
 #pragma once
 
 #include "chain/draw_list.hpp"
