@@ -1,7 +1,8 @@
 #include "markup/markup.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace twinraster::markup {
 
@@ -32,9 +33,12 @@ std::string Escape(std::string_view text) {
 std::string Number(double value, int digits) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
+  // The standard defines this as printf's "%.*g" in the C locale, and it is three times faster
+  // than snprintf natively (a mesh's page writes some 150,000 numbers on every change).
+  char text[128];
+  const auto written =
+      std::to_chars(text, text + sizeof text, value, std::chars_format::general, std::clamp(digits, 1, 40));
+  return std::string(text, written.ptr);
 }
 
 std::string Href(std::string_view relative_path) {
