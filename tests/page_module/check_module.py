@@ -108,16 +108,6 @@ function picture() {
 """
 
 
-def followed_vertex(explain, vertex_asked):
-    """The first instance's followed vertex in explain --json: the one asked for (its only vertex),
-    else the first inside the clip volume, else vertex 0."""
-    instance = explain["instances"][0]
-    vertices = instance["vertices"]
-    inside = [v for v in vertices if v["inside_clip_volume"]]
-    chosen = vertices[0] if vertex_asked or not inside else inside[0]
-    return {"instance": instance["index"], "vertex": chosen}
-
-
 def browser():
     options = Options()
     # No --allow-file-access-from-files: the page must work as a learner's browser opens it.
@@ -205,7 +195,7 @@ def case_scenes(driver, a):
             # The page's scene is named "page" (page_module::kPageSceneName), the file's by its stem.
             named = got["json"].replace('"scene": "page"', '"scene": "%s"' % name[:-len(".json")], 1)
             check(named + "\n" == native_json, "%s: the module's explain JSON differs from explain --json" % what)
-            check(json.loads(got["trace"]) == followed_vertex(json.loads(native_json), vertex >= 0),
+            check(json.loads(got["trace"]) == pages.followed_vertex(json.loads(native_json), vertex >= 0),
                   "%s: tr_trace is not the vertex explain --json follows: %s" % (what, got["trace"][:300]))
             native_page = run([a.exe, "explain", path, "--html", "-"] + extra).decode()
             check(len(got["panels"]) > 1000 and got["panels"] in native_page,

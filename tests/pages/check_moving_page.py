@@ -150,10 +150,8 @@ def compare_natively(a, driver, what, state_file, trace):
     check(not found, "%s: the page's explain JSON differs from explain --json: %s" % (what, found))
     for w, g in zip(native["instances"], page["instances"]):
         check(float_bits(w["mvp"]) == float_bits(g["mvp"]), "%s: F's float bits differ, instance %d" % (what, w["index"]))
-    first = native["instances"][0]
-    inside = [v for v in first["vertices"] if v["inside_clip_volume"]]
-    followed = first["vertices"][0] if trace[1] >= 0 or not inside else inside[0]
-    line = "instance %d, vertex %d: clip (" % (first["index"], followed["index"])
+    followed = pages.followed_vertex(native, trace[1] >= 0)
+    line = "instance %d, vertex %d: clip (" % (followed["instance"], followed["vertex"]["index"])
     check(shown["trace"].startswith(line), "%s: the trace line %r does not start %r" % (what, shown["trace"], line))
     png = state_file[:-len(".json")] + ".png"
     run([a.exe, "render", state_file, "--backend", "cpu", "--threads", "1", "-o", png, "-q"])

@@ -70,6 +70,16 @@ def browser(width=1400, height=1000):
     return webdriver.Chrome(service=Service(shutil.which("chromedriver") or "/usr/bin/chromedriver"), options=options)
 
 
+def followed_vertex(explain, vertex_asked):
+    """The first instance's followed vertex in explain --json: the one asked for (its only vertex),
+    else the first inside the clip volume, else vertex 0."""
+    instance = explain["instances"][0]
+    vertices = instance["vertices"]
+    inside = [v for v in vertices if v["inside_clip_volume"]]
+    chosen = vertices[0] if vertex_asked or not inside else inside[0]
+    return {"instance": instance["index"], "vertex": chosen}
+
+
 def png_rgba(path):
     """(width, height, RGBA bytes) of an 8-bit RGB or RGBA PNG, not interlaced: the ones twinraster writes."""
     data = open(path, "rb").read()
