@@ -36,11 +36,11 @@ struct ExplainArguments {
   SceneChoiceArguments choice;  // --camera, --scene, --size
 };
 
-// The text traces one vertex per instance unless asked for all; the JSON, read by tools rather
-// than people, traces every vertex unless --vertex picks one.
+// The text traces one vertex per instance unless asked for all; the JSON every vertex unless
+// --vertex picks one (explain_report::JsonVertices).
 ExplainVertices VerticesFor(const ExplainArguments& a) {
-  const bool all = a.all_vertices || (a.json && !a.vertex);
-  return all ? ExplainVertices::kAll : ExplainVertices::kTraced;
+  if (a.all_vertices) return ExplainVertices::kAll;
+  return a.json ? explain_report::JsonVertices(a.vertex.has_value()) : ExplainVertices::kTraced;
 }
 
 // The page follows one vertex of the first explained instance: without one there is no chain to draw.

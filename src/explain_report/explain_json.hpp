@@ -12,6 +12,12 @@ namespace twinraster::explain_report {
 // The object's "format": any change to its keys or their meaning gets a new number.
 inline constexpr const char* kExplainJsonFormat = "twinraster.explain/3";
 
+// The vertices the object traces: read by tools rather than people, it traces every vertex unless
+// one is asked for (explain --json, and the moving page's explainJson()).
+inline ExplainVertices JsonVertices(bool vertex_asked) {
+  return vertex_asked ? ExplainVertices::kTraced : ExplainVertices::kAll;
+}
+
 // Every number as computed, a negative zero included, so that tools read exactly the chain's doubles.
 nlohmann::ordered_json ExplainJson(const Explanation& explanation);
 

@@ -26,11 +26,17 @@ void CheckCanvas(const Scene& scene, std::uint32_t max_canvas) {
                        std::to_string(max_canvas) + ")");
 }
 
+// The request's scene as the page reads it: named kPageSceneName, its canvas within the bound.
+Scene PageScene(const PageRequest& request) {
+  Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
+  CheckCanvas(scene, request.max_canvas);
+  return scene;
+}
+
 }  // namespace
 
 PageFrame ComputePageFrame(const PageRequest& request) {
-  const Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
-  CheckCanvas(scene, request.max_canvas);
+  const Scene scene = PageScene(request);
   // The panels draw every vertex's edges, as explain --html's do; the trace line follows the
   // vertex explain would (the one asked for, else the first in view).
   const Explanation explanation = Explain(scene, {request.instance, request.vertex, ExplainVertices::kAll});
@@ -44,10 +50,8 @@ PageFrame ComputePageFrame(const PageRequest& request) {
 }
 
 std::string PageExplainJson(const PageRequest& request) {
-  const Scene scene = ParseScene(request.scene_json, std::string(kPageSceneName));
-  CheckCanvas(scene, request.max_canvas);
-  // explain --json traces every vertex unless one is asked for.
-  const ExplainVertices vertices = request.vertex ? ExplainVertices::kTraced : ExplainVertices::kAll;
+  const Scene scene = PageScene(request);
+  const ExplainVertices vertices = explain_report::JsonVertices(request.vertex.has_value());
   return explain_report::ExplainJson(Explain(scene, {request.instance, request.vertex, vertices})).dump(2);
 }
 
